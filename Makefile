@@ -1,0 +1,52 @@
+# Elastic knots: the two commands a new user needs are `make test` and
+# `make figures`; every target is listed by `make help` and in README.md.
+
+BUILD      ?= build
+JOBS       ?= 2
+KNOT_TABLE ?= $(abspath $(CURDIR)/../shared/data/knotinfo_table.csv)
+SCALE      ?= default
+PYTHON     ?= /usr/bin/python3
+CMAKE_ARGS ?=
+
+CONFIGURE = cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DEK_KNOT_TABLE=$(KNOT_TABLE) $(CMAKE_ARGS)
+CTEST     = cd $(BUILD) && KNOT_TABLE=$(KNOT_TABLE) ctest --output-on-failure -j$(JOBS)
+
+.PHONY: help deps configure build test unit sanitize stress bench figures experiments clean
+
+help:
+	@echo "make test      build, run all tests (unit, parsers, short stress, paper claims at ci scale, sanitizers)"
+	@echo "make figures   build, run every experiment at SCALE=$(SCALE), write figures/out/*.png|pdf"
+	@echo "make bench     Google Benchmark microbenchmarks and macro benchmarks (results/bench/)"
+	@echo "make stress    the long numerical stress tests (label stress-long)"
+	@echo "make sanitize  parsers and readers built and tested with AddressSanitizer and UBSan"
+	@echo "make unit      unit tests only"
+	@echo "make deps      install missing Debian packages (scripts/install-deps.sh)"
+	@echo "make clean     remove build folders (results/ and figures/out/ are kept)"
+	@echo "Variables: KNOT_TABLE=$(KNOT_TABLE) SCALE=ci|default|paper JOBS=$(JOBS) BUILD=$(BUILD)"
+
+deps:
+	@scripts/install-deps.sh
+
+configure: deps
+	@$(CONFIGURE) > /dev/null
+
+build: configure
+	cmake --build $(BUILD) -j$(JOBS)
+
+test: build sanitize
+	$(CTEST) -LE 'stress-long|sanitize'
+
+unit: build
+	$(CTEST) -L 'unit|parsers'
+
+sanitize: deps
+	@cmake -S . -B $(BUILD)-asan -DCMAKE_BUILD_TYPE=Debug -DEK_SANITIZE=ON -DEK_PARSERS_ONLY=ON \
+	  -DEK_KNOT_TABLE=$(KNOT_TABLE) > /dev/null
+	cmake --build $(BUILD)-asan -j$(JOBS)
+	cd $(BUILD)-asan && KNOT_TABLE=$(KNOT_TABLE) ctest --output-on-failure -j$(JOBS) -L parsers
+
+stress: build
+	$(CTEST) -L 'stress'
+
+clean:
+	rm -rf $(BUILD) $(BUILD)-asan

@@ -1,0 +1,59 @@
+# ek_add_module(NAME SOURCES ... DEPS ... [EXTERNAL ...])
+#
+# Defines the static library ek_<NAME> from src/<NAME>/. Public headers live in
+# src/<NAME>/include/ek/<NAME>/ and are visible only to targets that link the
+# module (directly or through a dependent module), so the include graph equals
+# the link graph. DEPS must name modules defined earlier: the module graph is
+# acyclic by construction, in the order of src/CMakeLists.txt.
+set_property(GLOBAL PROPERTY EK_MODULES "")
+
+function(ek_add_module NAME)
+  cmake_parse_arguments(ARG "" "" "SOURCES;DEPS;EXTERNAL" ${ARGN})
+  get_property(known GLOBAL PROPERTY EK_MODULES)
+  foreach(dep IN LISTS ARG_DEPS)
+    if(NOT dep IN_LIST known)
+      message(FATAL_ERROR "module '${NAME}' depends on '${dep}', which is not defined before it: "
+                          "the dependency direction is fixed by the order in src/CMakeLists.txt")
+    endif()
+  endforeach()
+  set(target ek_${NAME})
+  if(ARG_SOURCES)
+    add_library(${target} STATIC ${ARG_SOURCES})
+    target_include_directories(${target} PUBLIC ${CMAKE_CURRENT_SOURCE_DIR}/include)
+    target_link_libraries(${target} PRIVATE ek_warnings)
+    set(scope PUBLIC)
+  else()
+    add_library(${target} INTERFACE)
+    target_include_directories(${target} INTERFACE ${CMAKE_CURRENT_SOURCE_DIR}/include)
+    set(scope INTERFACE)
+  endif()
+  foreach(dep IN LISTS ARG_DEPS)
+    target_link_libraries(${target} ${scope} ek_${dep})
+  endforeach()
+  if(ARG_EXTERNAL)
+    target_link_libraries(${target} ${scope} ${ARG_EXTERNAL})
+  endif()
+  add_library(ek::${NAME} ALIAS ${target})
+  set_property(GLOBAL APPEND PROPERTY EK_MODULES ${NAME})
+  set_property(GLOBAL PROPERTY EK_MODULE_DEPS_${NAME} "${ARG_DEPS}")
+endfunction()
+
+# ek_add_gtest(NAME SOURCES ... LIBS ... [LABEL label] [TIMEOUT seconds])
+# One GoogleTest executable; each TEST becomes a CTest entry with the label:
+# unit (default), parsers (also built with sanitizers), stress (short, in
+# `make test`), stress-long (`make stress` only), paper (claims of the paper).
+# (gtest_discover_tests cannot pass a list of labels, hence one label.)
+function(ek_add_gtest NAME)
+  cmake_parse_arguments(ARG "" "TIMEOUT;LABEL" "SOURCES;LIBS" ${ARGN})
+  add_executable(${NAME} ${ARG_SOURCES})
+  target_link_libraries(${NAME} PRIVATE ${ARG_LIBS} ek_testing GTest::gtest GTest::gtest_main ek_warnings)
+  if(NOT ARG_LABEL)
+    set(ARG_LABEL unit)
+  endif()
+  if(NOT ARG_TIMEOUT)
+    set(ARG_TIMEOUT 600)
+  endif()
+  gtest_discover_tests(${NAME}
+    PROPERTIES LABELS ${ARG_LABEL} TIMEOUT ${ARG_TIMEOUT}
+    DISCOVERY_TIMEOUT 60)
+endfunction()

@@ -1,0 +1,45 @@
+#pragma once
+/// Crash-safe file output: nothing a user had is lost or overwritten by a
+/// failed or interrupted run.
+///
+/// AtomicFile writes to a temporary file in the destination's folder and
+/// renames it over the destination only in commit(). If the writer is
+/// destroyed without commit() (an exception, a signal that unwinds), the
+/// temporary is removed and the destination is untouched. rename(2) within a
+/// file system is atomic, so readers see either the old or the new file.
+#include <fstream>
+#include <string>
+
+namespace ek {
+
+class AtomicFile {
+ public:
+  /// Opens "<path>.tmp.<pid>.<counter>" for writing. Throws InputError when the
+  /// destination folder does not exist or is not writable.
+  explicit AtomicFile(std::string path, bool binary = false);
+  ~AtomicFile();
+  AtomicFile(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;
+
+  std::ostream& stream() { return out_; }
+  const std::string& temporary_path() const { return tmp_; }
+  /// Flushes, fsyncs and renames the temporary onto the destination.
+  /// Throws InputError if any write failed.
+  void commit();
+
+ private:
+  std::string path_;
+  std::string tmp_;
+  std::ofstream out_;
+  bool committed_ = false;
+};
+
+/// Throws InputError unless `path` can be created or replaced: its folder
+/// exists and is writable, and `path` is not a folder. Call before long runs so
+/// that an unwritable output fails at once, not after hours.
+void check_writable(const std::string& path);
+
+/// Renames `from` onto `to` atomically after fsync; throws InputError on failure.
+void atomic_replace(const std::string& from, const std::string& to);
+
+}  // namespace ek

@@ -1,0 +1,6 @@
+#pragma once
+/// 128-bit integers (a GCC/Clang extension) for exact arithmetic.
+namespace ek {
+__extension__ typedef __int128 int128;
+__extension__ typedef unsigned __int128 uint128;
+}  // namespace ek

@@ -1,0 +1,35 @@
+#pragma once
+// Shared test helpers: data locations, seeded random curves, finite differences.
+#include <cstdint>
+#include <functional>
+#include <random>
+#include <string>
+
+#include "ek/geometry/types.hpp"
+
+namespace ek::fixtures {
+
+/// Folder of the peer implementation's curves (../shared/data/peer).
+std::string peer_dir();
+
+/// A random smooth closed curve: a sum of `modes` random Fourier modes,
+/// sampled at n points (not necessarily simple).
+Points random_fourier_curve(int n, int modes, std::uint64_t seed, double amplitude = 1.0);
+
+/// Circle of radius R in the xy-plane, n vertices, centred at the origin.
+Points circle(int n, double R);
+
+/// Torus knot T(p, q) on a torus with radii R (core) and r (tube), n vertices.
+Points torus_knot(int n, int p, int q, double R = 2.0, double r = 1.0);
+
+/// Applies a rotation, translation and cyclic shift of the vertex order.
+Points rigid_copy(const Points& P, const Mat3& R, const Vec3& t, int shift);
+
+/// A random rotation matrix from a seed.
+Mat3 random_rotation(std::uint64_t seed);
+
+/// Central finite-difference derivative of f along the coordinates of x:
+/// returns g with g_i ≈ (f(x + h e_i) - f(x - h e_i)) / 2h.
+VecX fd_gradient(const std::function<double(const VecX&)>& f, const VecX& x, double h);
+
+}  // namespace ek::fixtures
