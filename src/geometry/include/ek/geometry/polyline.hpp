@@ -1,0 +1,45 @@
+#pragma once
+/// Elementary geometry of closed polygons (n by 3 arrays, see types.hpp).
+#include <vector>
+
+#include "ek/geometry/types.hpp"
+
+namespace ek {
+
+/// Edge vectors e_i = x_{i+1} - x_i (cyclic), n by 3.
+Points edge_vectors(const Points& P);
+
+/// Edge lengths |e_i|, length n.
+VecX edge_lengths(const Points& P);
+
+/// Total length Σ|e_i|.
+double curve_length(const Points& P);
+
+/// Turning angle at each vertex i, the angle in [0, π] between e_{i-1} and e_i
+/// (0 for a straight continuation). Computed with atan2(|a×b|, a·b), accurate
+/// for small and large angles.
+VecX turning_angles(const Points& P);
+
+/// Total curvature Σ_i turning angle_i (paper Section 7.3, "Curvature";
+/// Milnor's theorem: > 2π·bridge index for a knot). For a convex planar
+/// polygon it is exactly 2π.
+double total_curvature(const Points& P);
+
+/// Result of clearance(): the smallest distance between two edges that share
+/// no vertex, and which edges realise it.
+struct Clearance {
+  double distance = 0.0;  ///< [length] min over non-adjacent edge pairs
+  int edge_a = -1;        ///< index of the first edge (edge i joins vertex i to i+1)
+  int edge_b = -1;        ///< index of the second edge
+};
+
+/// Smallest distance between any two edges i, j of the closed polygon whose
+/// cyclic index distance is at least `min_index_gap` (default 2: edges sharing
+/// a vertex are excluded). O(n log n) typical: segments are swept in x with
+/// pruning by the best distance found so far. Needs n >= 4.
+Clearance clearance(const Points& P, int min_index_gap = 2);
+
+/// Centroid (mean of the vertices).
+Vec3 centroid(const Points& P);
+
+}  // namespace ek
