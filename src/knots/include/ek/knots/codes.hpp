@@ -1,0 +1,79 @@
+#pragma once
+/// Knot notations as they appear in the KnotInfo table (paper Section 3 and
+/// Appendix A): Dowker-Thistlethwaite (DT), planar diagram (PD) and braid words.
+///
+/// Parsers accept the table's spelling ("[4; 6; 8; 2]", "[[4;2;5;1];[8;6;1;5]]",
+/// "{1;-2;1;-2}") and also commas as separators. Malformed or impossible codes
+/// throw InputError with a message naming the offending token and the reason.
+#include <array>
+#include <string>
+#include <vector>
+
+namespace ek {
+
+/// DT code of a knot with c crossings: c signed even integers whose absolute
+/// values are a permutation of 2, 4, ..., 2c (Appendix A). Entry k is the even
+/// label paired with the odd label 2k + 1; negative means the strand with the
+/// even label passes over.
+struct DTCode {
+  std::vector<int> labels;
+  int crossings() const { return static_cast<int>(labels.size()); }
+};
+
+/// One PD crossing X[a, b, c, d]: the four edge labels counterclockwise,
+/// starting at the incoming under-edge a (c is the outgoing under-edge; b and
+/// d are the over-strand's edges). KnotInfo convention.
+struct PDCrossing {
+  std::array<int, 4> e{};
+  /// +1 for a positive (right-handed) crossing, -1 for a negative one: the
+  /// over strand runs d -> b (b = d + 1 mod 2c) for a positive crossing.
+  /// `edges` is the number of edge labels 2c. Requires a non-degenerate code.
+  int sign(int edges) const;
+};
+
+/// PD code of a knot diagram with c crossings and 2c edges labelled 1..2c
+/// along the orientation.
+struct PDCode {
+  std::vector<PDCrossing> crossings;
+  int size() const { return static_cast<int>(crossings.size()); }
+};
+
+/// Braid word on `strands` strands: letters ±i for σ_i^{±1}, 1 <= i < strands.
+/// σ_i is a positive crossing of strands i and i+1 (the closure's diagram
+/// has writhe = Σ sign(letters)).
+struct BraidWord {
+  int strands = 0;
+  std::vector<int> letters;
+  int length() const { return static_cast<int>(letters.size()); }
+};
+
+/// Parses a DT code. Checks: non-empty; every entry even and nonzero; the
+/// absolute values are exactly 2, 4, ..., 2c with no repeats.
+DTCode parse_dt(const std::string& text);
+
+/// Parses a PD code. Checks: groups of exactly 4 positive labels; labels
+/// 1..2c each used exactly twice; at every crossing the under-strand's edges
+/// a, c and the over-strand's edges b, d are consecutive labels (mod 2c); the
+/// edges form one closed strand (a knot).
+PDCode parse_pd(const std::string& text);
+
+/// Parses a braid word. Checks: non-empty; no letter 0. The number of strands
+/// is 1 + max |letter| unless `strands` > 0 is given (then every |letter| must
+/// be < strands). The closure must be a knot (one component): the braid's
+/// permutation must be a single cycle; otherwise the error names the number of
+/// components.
+BraidWord parse_braid(const std::string& text, int strands = 0);
+
+/// Parses the table's braid field: a single word "{1;-2;1;-2}" or a list of
+/// alternative words "[{...};{...}]" (KnotInfo lists two for some knots).
+std::vector<BraidWord> parse_braid_list(const std::string& text);
+
+/// Table spellings: "[4; 6; 8; 2]", "[[4;2;5;1];[8;6;1;5]]", "{1;-2;1;-2}".
+std::string to_string(const DTCode& code);
+std::string to_string(const PDCode& code);
+std::string to_string(const BraidWord& word);
+
+/// Number of components of the braid's closure (cycles of its permutation).
+int closure_components(const BraidWord& word);
+
+}  // namespace ek

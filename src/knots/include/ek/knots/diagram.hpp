@@ -1,0 +1,66 @@
+#pragma once
+/// Knot diagrams as signed Gauss codes, and their simplification.
+#include <cstdint>
+#include <vector>
+
+#include "ek/geometry/types.hpp"
+#include "ek/knots/codes.hpp"
+
+namespace ek {
+
+/// A knot diagram as a signed Gauss code: the sequence of crossing visits
+/// along the oriented knot. Each crossing is visited twice, once on the over
+/// strand and once on the under strand.
+struct GaussDiagram {
+  struct Visit {
+    int crossing;  ///< index into `signs`
+    bool over;     ///< true on the over strand
+  };
+  std::vector<Visit> visits;  ///< 2c visits in traversal order
+  std::vector<int> signs;     ///< crossing signs ±1 (right-handed = +1), size c
+
+  int crossings() const { return static_cast<int>(signs.size()); }
+  /// Sum of the crossing signs (the diagram's writhe).
+  int writhe() const;
+};
+
+/// The Gauss code of a PD code: edges are traversed in label order 1..2c.
+GaussDiagram diagram_from_pd(const PDCode& pd);
+
+/// The Gauss code of the closure of a braid word (σ_i^{±1}: a crossing of the
+/// strands at positions i and i+1 with sign ±1).
+GaussDiagram diagram_from_braid(const BraidWord& word);
+
+/// Options for diagram_from_curve().
+struct ProjectionOptions {
+  int directions = 8;         ///< candidate projection directions tried; the one with fewest crossings wins
+  std::uint64_t seed = 1;     ///< seed of the deterministic direction sequence
+  double degeneracy = 1e-9;   ///< [1] relative tolerance for a non-generic projection
+};
+
+/// Diagram of a closed polygon P (n by 3) projected along a generic direction.
+/// Candidate directions come from a fixed pseudo-random sequence; a direction
+/// is rejected when the projection is not generic within `degeneracy` (a
+/// vertex projects onto another edge, two crossings coincide, edges project
+/// nearly parallel at a crossing, or the two strands have nearly equal height
+/// there). Among the accepted directions the one with fewest crossings is used.
+/// The over strand is the one nearer the viewer, who looks against the
+/// direction. Throws InputError when no direction is generic (the curve
+/// intersects itself).
+GaussDiagram diagram_from_curve(const Points& P, const ProjectionOptions& options = {});
+
+/// Number of crossings of the projection of P along `direction` (for tests
+/// of the projection code against an independent count).
+int projection_crossing_count(const Points& P, const Vec3& direction);
+
+/// Simplifies the diagram without changing the knot group's presentation up
+/// to Tietze moves (so every Alexander-type invariant is unchanged):
+///  - a crossing whose over-arc is its own incoming or outgoing under-arc
+///    (a Reidemeister I loop, also one that passes over other strands);
+///  - two crossings visited consecutively as under-crossings whose over-visits
+///    lie on the same arc and whose signs are opposite (a Reidemeister II
+///    bigon, also a strand that slides under an arc).
+/// Repeats until neither applies. Returns the number of crossings removed.
+int simplify(GaussDiagram& diagram);
+
+}  // namespace ek

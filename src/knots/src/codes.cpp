@@ -1,0 +1,311 @@
+#include "ek/knots/codes.hpp"
+
+#include <algorithm>
+#include <cctype>
+#include <charconv>
+#include <numeric>
+
+#include "ek/core/errors.hpp"
+
+namespace ek {
+namespace {
+
+/// A tokenizer for bracketed integer lists: yields '[', ']', '{', '}', and
+/// integers; ';' ',' and spaces separate.
+struct Token {
+  enum Kind { Open, Close, Number, End } kind;
+  long value = 0;
+  std::string text;
+  size_t pos = 0;
+};
+
+class Lexer {
+ public:
+  Lexer(const std::string& text, std::string what) : s_(text), what_(std::move(what)) {}
+
+  Token next() {
+    while (i_ < s_.size() && (std::isspace(static_cast<unsigned char>(s_[i_])) || s_[i_] == ';' || s_[i_] == ','))
+      ++i_;
+    Token t{Token::End, 0, "", i_};
+    if (i_ >= s_.size()) return t;
+    char c = s_[i_];
+    if (c == '[' || c == '{' || c == '(') {
+      ++i_;
+      t.kind = Token::Open;
+      t.text = std::string(1, c);
+      return t;
+    }
+    if (c == ']' || c == '}' || c == ')') {
+      ++i_;
+      t.kind = Token::Close;
+      t.text = std::string(1, c);
+      return t;
+    }
+    size_t j = i_;
+    if (s_[j] == '-' || s_[j] == '+') ++j;
+    while (j < s_.size() && std::isdigit(static_cast<unsigned char>(s_[j]))) ++j;
+    std::string tok = s_.substr(i_, j - i_);
+    if (j == i_ || tok == "-" || tok == "+") {
+      size_t k = i_;
+      while (k < s_.size() && !std::isspace(static_cast<unsigned char>(s_[k])) && s_[k] != ';' && s_[k] != ',' &&
+             s_[k] != ']' && s_[k] != '}')
+        ++k;
+      throw InputError(what_ + " '" + s_ + "': unexpected token '" + s_.substr(i_, std::max<size_t>(k - i_, 1)) +
+                       "' at character " + std::to_string(i_ + 1));
+    }
+    const char* b = tok.c_str() + (tok[0] == '+' ? 1 : 0);
+    auto [p, ec] = std::from_chars(b, tok.c_str() + tok.size(), t.value);
+    if (ec != std::errc())
+      throw InputError(what_ + " '" + s_ + "': number '" + tok + "' is out of range");
+    (void)p;
+    t.kind = Token::Number;
+    t.text = tok;
+    i_ = j;
+    return t;
+  }
+
+  [[noreturn]] void fail(const std::string& why) const { throw InputError(what_ + " '" + s_ + "': " + why); }
+
+ private:
+  const std::string& s_;
+  std::string what_;
+  size_t i_ = 0;
+};
+
+/// Parses "[n n n]" or "{n n n}" (flat list).
+std::vector<long> parse_flat(const std::string& text, const std::string& what, char open, char close) {
+  Lexer lex(text, what);
+  Token t = lex.next();
+  if (t.kind != Token::Open || t.text[0] != open)
+    lex.fail(std::string("expected '") + open + "' at the start");
+  std::vector<long> values;
+  for (;;) {
+    t = lex.next();
+    if (t.kind == Token::Number) {
+      values.push_back(t.value);
+    } else if (t.kind == Token::Close) {
+      if (t.text[0] != close) lex.fail("unexpected '" + t.text + "' (expected '" + std::string(1, close) + "')");
+      break;
+    } else if (t.kind == Token::End) {
+      lex.fail("missing closing '" + std::string(1, close) + "'");
+    } else {
+      lex.fail("unexpected nested '" + t.text + "' at character " + std::to_string(t.pos + 1));
+    }
+  }
+  if (lex.next().kind != Token::End) lex.fail("text after the closing '" + std::string(1, close) + "'");
+  return values;
+}
+
+}  // namespace
+
+int PDCrossing::sign(int edges) const {
+  const int b = e[1], d = e[3];
+  auto succ = [edges](int x) { return x % edges + 1; };
+  if (succ(d) == b && succ(b) != d) return +1;
+  if (succ(b) == d && succ(d) != b) return -1;
+  // 2c = 2 (a one-crossing diagram): both hold; the sign is not determined by
+  // the labels, and does not affect any invariant computed from it.
+  return +1;
+}
+
+DTCode parse_dt(const std::string& text) {
+  const std::string what = "DT code";
+  auto values = parse_flat(text, what, '[', ']');
+  if (values.empty()) throw InputError(what + " '" + text + "': empty code");
+  const long c = static_cast<long>(values.size());
+  std::vector<int> seen(static_cast<size_t>(2 * c + 1), 0);
+  DTCode code;
+  for (size_t k = 0; k < values.size(); ++k) {
+    long v = values[k];
+    const std::string at = " at position " + std::to_string(k + 1);
+    if (v == 0) throw InputError(what + " '" + text + "': label 0" + at + " (labels are nonzero even numbers)");
+    long a = std::labs(v);
+    if (a % 2 != 0)
+      throw InputError(what + " '" + text + "': label " + std::to_string(v) + at +
+                       " is odd (DT labels are even numbers 2.." + std::to_string(2 * c) + ")");
+    if (a > 2 * c)
+      throw InputError(what + " '" + text + "': label " + std::to_string(v) + at + " exceeds 2c = " +
+                       std::to_string(2 * c) + " for " + std::to_string(c) + " crossings");
+    if (seen[static_cast<size_t>(a)]++)
+      throw InputError(what + " '" + text + "': label " + std::to_string(a) + at + " is repeated");
+    code.labels.push_back(static_cast<int>(v));
+  }
+  return code;
+}
+
+PDCode parse_pd(const std::string& text) {
+  const std::string what = "PD code";
+  Lexer lex(text, what);
+  Token t = lex.next();
+  if (t.kind != Token::Open) lex.fail("expected '[' at the start");
+  PDCode code;
+  for (;;) {
+    t = lex.next();
+    if (t.kind == Token::Close) break;
+    if (t.kind == Token::End) lex.fail("missing closing ']'");
+    if (t.kind != Token::Open)
+      lex.fail("expected '[' to start crossing " + std::to_string(code.size() + 1) + ", got '" + t.text + "'");
+    PDCrossing x;
+    int k = 0;
+    for (;;) {
+      t = lex.next();
+      if (t.kind == Token::Close) break;
+      if (t.kind != Token::Number)
+        lex.fail("crossing " + std::to_string(code.size() + 1) + " is not closed by ']'");
+      if (k >= 4) lex.fail("crossing " + std::to_string(code.size() + 1) + " has more than 4 labels");
+      if (t.value <= 0)
+        lex.fail("label " + t.text + " in crossing " + std::to_string(code.size() + 1) +
+                 " is not positive (edge labels are 1..2c)");
+      if (t.value > 1000000) lex.fail("label " + t.text + " is out of range");
+      x.e[static_cast<size_t>(k++)] = static_cast<int>(t.value);
+    }
+    if (k != 4)
+      lex.fail("crossing " + std::to_string(code.size() + 1) + " has " + std::to_string(k) + " labels, expected 4");
+    code.crossings.push_back(x);
+  }
+  if (lex.next().kind != Token::End) lex.fail("text after the closing ']'");
+  if (code.crossings.empty()) lex.fail("empty code");
+  const int c = code.size(), m = 2 * c;
+  std::vector<int> count(static_cast<size_t>(m + 1), 0);
+  for (int i = 0; i < c; ++i)
+    for (int label : code.crossings[static_cast<size_t>(i)].e) {
+      if (label > m)
+        lex.fail("label " + std::to_string(label) + " in crossing " + std::to_string(i + 1) + " exceeds 2c = " +
+                 std::to_string(m) + " for " + std::to_string(c) + " crossings");
+      ++count[static_cast<size_t>(label)];
+    }
+  for (int label = 1; label <= m; ++label)
+    if (count[static_cast<size_t>(label)] != 2)
+      lex.fail("label " + std::to_string(label) + " appears " + std::to_string(count[static_cast<size_t>(label)]) +
+               " times (every edge label must pair up: exactly 2)");
+  auto succ = [m](int x) { return x % m + 1; };
+  // Each edge label must leave one crossing and enter another: incoming edges
+  // are a (under) and the over-strand's tail; outgoing are c and the head.
+  std::vector<int> incoming(static_cast<size_t>(m + 1), 0);
+  for (int i = 0; i < c; ++i) {
+    const auto& e = code.crossings[static_cast<size_t>(i)].e;
+    const std::string xs = "crossing " + std::to_string(i + 1) + " [" + std::to_string(e[0]) + ";" +
+                           std::to_string(e[1]) + ";" + std::to_string(e[2]) + ";" + std::to_string(e[3]) + "]";
+    if (succ(e[0]) != e[2])
+      lex.fail(xs + ": under-strand edges " + std::to_string(e[0]) + " -> " + std::to_string(e[2]) +
+               " are not consecutive labels");
+    if (succ(e[1]) != e[3] && succ(e[3]) != e[1])
+      lex.fail(xs + ": over-strand edges " + std::to_string(e[1]) + ", " + std::to_string(e[3]) +
+               " are not consecutive labels");
+    ++incoming[static_cast<size_t>(e[0])];
+    const int over_in = (succ(e[3]) == e[1]) ? e[3] : e[1];
+    ++incoming[static_cast<size_t>(over_in)];
+  }
+  for (int label = 1; label <= m; ++label)
+    if (incoming[static_cast<size_t>(label)] != 1)
+      lex.fail("edge " + std::to_string(label) + " enters " + std::to_string(incoming[static_cast<size_t>(label)]) +
+               " crossings (the orientation of the labels is inconsistent)");
+  return code;
+}
+
+int closure_components(const BraidWord& word) {
+  std::vector<int> perm(static_cast<size_t>(word.strands));
+  std::iota(perm.begin(), perm.end(), 0);
+  // position -> strand after applying the letters left to right
+  for (int letter : word.letters) {
+    const int i = std::abs(letter) - 1;
+    std::swap(perm[static_cast<size_t>(i)], perm[static_cast<size_t>(i + 1)]);
+  }
+  std::vector<char> seen(perm.size(), 0);
+  int cycles = 0;
+  for (size_t s = 0; s < perm.size(); ++s) {
+    if (seen[s]) continue;
+    ++cycles;
+    for (size_t x = s; !seen[x]; x = static_cast<size_t>(perm[x])) seen[x] = 1;
+  }
+  return cycles;
+}
+
+BraidWord parse_braid(const std::string& text, int strands) {
+  const std::string what = "braid word";
+  auto values = parse_flat(text, what, '{', '}');
+  if (values.empty()) throw InputError(what + " '" + text + "': empty word");
+  BraidWord word;
+  long max_abs = 0;
+  for (size_t k = 0; k < values.size(); ++k) {
+    long v = values[k];
+    if (v == 0)
+      throw InputError(what + " '" + text + "': generator 0 at position " + std::to_string(k + 1) +
+                       " (generators are ±1, ±2, ...)");
+    if (std::labs(v) > 1000)
+      throw InputError(what + " '" + text + "': generator " + std::to_string(v) + " is out of range");
+    max_abs = std::max(max_abs, std::labs(v));
+    word.letters.push_back(static_cast<int>(v));
+  }
+  if (strands > 0) {
+    if (max_abs >= strands)
+      throw InputError(what + " '" + text + "': generator " + std::to_string(max_abs) + " needs more than " +
+                       std::to_string(strands) + " strands");
+    word.strands = strands;
+  } else {
+    word.strands = static_cast<int>(max_abs) + 1;
+  }
+  const int comps = closure_components(word);
+  if (comps != 1)
+    throw InputError(what + " '" + text + "': its closure has " + std::to_string(comps) +
+                     " components (a link), not one (a knot)");
+  return word;
+}
+
+std::vector<BraidWord> parse_braid_list(const std::string& text) {
+  size_t i = 0;
+  while (i < text.size() && std::isspace(static_cast<unsigned char>(text[i]))) ++i;
+  if (i >= text.size() || text[i] != '[') return {parse_braid(text)};
+  const size_t close = text.find_last_of(']');
+  if (close == std::string::npos || close < i)
+    throw InputError("braid list '" + text + "': missing closing ']'");
+  for (size_t k = close + 1; k < text.size(); ++k)
+    if (!std::isspace(static_cast<unsigned char>(text[k])))
+      throw InputError("braid list '" + text + "': text after the closing ']'");
+  std::vector<BraidWord> words;
+  size_t pos = i + 1;
+  while (pos < close) {
+    const size_t open = text.find('{', pos);
+    if (open == std::string::npos || open > close) {
+      for (size_t k = pos; k < close; ++k)
+        if (!std::isspace(static_cast<unsigned char>(text[k])) && text[k] != ';' && text[k] != ',')
+          throw InputError("braid list '" + text + "': unexpected '" + std::string(1, text[k]) + "' at character " +
+                           std::to_string(k + 1));
+      break;
+    }
+    for (size_t k = pos; k < open; ++k)
+      if (!std::isspace(static_cast<unsigned char>(text[k])) && text[k] != ';' && text[k] != ',')
+        throw InputError("braid list '" + text + "': unexpected '" + std::string(1, text[k]) + "' at character " +
+                         std::to_string(k + 1));
+    const size_t end = text.find('}', open);
+    if (end == std::string::npos || end > close) throw InputError("braid list '" + text + "': missing closing '}'");
+    words.push_back(parse_braid(text.substr(open, end - open + 1)));
+    pos = end + 1;
+  }
+  if (words.empty()) throw InputError("braid list '" + text + "': empty list");
+  return words;
+}
+
+std::string to_string(const DTCode& code) {
+  std::string s = "[";
+  for (size_t i = 0; i < code.labels.size(); ++i) s += (i ? "; " : "") + std::to_string(code.labels[i]);
+  return s + "]";
+}
+
+std::string to_string(const PDCode& code) {
+  std::string s = "[";
+  for (size_t i = 0; i < code.crossings.size(); ++i) {
+    const auto& e = code.crossings[i].e;
+    s += (i ? ";[" : "[") + std::to_string(e[0]) + ";" + std::to_string(e[1]) + ";" + std::to_string(e[2]) + ";" +
+         std::to_string(e[3]) + "]";
+  }
+  return s + "]";
+}
+
+std::string to_string(const BraidWord& word) {
+  std::string s = "{";
+  for (size_t i = 0; i < word.letters.size(); ++i) s += (i ? ";" : "") + std::to_string(word.letters[i]);
+  return s + "}";
+}
+
+}  // namespace ek

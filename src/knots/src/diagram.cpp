@@ -1,0 +1,151 @@
+#include "ek/knots/diagram.hpp"
+
+#include <algorithm>
+#include <numeric>
+
+#include "ek/core/errors.hpp"
+
+namespace ek {
+
+int GaussDiagram::writhe() const { return std::accumulate(signs.begin(), signs.end(), 0); }
+
+GaussDiagram diagram_from_pd(const PDCode& pd) {
+  const int c = pd.size(), m = 2 * c;
+  GaussDiagram g;
+  g.signs.resize(static_cast<size_t>(c));
+  // enters[label] = (crossing, over?) where edge `label` ends.
+  std::vector<GaussDiagram::Visit> enters(static_cast<size_t>(m + 1), {-1, false});
+  auto succ = [m](int x) { return x % m + 1; };
+  for (int i = 0; i < c; ++i) {
+    const auto& e = pd.crossings[static_cast<size_t>(i)].e;
+    g.signs[static_cast<size_t>(i)] = pd.crossings[static_cast<size_t>(i)].sign(m);
+    enters[static_cast<size_t>(e[0])] = {i, false};
+    const int over_in = (g.signs[static_cast<size_t>(i)] > 0) ? e[3] : e[1];
+    enters[static_cast<size_t>(over_in)] = {i, true};
+    (void)succ;
+  }
+  for (int label = 1; label <= m; ++label) {
+    require(enters[static_cast<size_t>(label)].crossing >= 0, "diagram_from_pd: PD code was not validated");
+    g.visits.push_back(enters[static_cast<size_t>(label)]);
+  }
+  return g;
+}
+
+GaussDiagram diagram_from_braid(const BraidWord& word) {
+  // Follow one strand of the closure through the word, repeatedly: position
+  // p meets letter ±i when p is i or i+1 (1-based), then moves to the other.
+  // σ_i: the strand from position i passes over (sign +1); σ_i^{-1}: the
+  // strand from position i+1 passes over (sign -1). Both are right-handed for
+  // σ_i when the strands run in the same direction.
+  GaussDiagram g;
+  const int L = word.length();
+  g.signs.resize(static_cast<size_t>(L));
+  for (int k = 0; k < L; ++k) g.signs[static_cast<size_t>(k)] = word.letters[static_cast<size_t>(k)] > 0 ? 1 : -1;
+  int pos = 1;
+  const int total = 2 * L;
+  for (int guard = 0; static_cast<int>(g.visits.size()) < total && guard <= word.strands; ++guard) {
+    for (int k = 0; k < L; ++k) {
+      const int letter = word.letters[static_cast<size_t>(k)];
+      const int i = std::abs(letter);
+      if (pos == i || pos == i + 1) {
+        const bool from_left = (pos == i);
+        const bool over = (letter > 0) ? from_left : !from_left;
+        g.visits.push_back({k, over});
+        pos = from_left ? i + 1 : i;
+      }
+    }
+    if (pos == 1) break;
+  }
+  require(static_cast<int>(g.visits.size()) == total, "diagram_from_braid: the closure is not a knot");
+  return g;
+}
+
+namespace {
+
+/// Arc index of every position: arcs start right after each under visit.
+/// arc[p] for p = position; an under visit at p ends arc arc[p-1] and starts arc[p].
+std::vector<int> arc_ids(const GaussDiagram& g, int* count) {
+  const int n = static_cast<int>(g.visits.size());
+  std::vector<int> arc(static_cast<size_t>(n), 0);
+  int first_under = -1;
+  for (int p = 0; p < n; ++p)
+    if (!g.visits[static_cast<size_t>(p)].over) {
+      first_under = p;
+      break;
+    }
+  if (first_under < 0) {
+    *count = 1;
+    return arc;
+  }
+  int id = -1;
+  for (int k = 0; k < n; ++k) {
+    const int p = (first_under + k) % n;
+    if (!g.visits[static_cast<size_t>(p)].over) ++id;
+    arc[static_cast<size_t>(p)] = id;
+  }
+  *count = id + 1;
+  return arc;
+}
+
+void erase_crossings(GaussDiagram& g, int a, int b) {
+  std::vector<GaussDiagram::Visit> kept;
+  kept.reserve(g.visits.size());
+  for (const auto& v : g.visits)
+    if (v.crossing != a && v.crossing != b) kept.push_back(v);
+  // renumber crossings to stay dense
+  std::vector<int> map(g.signs.size(), -1);
+  std::vector<int> signs;
+  for (size_t c = 0; c < g.signs.size(); ++c)
+    if (static_cast<int>(c) != a && static_cast<int>(c) != b) {
+      map[c] = static_cast<int>(signs.size());
+      signs.push_back(g.signs[c]);
+    }
+  for (auto& v : kept) v.crossing = map[static_cast<size_t>(v.crossing)];
+  g.visits = std::move(kept);
+  g.signs = std::move(signs);
+}
+
+}  // namespace
+
+int simplify(GaussDiagram& g) {
+  const int before = g.crossings();
+  bool changed = true;
+  while (changed && !g.signs.empty()) {
+    changed = false;
+    const int n = static_cast<int>(g.visits.size());
+    int arcs = 0;
+    const auto arc = arc_ids(g, &arcs);
+    std::vector<int> under_pos(g.signs.size()), over_pos(g.signs.size());
+    for (int p = 0; p < n; ++p) {
+      const auto& v = g.visits[static_cast<size_t>(p)];
+      (v.over ? over_pos : under_pos)[static_cast<size_t>(v.crossing)] = p;
+    }
+    // Generalised Reidemeister I: over-arc = incoming or outgoing under-arc.
+    for (int c = 0; c < g.crossings() && !changed; ++c) {
+      const int pu = under_pos[static_cast<size_t>(c)];
+      const int over_arc = arc[static_cast<size_t>(over_pos[static_cast<size_t>(c)])];
+      const int out_arc = arc[static_cast<size_t>(pu)];
+      const int in_arc = arc[static_cast<size_t>((pu + n - 1) % n)];
+      if (over_arc == out_arc || over_arc == in_arc) {
+        erase_crossings(g, c, c);
+        changed = true;
+      }
+    }
+    if (changed) continue;
+    // Generalised Reidemeister II: consecutive under visits, same over-arc, opposite signs.
+    for (int p = 0; p < n && !changed; ++p) {
+      const auto& v1 = g.visits[static_cast<size_t>(p)];
+      const auto& v2 = g.visits[static_cast<size_t>((p + 1) % n)];
+      if (v1.over || v2.over || v1.crossing == v2.crossing) continue;
+      if (g.signs[static_cast<size_t>(v1.crossing)] == g.signs[static_cast<size_t>(v2.crossing)]) continue;
+      if (arc[static_cast<size_t>(over_pos[static_cast<size_t>(v1.crossing)])] !=
+          arc[static_cast<size_t>(over_pos[static_cast<size_t>(v2.crossing)])])
+        continue;
+      erase_crossings(g, v1.crossing, v2.crossing);
+      changed = true;
+    }
+  }
+  return before - g.crossings();
+}
+
+}  // namespace ek

@@ -1,0 +1,221 @@
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <numeric>
+
+#include "ek/core/errors.hpp"
+#include "ek/geometry/polyline.hpp"
+#include "ek/knots/diagram.hpp"
+
+namespace ek {
+namespace {
+
+struct Crossing {
+  int seg_a, seg_b;  // seg_a < seg_b
+  double s, t;       // parameters along a and b
+  bool a_over;
+  int sign;
+};
+
+struct Projection {
+  bool generic = true;
+  std::vector<Crossing> crossings;
+};
+
+inline double cross2(double ax, double ay, double bx, double by) { return ax * by - ay * bx; }
+
+/// Projects P along d and finds all crossings; `generic` is false when the
+/// projection is degenerate within tol (relative to the curve's size).
+Projection project(const Points& P, const Vec3& dir, double tol, bool count_only) {
+  Projection out;
+  const int n = static_cast<int>(P.rows());
+  const Vec3 d = dir.normalized();
+  Vec3 u = (std::fabs(d.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY()).cross(d).normalized();
+  const Vec3 v = d.cross(u);
+  u = v.cross(d);  // right-handed (u, v, d): u × v = d
+  std::vector<double> X(static_cast<size_t>(n)), Y(static_cast<size_t>(n)), H(static_cast<size_t>(n));
+  for (int i = 0; i < n; ++i) {
+    const Vec3 p = P.row(i).transpose();
+    X[static_cast<size_t>(i)] = p.dot(u);
+    Y[static_cast<size_t>(i)] = p.dot(v);
+    H[static_cast<size_t>(i)] = p.dot(d);
+  }
+  const double scale = (P.colwise().maxCoeff() - P.colwise().minCoeff()).norm();
+  const double eps = tol * scale;
+  auto nx = [n](int i) { return (i + 1) % n; };
+  // Projected edges must not vanish, and adjacent edges must not fold back.
+  for (int i = 0; i < n; ++i) {
+    const double ex = X[static_cast<size_t>(nx(i))] - X[static_cast<size_t>(i)];
+    const double ey = Y[static_cast<size_t>(nx(i))] - Y[static_cast<size_t>(i)];
+    const double len = std::hypot(ex, ey);
+    if (len < eps) {
+      out.generic = false;
+      return out;
+    }
+    const int j = nx(i);
+    const double fx = X[static_cast<size_t>(nx(j))] - X[static_cast<size_t>(j)];
+    const double fy = Y[static_cast<size_t>(nx(j))] - Y[static_cast<size_t>(j)];
+    const double flen = std::hypot(fx, fy);
+    if (std::fabs(cross2(ex, ey, fx, fy)) < tol * len * flen && ex * fx + ey * fy < 0.0) {
+      out.generic = false;
+      return out;
+    }
+  }
+  struct Box {
+    double x0, x1, y0, y1;
+  };
+  std::vector<Box> box(static_cast<size_t>(n));
+  for (int i = 0; i < n; ++i) {
+    const size_t a = static_cast<size_t>(i), b = static_cast<size_t>(nx(i));
+    box[a] = {std::min(X[a], X[b]) - eps, std::max(X[a], X[b]) + eps, std::min(Y[a], Y[b]) - eps,
+              std::max(Y[a], Y[b]) + eps};
+  }
+  std::vector<int> order(static_cast<size_t>(n));
+  std::iota(order.begin(), order.end(), 0);
+  std::sort(order.begin(), order.end(),
+            [&](int a, int b) { return box[static_cast<size_t>(a)].x0 < box[static_cast<size_t>(b)].x0; });
+  for (int oi = 0; oi < n; ++oi) {
+    const int i = order[static_cast<size_t>(oi)];
+    const Box& bi = box[static_cast<size_t>(i)];
+    for (int oj = oi + 1; oj < n; ++oj) {
+      const int j = order[static_cast<size_t>(oj)];
+      const Box& bj = box[static_cast<size_t>(j)];
+      if (bj.x0 > bi.x1) break;
+      if (bj.y0 > bi.y1 || bi.y0 > bj.y1) continue;
+      if (j == nx(i) || i == nx(j)) continue;  // adjacent edges meet only at their shared vertex
+      const int a = std::min(i, j), b = std::max(i, j);
+      const size_t a0 = static_cast<size_t>(a), a1 = static_cast<size_t>(nx(a));
+      const size_t b0 = static_cast<size_t>(b), b1 = static_cast<size_t>(nx(b));
+      const double ax = X[a1] - X[a0], ay = Y[a1] - Y[a0];
+      const double bx = X[b1] - X[b0], by = Y[b1] - Y[b0];
+      const double la = std::hypot(ax, ay), lb = std::hypot(bx, by);
+      // signed distances of b's endpoints to line a and of a's endpoints to line b
+      const double o1 = cross2(ax, ay, X[b0] - X[a0], Y[b0] - Y[a0]) / la;
+      const double o2 = cross2(ax, ay, X[b1] - X[a0], Y[b1] - Y[a0]) / la;
+      const double o3 = cross2(bx, by, X[a0] - X[b0], Y[a0] - Y[b0]) / lb;
+      const double o4 = cross2(bx, by, X[a1] - X[b0], Y[a1] - Y[b0]) / lb;
+      const bool straddle_a = (o1 > 0) != (o2 > 0);
+      const bool straddle_b = (o3 > 0) != (o4 > 0);
+      // An endpoint within eps of the other line, near the other segment,
+      // makes the crossing ambiguous.
+      const bool near = std::fabs(o1) < eps || std::fabs(o2) < eps || std::fabs(o3) < eps || std::fabs(o4) < eps;
+      if (near && (straddle_a || straddle_b)) {
+        out.generic = false;
+        return out;
+      }
+      if (!(straddle_a && straddle_b)) continue;
+      const double s = o3 / (o3 - o4);
+      const double t = o1 / (o1 - o2);
+      if (std::fabs(cross2(ax, ay, bx, by)) < tol * la * lb) {
+        out.generic = false;
+        return out;
+      }
+      const double ha = H[a0] + s * (H[a1] - H[a0]);
+      const double hb = H[b0] + t * (H[b1] - H[b0]);
+      if (std::fabs(ha - hb) < eps) {
+        out.generic = false;
+        return out;
+      }
+      Crossing c{a, b, s, t, ha > hb, 0};
+      if (!count_only) {
+        // sign = sign of (over × under) · d in the right-handed (u, v, d) frame
+        const double cr = c.a_over ? cross2(ax, ay, bx, by) : cross2(bx, by, ax, ay);
+        c.sign = cr > 0 ? 1 : -1;
+      }
+      out.crossings.push_back(c);
+    }
+  }
+  if (!count_only) {
+    // Two crossings at the same place of one edge (a triple point) are not generic.
+    std::vector<std::pair<int, double>> at;  // (edge, arc position along it)
+    for (const auto& c : out.crossings) {
+      const auto la = std::hypot(X[static_cast<size_t>(nx(c.seg_a))] - X[static_cast<size_t>(c.seg_a)],
+                                 Y[static_cast<size_t>(nx(c.seg_a))] - Y[static_cast<size_t>(c.seg_a)]);
+      const auto lb = std::hypot(X[static_cast<size_t>(nx(c.seg_b))] - X[static_cast<size_t>(c.seg_b)],
+                                 Y[static_cast<size_t>(nx(c.seg_b))] - Y[static_cast<size_t>(c.seg_b)]);
+      at.emplace_back(c.seg_a, c.s * la);
+      at.emplace_back(c.seg_b, c.t * lb);
+    }
+    std::sort(at.begin(), at.end());
+    for (size_t k = 1; k < at.size(); ++k)
+      if (at[k].first == at[k - 1].first && at[k].second - at[k - 1].second < eps) {
+        out.generic = false;
+        return out;
+      }
+  }
+  return out;
+}
+
+Vec3 direction_from_seed(std::uint64_t& state) {
+  auto next = [&state]() {
+    // splitmix64
+    std::uint64_t z = (state += 0x9E3779B97F4A7C15ULL);
+    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+    return static_cast<double>((z ^ (z >> 31)) >> 11) * (1.0 / 9007199254740992.0);
+  };
+  const double zc = 2.0 * next() - 1.0, phi = 2.0 * M_PI * next();
+  const double r = std::sqrt(std::max(0.0, 1.0 - zc * zc));
+  return {r * std::cos(phi), r * std::sin(phi), zc};
+}
+
+}  // namespace
+
+int projection_crossing_count(const Points& P, const Vec3& direction) {
+  Projection p = project(P, direction, 1e-12, true);
+  return static_cast<int>(p.crossings.size());
+}
+
+GaussDiagram diagram_from_curve(const Points& P, const ProjectionOptions& options) {
+  require(P.rows() >= 3, "diagram_from_curve: need at least 3 vertices");
+  require(options.directions >= 1, "diagram_from_curve: need at least one direction");
+  // A curve that (nearly) touches itself has no well-defined knot type.
+  const double scale = (P.colwise().maxCoeff() - P.colwise().minCoeff()).norm();
+  const Clearance cl = clearance(P);
+  if (cl.distance <= options.degeneracy * scale)
+    throw InputError("curve intersects itself (edges " + std::to_string(cl.edge_a + 1) + " and " +
+                     std::to_string(cl.edge_b + 1) + " are " + std::to_string(cl.distance) + " apart)");
+  std::uint64_t state = options.seed;
+  Projection best;
+  bool found = false;
+  Vec3 best_dir;
+  const int max_attempts = std::max(options.directions * 8, 64);
+  int accepted = 0;
+  for (int attempt = 0; attempt < max_attempts && accepted < options.directions; ++attempt) {
+    const Vec3 d = direction_from_seed(state);
+    Projection p = project(P, d, options.degeneracy, false);
+    if (!p.generic) continue;
+    ++accepted;
+    if (!found || p.crossings.size() < best.crossings.size()) {
+      best = std::move(p);
+      best_dir = d;
+      found = true;
+    }
+  }
+  if (!found)
+    throw InputError("curve has no generic projection (it intersects itself or nearly so)");
+  // Order visits along the curve.
+  struct Visit {
+    int seg;
+    double param;
+    int crossing;
+    bool over;
+  };
+  std::vector<Visit> visits;
+  visits.reserve(2 * best.crossings.size());
+  GaussDiagram g;
+  for (size_t k = 0; k < best.crossings.size(); ++k) {
+    const auto& c = best.crossings[k];
+    visits.push_back({c.seg_a, c.s, static_cast<int>(k), c.a_over});
+    visits.push_back({c.seg_b, c.t, static_cast<int>(k), !c.a_over});
+    g.signs.push_back(c.sign);
+  }
+  std::sort(visits.begin(), visits.end(), [](const Visit& a, const Visit& b) {
+    return a.seg != b.seg ? a.seg < b.seg : a.param < b.param;
+  });
+  for (const auto& v : visits) g.visits.push_back({v.crossing, v.over});
+  return g;
+}
+
+}  // namespace ek
