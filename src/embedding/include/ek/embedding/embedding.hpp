@@ -1,0 +1,80 @@
+#pragma once
+/// Initial 3D embeddings of a knot type (paper Sections 5 and 8.3, Fig. 13):
+/// simple closed polygons with a requested number of vertices and equal edge
+/// lengths, built from a braid word or a PD code of the table.
+#include <string>
+
+#include "ek/geometry/types.hpp"
+#include "ek/knots/codes.hpp"
+#include "ek/knots/table.hpp"
+
+namespace ek {
+
+/// Options shared by the embeddings. Lengths are in units of the output's
+/// edge length unless stated.
+struct EmbeddingOptions {
+  int vertices = 400;          ///< [1] vertex count n of the output polygon (>= 4)
+  double edge_length = 1.0;    ///< [length] common edge length of the output polygon
+  /// Braid closure: radial distance between neighbouring strands, in units of
+  /// the coil radius R; <= 0 picks min(0.5 · 2π/L, 0.6/s) for L letters on s
+  /// strands (a well separated coil; small values give a multi-covered circle).
+  double strand_spacing = 0.0;  ///< [R]
+  /// Braid closure: height of the over/under offsets at a crossing, in units of
+  /// the strand spacing.
+  double crossing_height = 0.5;  ///< [strand spacing]
+  int samples_per_letter = 32;   ///< [1] dense samples per braid letter before resampling
+  /// PD drawing: height of the over/under offsets at a crossing, in units of
+  /// the shortest straight piece (crossing to edge midpoint) of the drawing.
+  double pd_crossing_height = 0.3;  ///< [shortest piece]
+  /// PD drawing: lower bound of the crossing height in output edge lengths.
+  double pd_min_crossing_height = 1.0;  ///< [edge length]
+  int samples_per_piece = 4;        ///< [1] dense samples per piece of the smoothed drawing before resampling
+  /// PD drawing: rounds of Tutte re-solves with every edge reweighted by its
+  /// current length (0 = plain uniform Tutte embedding). With `verify`, other
+  /// round counts are tried if this one does not survive the resampling.
+  int pd_reweighting_rounds = 2;    ///< [1]
+  /// Check the result's Alexander polynomial against the code's (throws
+  /// InputError when the resampling was too coarse for the embedding).
+  bool verify = true;
+};
+
+/// An embedding and what was measured on it.
+struct Embedding {
+  Points points;             ///< n by 3, edge i joins vertex i to i + 1 (cyclic)
+  double edge_length = 0.0;  ///< [length] common edge length
+  double max_edge_deviation = 0.0;  ///< [length] max | |e_i| - edge_length |
+  double clearance = 0.0;    ///< [length] smallest distance between non-adjacent edges
+  std::string method;        ///< "braid" or "pd"
+};
+
+/// Closed braid as a coil around the z axis (Scharein 1998; paper Fig. 13):
+/// strand position k (1..s) runs on the circle of radius R + (k - (s+1)/2)·δ
+/// in the plane z = 0; letter j occupies the angular slot [2πj/L, 2π(j+1)/L],
+/// where strands at positions i and i+1 exchange radii (smoothstep) while the
+/// over strand rises to +h and the under strand dips to -h (h = crossing_height·δ).
+/// σ_i (letter +i): the strand coming from position i passes over, a positive
+/// crossing seen from +z. With a small strand_spacing this is the paper's
+/// multi-covered circle initialisation.
+Embedding embed_braid(const BraidWord& word, const EmbeddingOptions& options = {});
+
+/// PD code realised from a planar straight-line drawing: the 4-valent plane
+/// graph of the diagram (faces traced from the PD's counterclockwise rotation
+/// system) is subdivided by a node per edge midpoint and a node per face joined
+/// to the face's corners, which triangulates it; its Tutte embedding (uniform
+/// weights, the largest face's boundary pinned to a circle) gives straight-line
+/// positions, after a few rounds of reweighting each edge by its length to
+/// undo the crowding of uniform weights. The knot runs crossing -> edge midpoint -> crossing, lifted to
+/// ±h at crossings (over/under) and 0 at midpoints, its corners rounded by
+/// three rounds of Chaikin corner cutting. Throws InputError for a
+/// code whose diagram is not planar or has a nugatory crossing.
+Embedding embed_pd(const PDCode& pd, const EmbeddingOptions& options = {});
+
+/// Which code an embedding of a table knot is built from.
+enum class EmbeddingSource { Braid, PD };
+EmbeddingSource parse_embedding_source(const std::string& text);  ///< "braid" | "pd"; InputError otherwise
+
+/// Embedding of a table knot. The unknot is a circle. Throws InputError when
+/// the table has no code of the requested kind.
+Embedding embed_knot(const KnotRecord& knot, EmbeddingSource source, const EmbeddingOptions& options = {});
+
+}  // namespace ek

@@ -1,0 +1,77 @@
+#include <cmath>
+
+#include "common.hpp"
+#include "ek/core/errors.hpp"
+#include "ek/embedding/embedding.hpp"
+#include "ek/geometry/polyline.hpp"
+#include "ek/geometry/resample.hpp"
+#include "ek/knots/alexander.hpp"
+
+namespace ek {
+
+EmbeddingSource parse_embedding_source(const std::string& text) {
+  if (text == "braid") return EmbeddingSource::Braid;
+  if (text == "pd") return EmbeddingSource::PD;
+  throw InputError("unknown embedding source '" + text + "' (expected braid or pd)");
+}
+
+void validate(const EmbeddingOptions& o) {
+  require_input(o.vertices >= 4, "embedding: need at least 4 vertices, got " + std::to_string(o.vertices));
+  require_input(o.edge_length > 0.0 && std::isfinite(o.edge_length), "embedding: edge length must be positive");
+  require_input(o.crossing_height > 0.0, "embedding: crossing height must be positive");
+  require_input(o.pd_crossing_height > 0.0, "embedding: PD crossing height must be positive");
+  require_input(o.samples_per_letter >= 4 && o.samples_per_piece >= 2, "embedding: too few dense samples");
+}
+
+Embedding finish_embedding(const Points& dense, const EmbeddingOptions& o, const std::string& method,
+                           const AlexanderPolynomial* expected) {
+  EquilateralResult eq;
+  try {
+    eq = resample_equilateral(dense, o.vertices);
+  } catch (const std::invalid_argument&) {
+    throw InputError(method + " embedding: cannot place " + std::to_string(o.vertices) +
+                     " equal edges along the curve; use more vertices");
+  }
+  const double scale = o.edge_length / eq.edge_length;
+  Embedding e;
+  e.points = eq.points * scale;
+  e.edge_length = o.edge_length;
+  e.max_edge_deviation = eq.max_deviation * scale;
+  e.method = method;
+  e.clearance = clearance(e.points).distance;
+  if (o.verify && expected) {
+    AlexanderPolynomial got;
+    try {
+      got = alexander(e.points);
+    } catch (const InputError&) {
+      throw InputError(method + " embedding with " + std::to_string(o.vertices) +
+                       " vertices intersects itself; use more vertices");
+    }
+    if (got != *expected)
+      throw InputError(method + " embedding with " + std::to_string(o.vertices) +
+                       " vertices is too coarse to keep the knot type (Alexander " + got.to_string() +
+                       " instead of " + expected->to_string() + "); use more vertices");
+  }
+  return e;
+}
+
+Embedding embed_knot(const KnotRecord& knot, EmbeddingSource source, const EmbeddingOptions& options) {
+  validate(options);
+  if (knot.crossing_number == 0) {
+    Points dense(std::max(64, options.vertices), 3);
+    for (int i = 0; i < dense.rows(); ++i) {
+      const double s = 2.0 * M_PI * i / dense.rows();
+      dense.row(i) << std::cos(s), std::sin(s), 0.0;
+    }
+    const AlexanderPolynomial one;
+    return finish_embedding(dense, options, "circle", &one);
+  }
+  if (source == EmbeddingSource::Braid) {
+    if (!knot.braid) throw InputError("knot " + knot.name + " has no braid word in the table");
+    return embed_braid(*knot.braid, options);
+  }
+  if (!knot.pd) throw InputError("knot " + knot.name + " has no PD code in the table");
+  return embed_pd(*knot.pd, options);
+}
+
+}  // namespace ek
