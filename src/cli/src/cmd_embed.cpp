@@ -1,0 +1,54 @@
+// knots embed NAME --from braid|pd [-n N] -o FILE [--edge-length L] [--json]
+#include <iostream>
+
+#include "args.hpp"
+#include "commands.hpp"
+#include "ek/core/atomic_file.hpp"
+#include "ek/core/errors.hpp"
+#include "ek/embedding/embedding.hpp"
+#include "ek/geometry/curve_io.hpp"
+#include "ek/knots/alexander.hpp"
+#include "output.hpp"
+
+namespace ek::cli {
+
+int cmd_embed(int argc, char** argv) {
+  std::string name, from = "braid", out;
+  EmbeddingOptions opt;
+  bool json = false;
+  ArgParser args("embed", "NAME --from braid|pd [-n N] -o FILE [--edge-length L] [--json]");
+  args.positional("NAME", &name, "knot name as in the table");
+  args.option("--from", &from, "braid (closed braid coil, default) or pd (planar drawing of the PD code)");
+  args.option("-n,--vertices", &opt.vertices, "vertex count of the polygon (default 400)");
+  args.option("--edge-length", &opt.edge_length, "common edge length (default 1)");
+  args.option("--strand-spacing", &opt.strand_spacing,
+              "braid coil: radial spacing of the strands in units of the coil radius (default: automatic)");
+  args.option("-o,--output", &out, "output curve file (.obj or .txt); written atomically");
+  args.flag("--json", &json, "print a JSON summary");
+  if (!args.parse(argc, argv)) return 0;
+  if (out.empty()) throw InputError("missing -o FILE");
+  check_writable(out);
+  const KnotRecord& knot = KnotTable::global().at(name);
+  const Embedding e = embed_knot(knot, parse_embedding_source(from), opt);
+  write_curve(out, e.points);
+  const AlexanderPolynomial alex = alexander(e.points);
+  if (json) {
+    Json j;
+    j["name"] = knot.name;
+    j["from"] = e.method;
+    j["output"] = out;
+    j["vertices"] = e.points.rows();
+    j["edge_length"] = number(e.edge_length);
+    j["max_edge_deviation"] = number(e.max_edge_deviation);
+    j["clearance"] = number(e.clearance);
+    j["alexander"] = alex.coefficients;
+    print_json(j);
+  } else {
+    std::cout << "wrote " << out << ": " << knot.name << " from " << e.method << ", " << e.points.rows()
+              << " vertices, edge length " << fmt(e.edge_length) << ", clearance " << fmt(e.clearance)
+              << ", Alexander " << alex.to_string() << "\n";
+  }
+  return 0;
+}
+
+}  // namespace ek::cli

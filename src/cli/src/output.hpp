@@ -1,0 +1,20 @@
+#pragma once
+// Output helpers shared by the commands.
+#include <nlohmann/json.hpp>
+#include <string>
+
+namespace ek::cli {
+
+/// JSON objects keep the insertion order of their keys (stable output).
+using Json = nlohmann::ordered_json;
+
+/// Prints one JSON object on one line to stdout.
+void print_json(const Json& j);
+
+/// A double for JSON: finite values as numbers, others as null.
+Json number(double x);
+
+/// "%.10g" formatting for human-readable output.
+std::string fmt(double x, int digits = 10);
+
+}  // namespace ek::cli

@@ -1,0 +1,122 @@
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+
+#include "cli_runner.hpp"
+#include "testing.hpp"
+
+using ek::clitest::run;
+using ek::clitest::temp_dir;
+
+namespace {
+
+// Bad input: exactly one line on stderr and exit status 2.
+void expect_bad_input(const std::string& args, const std::string& needle) {
+  const auto r = run(args);
+  EXPECT_EQ(r.status, 2) << args << "\n" << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << "\n" << r.err;
+  EXPECT_NE(r.err.find(needle), std::string::npos) << args << "\n" << r.err;
+}
+
+}  // namespace
+
+TEST(Cli, InfoJson) {
+  const auto r = run("info 4_1 --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = r.json();
+  EXPECT_EQ(j["name"], "4_1");
+  EXPECT_EQ(j["crossing_number"], 4);
+  EXPECT_EQ(j["bridge_index"], 2);
+  EXPECT_EQ(j["braid_index"], 3);
+  EXPECT_EQ(j["alexander"], nlohmann::json::parse("[-1,3,-1]"));
+  EXPECT_EQ(j["determinant"], 5);
+  const auto u = run("info unknot --json").json();
+  EXPECT_EQ(u["alexander"], nlohmann::json::parse("[1]"));
+  EXPECT_EQ(u["determinant"], 1);
+  const auto h = run("info 12n_838");
+  EXPECT_EQ(h.status, 0);
+  EXPECT_NE(h.out.find("crossing number:   12"), std::string::npos);
+}
+
+TEST(Cli, EmbedAndInvariants) {
+  const std::string dir = temp_dir("embed");
+  for (const char* from : {"braid", "pd"}) {
+    const std::string file = dir + "/8_19-" + from + ".obj";
+    const auto e = run(std::string("embed 8_19 --from ") + from + " -n 300 -o " + file);
+    ASSERT_EQ(e.status, 0) << e.err;
+    const auto r = run("invariants " + file + " --json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto j = r.json();
+    EXPECT_EQ(j["vertices"], 300);
+    EXPECT_NEAR(j["length"].get<double>(), 300.0, 1e-6);
+    EXPECT_EQ(j["alexander"], nlohmann::json::parse("[1,-1,0,1,0,-1,1]"));
+    EXPECT_EQ(j["determinant"], 3);
+    for (const char* key : {"writhe", "total_curvature", "clearance"}) EXPECT_TRUE(j[key].is_number()) << key;
+    // Milnor: total curvature above 2π · bridge index (8_19: bridge index 3)
+    EXPECT_GT(j["total_curvature"].get<double>(), 2 * M_PI * 3);
+  }
+  std::filesystem::remove_all(dir);
+}
+
+TEST(Cli, PeerFilesReadAsTheyAre) {
+  const std::string dir = ek::fixtures::peer_dir();
+  auto a = run("invariants " + dir + "/4_1-smooth.obj --json");
+  ASSERT_EQ(a.status, 0) << a.err;
+  EXPECT_EQ(a.json()["alexander"], nlohmann::json::parse("[-1,3,-1]"));
+  EXPECT_EQ(a.json()["vertices"], 272);
+  auto b = run("invariants " + dir + "/9_47-cubiclattice.txt --json");
+  ASSERT_EQ(b.status, 0) << b.err;
+  EXPECT_EQ(b.json()["vertices"], 208);
+  auto c = run("invariants " + dir + "/12n_838-braid.obj --json");
+  ASSERT_EQ(c.status, 0) << c.err;
+  EXPECT_EQ(c.json()["vertices"], 360);
+  EXPECT_EQ(c.json()["alexander"], run("info 12n_838 --json").json()["alexander"]);
+  EXPECT_EQ(b.json()["alexander"], run("info 9_47 --json").json()["alexander"]);
+}
+
+TEST(Cli, BadInputExitsWithStatus2AndOneLine) {
+  const std::string dir = temp_dir("bad");
+  expect_bad_input("info 13_1", "unknown knot '13_1'");
+  expect_bad_input("info", "missing argument NAME");
+  expect_bad_input("info 3_1 --bogus", "unknown option '--bogus'");
+  expect_bad_input("frobnicate", "unknown command 'frobnicate'");
+  expect_bad_input("invariants /nonexistent.obj", "cannot open");
+  {
+    std::ofstream(dir + "/nan.txt") << "0 0 0\n1 0 0\n1 nan 0\n0 1 0\n";
+    std::ofstream(dir + "/three.txt") << "0 0 0\n1 0 0\n1 1 0\n";
+    std::ofstream(dir + "/repeat.txt") << "0 0 0\n1 0 0\n1 0 0\n1 1 0\n0 1 0\n";
+    std::ofstream(dir + "/garbage.obj") << "v 1 2\n";
+  }
+  expect_bad_input("invariants " + dir + "/nan.txt", "not finite");
+  expect_bad_input("invariants " + dir + "/three.txt", "at least 4 vertices");
+  expect_bad_input("invariants " + dir + "/repeat.txt", "coincide");
+  expect_bad_input("invariants " + dir + "/garbage.obj", "3 coordinates");
+  expect_bad_input("embed 3_1 --from dt -o " + dir + "/x.obj", "unknown embedding source 'dt'");
+  expect_bad_input("embed 3_1 -n 2 -o " + dir + "/x.obj", "at least 4 vertices");
+  expect_bad_input("embed 3_1 -n abc -o " + dir + "/x.obj", "'abc' is not an integer");
+  expect_bad_input("embed 3_1 -o /nonexistent-folder/x.obj", "does not exist");
+  expect_bad_input("embed 3_1", "missing -o FILE");
+  expect_bad_input("embed 3_1 -o " + dir + "/x.ply", "unknown curve format");
+  std::filesystem::remove_all(dir);
+}
+
+TEST(Cli, FailedRunKeepsExistingOutput) {
+  const std::string dir = temp_dir("keep");
+  const std::string file = dir + "/keep.obj";
+  std::ofstream(file) << "precious";
+  const auto r = run("embed 12n_838 --from pd -n 10 -o " + file);  // too coarse: fails
+  EXPECT_EQ(r.status, 2) << r.err;
+  std::ifstream in(file);
+  std::string s;
+  in >> s;
+  EXPECT_EQ(s, "precious");
+  std::filesystem::remove_all(dir);
+}
+
+TEST(Cli, MissingKnotTableIsOneLineError) {
+  const auto r = run("info 3_1 2>&1; KNOT_TABLE=/nonexistent.csv " EK_KNOTS_BIN " info 3_1");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("/nonexistent.csv"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+}
