@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "ek/core/errors.hpp"
+#include "ek/core/int128.hpp"
 #include "ek/knots/alexander.hpp"
 #include "ek/knots/table.hpp"
 #include "testing.hpp"
@@ -169,7 +170,7 @@ TEST(Alexander, LargeDeterminantsUseSeveralPrimes) {
   ASSERT_EQ(det.size(), static_cast<size_t>(m + 1));
   // binomial(38, k) 2^(38-k) for k = 0 and k = 19
   EXPECT_EQ(det[0], std::int64_t(1) << 38);
-  __int128 b = 1;
+  ek::int128 b = 1;
   for (int k = 1; k <= 19; ++k) b = b * (m - k + 1) / k;
   EXPECT_EQ(det[19], static_cast<std::int64_t>(b * (std::int64_t(1) << 19)));
   EXPECT_EQ(det[38], 1);

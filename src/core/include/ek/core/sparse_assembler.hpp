@@ -1,0 +1,91 @@
+#pragma once
+/// Local-to-global assembly of sparse symmetric Hessians with a cached
+/// sparsity pattern (conventions 5 and 7: one shared helper; the pattern is
+/// built once per structure and then only filled with values).
+///
+/// Usage, once per Hessian evaluation:
+///   A.begin(dofs);
+///   A.segment(0, rod_structure_id);      rod.add_hessian(A);
+///   A.segment(1, contact_structure_id);  contact.add_hessian(A);
+///   bool pattern_changed = A.end();
+///   const auto& H = A.matrix();          // upper triangle, compressed
+///
+/// A segment whose (id, structure) pair and sequence of add() calls is the
+/// same as in the previous pass is replayed: each add() writes straight into
+/// the stored value slot, with no allocation and no search. When a segment's
+/// structure id changes (for example the contact set changed) the pattern is
+/// rebuilt in end() and pattern_changed() is true, so that the solver redoes
+/// its symbolic factorisation.
+///
+/// Only the upper triangle (row <= col) is stored, as CHOLMOD's stype = 1
+/// expects; add() folds lower-triangle entries onto it, so local matrices are
+/// passed whole.
+#include <Eigen/Core>
+#include <Eigen/SparseCore>
+#include <cstdint>
+#include <vector>
+
+namespace ek {
+
+class SparseAssembler {
+ public:
+  using Index = int;
+
+  /// Starts a pass for a dofs-by-dofs matrix.
+  void begin(Index dofs);
+  /// Subsequent add() calls belong to segment `id` (0, 1, 2, ... in the same
+  /// order every pass) whose sequence of positions is identified by `structure`.
+  void segment(int id, std::uint64_t structure);
+  /// Adds v at (i, j); stored at (min, max).
+  void add(Index i, Index j, double v);
+  /// Adds a dense symmetric local matrix H at global indices idx (H is k by k,
+  /// idx has k entries; negative indices are skipped).
+  template <class Derived, class IndexArray>
+  void add_local(const IndexArray& idx, const Eigen::MatrixBase<Derived>& H) {
+    const Index k = static_cast<Index>(H.rows());
+    for (Index a = 0; a < k; ++a) {
+      if (idx[a] < 0) continue;
+      for (Index b = a; b < k; ++b) {
+        if (idx[b] < 0) continue;
+        // off-diagonal local pairs appear twice in H; fold both onto one global entry
+        const double v = (a == b) ? H(a, a) : H(a, b);
+        if (idx[a] == idx[b] && a != b)
+          add(idx[a], idx[b], 2.0 * v);
+        else
+          add(idx[a], idx[b], v);
+      }
+    }
+  }
+  /// Ends the pass; returns true when the sparsity pattern changed.
+  bool end();
+
+  /// The assembled matrix (upper triangle, compressed, column-major).
+  const Eigen::SparseMatrix<double, Eigen::ColMajor, Index>& matrix() const { return H_; }
+  /// Increases whenever the pattern changes.
+  std::uint64_t pattern_version() const { return version_; }
+  bool pattern_changed() const { return changed_; }
+  /// Number of entries added in the last pass (before folding duplicates).
+  size_t entries() const { return total_; }
+
+ private:
+  struct Segment {
+    int id = -1;
+    std::uint64_t structure = 0;
+    std::vector<Index> slots;                  // value slot of each add() (replay)
+    std::vector<Eigen::Triplet<double, Index>> recorded;  // positions+values (record)
+    size_t cursor = 0;
+    bool replay = false;
+  };
+  Eigen::SparseMatrix<double, Eigen::ColMajor, Index> H_;
+  std::vector<Segment> segments_;
+  int current_ = -1;
+  int used_segments_ = 0;
+  Index dofs_ = 0;
+  std::uint64_t version_ = 0;
+  bool changed_ = false;
+  bool in_pass_ = false;
+  bool replay_ok_ = true;
+  size_t total_ = 0;
+};
+
+}  // namespace ek
