@@ -1,0 +1,47 @@
+#pragma once
+/// Smallest eigenpairs of a sparse symmetric Hessian (stability, stiffness,
+/// negative-curvature directions) with Spectra's Lanczos solver on the
+/// shift-inverted operator P (H + sI)⁻¹ P, using a CHOLMOD factor of H + sI:
+/// an eigenvalue μ of the operator gives λ = 1/μ - s of H. P projects out the
+/// rigid-motion modes (translations and infinitesimal rotations of the
+/// positions, and the uniform shift of the material angles when present),
+/// which are zero modes of the elastic energy (paper Section 7.3, "Stiffness":
+/// smallest positive eigenvalue with rigid motions excluded).
+#include <Eigen/Dense>
+#include <Eigen/SparseCore>
+#include <vector>
+
+#include "ek/geometry/types.hpp"
+
+namespace ek {
+
+struct EigenOptions {
+  int count = 1;               ///< [1] number of smallest eigenpairs wanted
+  bool exclude_rigid = true;   ///< project out rigid-motion modes
+  int subspace = 24;           ///< [1] Lanczos subspace size (ncv), > count
+  int max_iterations = 2000;   ///< [1]
+  double tolerance = 1e-10;    ///< [1] relative tolerance of the Ritz values
+};
+
+struct EigenResult {
+  bool converged = false;
+  VecX values;                 ///< ascending eigenvalues of H
+  Eigen::MatrixXd vectors;     ///< dofs by count, unit columns
+  double shift = 0.0;          ///< s used for the shift-invert
+};
+
+/// Orthonormal basis (dofs by k) of the rigid-motion modes: three
+/// translations and three rotations about the centroid acting on the
+/// position dofs 0..3n-1 (n = positions.rows()), plus, when
+/// `theta_begin` >= 0, the uniform shift of the n material angles stored at
+/// dofs theta_begin .. theta_begin + n - 1.
+Eigen::MatrixXd rigid_modes(const Points& positions, int dofs, int theta_begin = -1);
+
+/// The `options.count` smallest eigenpairs of the symmetric matrix given by
+/// its upper triangle. `base_shift` > 0 is the first shift tried for
+/// positive definiteness (raised ×10 until H + sI factorises).
+EigenResult smallest_eigenpairs(const Eigen::SparseMatrix<double, Eigen::ColMajor, int>& upper,
+                                const Eigen::MatrixXd& excluded_modes, double base_shift,
+                                const EigenOptions& options = {});
+
+}  // namespace ek

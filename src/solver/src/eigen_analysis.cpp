@@ -1,0 +1,100 @@
+#include "ek/solver/eigen_analysis.hpp"
+
+#include <Spectra/SymEigsSolver.h>
+
+#include <cmath>
+
+#include "ek/core/errors.hpp"
+#include "ek/solver/cholesky.hpp"
+
+namespace ek {
+namespace {
+
+/// y = P (H + sI)^{-1} P x, P = I - Q Qᵀ.
+class ShiftInvertOp {
+ public:
+  using Scalar = double;
+  ShiftInvertOp(const CholeskySolver& chol, const Eigen::MatrixXd& Q, Eigen::Index n) : chol_(chol), Q_(Q), n_(n) {}
+  Eigen::Index rows() const { return n_; }
+  Eigen::Index cols() const { return n_; }
+  void perform_op(const double* x_in, double* y_out) const {
+    VecX x = Eigen::Map<const VecX>(x_in, n_);
+    if (Q_.cols() > 0) x -= Q_ * (Q_.transpose() * x);
+    VecX y = chol_.solve(x);
+    if (Q_.cols() > 0) y -= Q_ * (Q_.transpose() * y);
+    Eigen::Map<VecX>(y_out, n_) = y;
+  }
+
+ private:
+  const CholeskySolver& chol_;
+  const Eigen::MatrixXd& Q_;
+  Eigen::Index n_;
+};
+
+}  // namespace
+
+Eigen::MatrixXd rigid_modes(const Points& positions, int dofs, int theta_begin) {
+  const int n = static_cast<int>(positions.rows());
+  require(dofs >= 3 * n, "rigid_modes: fewer dofs than positions");
+  const int k = 6 + (theta_begin >= 0 ? 1 : 0);
+  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(dofs, k);
+  const Vec3 c = positions.colwise().mean().transpose();
+  for (int i = 0; i < n; ++i) {
+    const Vec3 p = positions.row(i).transpose() - c;
+    for (int a = 0; a < 3; ++a) {
+      M(3 * i + a, a) = 1.0;
+      const Vec3 w = Vec3::Unit(a).cross(p);
+      M.block<3, 1>(3 * i, 3 + a) = w;
+    }
+  }
+  if (theta_begin >= 0) {
+    require(theta_begin + n <= dofs, "rigid_modes: theta range out of bounds");
+    for (int j = 0; j < n; ++j) M(theta_begin + j, 6) = 1.0;
+  }
+  // Orthonormalise (a degenerate rotation, e.g. about the axis of a straight
+  // line, gives a zero column: dropped).
+  Eigen::HouseholderQR<Eigen::MatrixXd> qr(M);
+  Eigen::MatrixXd R = qr.matrixQR().topRows(k).triangularView<Eigen::Upper>();
+  Eigen::MatrixXd Q = qr.householderQ() * Eigen::MatrixXd::Identity(dofs, k);
+  std::vector<int> keep;
+  const double scale = M.colwise().norm().maxCoeff();
+  for (int j = 0; j < k; ++j)
+    if (std::fabs(R(j, j)) > 1e-10 * scale) keep.push_back(j);
+  Eigen::MatrixXd out(dofs, static_cast<Eigen::Index>(keep.size()));
+  for (size_t j = 0; j < keep.size(); ++j) out.col(static_cast<Eigen::Index>(j)) = Q.col(keep[j]);
+  return out;
+}
+
+EigenResult smallest_eigenpairs(const Eigen::SparseMatrix<double, Eigen::ColMajor, int>& upper,
+                                const Eigen::MatrixXd& excluded, double base_shift, const EigenOptions& o) {
+  const Eigen::Index n = upper.rows();
+  require(base_shift > 0.0, "smallest_eigenpairs: base_shift must be positive");
+  require(o.count >= 1 && o.count < n, "smallest_eigenpairs: count must be in [1, n)");
+  require(excluded.cols() == 0 || excluded.rows() == n, "smallest_eigenpairs: excluded modes have the wrong size");
+  EigenResult result;
+  CholeskySolver chol(CholeskyMode::Simplicial);
+  double s = base_shift;
+  bool ok = false;
+  for (int attempt = 0; attempt < 60 && !ok; ++attempt) {
+    ok = chol.factorize(upper, s, 0);
+    if (!ok) s *= 10.0;
+  }
+  if (!ok) return result;
+  result.shift = s;
+  ShiftInvertOp op(chol, excluded, n);
+  const int nev = o.count;
+  const int ncv = static_cast<int>(std::min<Eigen::Index>(n - excluded.cols(), std::max(o.subspace, 2 * nev + 1)));
+  if (ncv <= nev) return result;
+  Spectra::SymEigsSolver<ShiftInvertOp> solver(op, nev, ncv);
+  solver.init();
+  solver.compute(Spectra::SortRule::LargestAlge, o.max_iterations, o.tolerance, Spectra::SortRule::LargestAlge);
+  if (solver.info() != Spectra::CompInfo::Successful) return result;
+  const VecX mu = solver.eigenvalues();  // descending μ -> ascending λ
+  result.values.resize(nev);
+  result.vectors = solver.eigenvectors();
+  for (int k = 0; k < nev; ++k) result.values(k) = 1.0 / mu(k) - s;
+  result.converged = true;
+  return result;
+}
+
+}  // namespace ek
