@@ -1,0 +1,126 @@
+#pragma once
+/// The data-set file: one HDF5 file holds the equilibria of many knot types
+/// (paper Section 7.4). Layout (README "Data-set files" documents it for users):
+///
+///   /                                  attributes: format = "elastic-knots-dataset", format_version,
+///                                      project_version, created, knot_table, material and solver
+///                                      parameters (young, poisson, radius, vertices, edge_length,
+///                                      tolerance, contact_stiffness, dhat, twist_model), seed, sampling
+///   /knots/<name>/                     one group per knot type; attributes: name, crossing_number,
+///                                      bridge_index, braid_index (-1 unknown), alexander (int list),
+///                                      samples_used, adaptive (0/1), complete (0/1)
+///     equilibria        float64 [m, n, 3]  the stored (converged) equilibria
+///     attributes        float64 [m, k]     one row per equilibrium, columns named by
+///     attribute_names   string  [k]
+///     runs/             one entry per relaxation run (also failures), columns of length r:
+///       sample int64, seed int64, status string, equilibrium int64 (-1: not stored),
+///       iterations int64, seconds float64, energy float64, gradient_norm float64,
+///       contacts int64, alexander_preserved int64 (1/0), message string
+///     similarity        float64 [m, m]     pairwise similarity (Section 7.1)
+///     linkage           float64 [m-1, 4]   complete-linkage merges (a, b, height, size), SciPy layout
+///     score_history     float64 [b]        adaptive-sampling importance score after each batch
+///
+/// Files are always written to a temporary name and renamed into place.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "ek/geometry/types.hpp"
+
+namespace ek {
+
+/// Parameters shared by every knot of a data set.
+struct DatasetMetadata {
+  double young = 2000.0;             ///< [pressure] E
+  double poisson = 0.3;              ///< [1] ν
+  double radius = 0.2;               ///< [length] wire radius r
+  int vertices = 400;                ///< [1] n per curve
+  double edge_length = 1.0;          ///< [length] rest edge length
+  double tolerance = 1e-8;           ///< [energy/length] solver gradient tolerance
+  double contact_stiffness = 1e3;    ///< [1] ω
+  double dhat = 0.4;                 ///< [length] barrier distance
+  std::string twist_model = "twist-free";
+  std::string sampling;              ///< e.g. "fixed:50" or "adaptive:50+10,max=500,S>0.1"
+  std::uint64_t seed = 1;
+  std::string project_version;
+  std::string knot_table;
+  std::string created;               ///< ISO 8601 time of the first write
+
+  /// Empty when the physical and numerical parameters equal o's; otherwise a
+  /// one-line description of the first difference ("radius 0.2 vs 0.1").
+  std::string difference(const DatasetMetadata& o) const;
+};
+
+/// One relaxation run (successful or not).
+struct RunRecord {
+  int sample = 0;                ///< index of the lattice sample within the knot
+  std::uint64_t seed = 0;        ///< seed of the walk that produced it
+  std::string status;            ///< solver status, or "topology-changed", "error"
+  int equilibrium = -1;          ///< row in `equilibria`, -1 when not stored
+  int iterations = 0;
+  double seconds = 0.0;          ///< [s]
+  double energy = 0.0;
+  double gradient_norm = 0.0;
+  int contacts = 0;
+  bool alexander_preserved = true;
+  std::string message;           ///< error text for failed runs
+};
+
+/// Everything stored for one knot type.
+struct KnotEntry {
+  std::string name;
+  int crossing_number = 0;
+  int bridge_index = -1;
+  int braid_index = -1;
+  std::vector<std::int64_t> alexander;
+  std::vector<Points> equilibria;                 ///< m curves, n by 3
+  std::vector<std::string> attribute_names;       ///< k names
+  Eigen::MatrixXd attributes;                     ///< m by k
+  std::vector<RunRecord> runs;
+  Eigen::MatrixXd similarity;                     ///< m by m
+  Eigen::MatrixXd linkage;                        ///< (m-1) by 4
+  bool adaptive = false;
+  bool complete = true;
+  int samples_used = 0;
+  std::vector<double> score_history;
+
+  /// Column of an attribute, by name; throws InputError for an unknown name.
+  int attribute_column(const std::string& attribute) const;
+};
+
+/// Streams knots into a new data-set file, written to "<path>.tmp.*" and
+/// renamed onto `path` by commit(). Destroying an uncommitted writer removes
+/// the temporary and leaves any existing file untouched.
+class DatasetWriter {
+ public:
+  DatasetWriter(const std::string& path, const DatasetMetadata& meta);
+  ~DatasetWriter();
+  DatasetWriter(const DatasetWriter&) = delete;
+  DatasetWriter& operator=(const DatasetWriter&) = delete;
+  void add(const KnotEntry& knot);
+  void commit();
+
+ private:
+  struct Impl;
+  Impl* impl_;
+};
+
+/// Reads a data-set file. Every problem (not HDF5, wrong format, missing
+/// fields) is an InputError naming the file.
+class DatasetReader {
+ public:
+  explicit DatasetReader(const std::string& path);
+  ~DatasetReader();
+  DatasetReader(const DatasetReader&) = delete;
+  DatasetReader& operator=(const DatasetReader&) = delete;
+  const DatasetMetadata& metadata() const;
+  std::vector<std::string> knot_names() const;   ///< in table order of the file
+  bool has_knot(const std::string& name) const;
+  KnotEntry read(const std::string& name) const;  ///< InputError if absent
+
+ private:
+  struct Impl;
+  Impl* impl_;
+};
+
+}  // namespace ek

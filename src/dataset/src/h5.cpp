@@ -1,0 +1,229 @@
+#include "h5.hpp"
+
+#include <mutex>
+#include <numeric>
+
+#include "ek/core/errors.hpp"
+
+namespace ek::h5 {
+namespace {
+
+[[noreturn]] void fail(const std::string& what) { throw InputError(what); }
+
+herr_t collect(hid_t, const char* name, const H5L_info_t*, void* data) {
+  static_cast<std::vector<std::string>*>(data)->push_back(name);
+  return 0;
+}
+
+Handle space_of(const std::vector<hsize_t>& shape) {
+  if (shape.empty()) return Handle(H5Screate(H5S_SCALAR), H5Sclose);
+  return Handle(H5Screate_simple(static_cast<int>(shape.size()), shape.data(), nullptr), H5Sclose);
+}
+
+hsize_t count_of(const std::vector<hsize_t>& shape) {
+  return std::accumulate(shape.begin(), shape.end(), hsize_t{1}, std::multiplies<hsize_t>());
+}
+
+Handle string_type() {
+  Handle t(H5Tcopy(H5T_C_S1), H5Tclose);
+  H5Tset_size(t.id(), H5T_VARIABLE);
+  H5Tset_cset(t.id(), H5T_CSET_UTF8);
+  return t;
+}
+
+template <class T>
+void write_numeric(hid_t parent, const std::string& name, const std::vector<hsize_t>& shape, const T* data,
+                   hid_t mem_type, hid_t file_type) {
+  Handle space = space_of(shape);
+  Handle plist(H5Pcreate(H5P_DATASET_CREATE), H5Pclose);
+  // chunk + compress large arrays (curves compress well)
+  if (!shape.empty() && count_of(shape) >= 4096) {
+    std::vector<hsize_t> chunk = shape;
+    chunk[0] = std::max<hsize_t>(1, std::min<hsize_t>(shape[0], 65536 / std::max<hsize_t>(1, count_of(shape) / std::max<hsize_t>(shape[0], 1))));
+    H5Pset_chunk(plist.id(), static_cast<int>(chunk.size()), chunk.data());
+    H5Pset_shuffle(plist.id());
+    H5Pset_deflate(plist.id(), 4);
+  }
+  Handle ds(H5Dcreate2(parent, name.c_str(), file_type, space.id(), H5P_DEFAULT, plist.id(), H5P_DEFAULT), H5Dclose);
+  if (!ds.valid()) fail("HDF5: cannot create dataset '" + name + "'");
+  if (count_of(shape) > 0 && H5Dwrite(ds.id(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0)
+    fail("HDF5: cannot write dataset '" + name + "'");
+}
+
+template <class T>
+std::vector<T> read_numeric(hid_t parent, const std::string& name, std::vector<hsize_t>* shape_out, hid_t mem_type) {
+  Handle ds(H5Dopen2(parent, name.c_str(), H5P_DEFAULT), H5Dclose);
+  if (!ds.valid()) fail("HDF5: dataset '" + name + "' is missing");
+  Handle space(H5Dget_space(ds.id()), H5Sclose);
+  const int rank = H5Sget_simple_extent_ndims(space.id());
+  std::vector<hsize_t> shape(static_cast<size_t>(std::max(rank, 0)));
+  if (rank > 0) H5Sget_simple_extent_dims(space.id(), shape.data(), nullptr);
+  std::vector<T> out(count_of(shape));
+  if (!out.empty() && H5Dread(ds.id(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()) < 0)
+    fail("HDF5: cannot read dataset '" + name + "'");
+  if (shape_out) *shape_out = shape;
+  return out;
+}
+
+}  // namespace
+
+void quiet() {
+  static std::once_flag once;
+  std::call_once(once, [] { H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr); });
+}
+
+Handle create_file(const std::string& path) {
+  quiet();
+  Handle f(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
+  if (!f.valid()) fail("cannot create data set '" + path + "'");
+  return f;
+}
+
+Handle open_file(const std::string& path, bool writable) {
+  quiet();
+  if (H5Fis_hdf5(path.c_str()) <= 0)
+    fail("'" + path + "' is not a readable HDF5 data set");
+  Handle f(H5Fopen(path.c_str(), writable ? H5F_ACC_RDWR : H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+  if (!f.valid()) fail("cannot open data set '" + path + "'");
+  return f;
+}
+
+Handle create_group(hid_t parent, const std::string& name) {
+  Handle g(H5Gcreate2(parent, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
+  if (!g.valid()) fail("HDF5: cannot create group '" + name + "'");
+  return g;
+}
+
+Handle open_group(hid_t parent, const std::string& name) {
+  Handle g(H5Gopen2(parent, name.c_str(), H5P_DEFAULT), H5Gclose);
+  if (!g.valid()) fail("HDF5: group '" + name + "' is missing");
+  return g;
+}
+
+bool exists(hid_t parent, const std::string& name) { return H5Lexists(parent, name.c_str(), H5P_DEFAULT) > 0; }
+
+std::vector<std::string> children(hid_t group) {
+  std::vector<std::string> names;
+  hsize_t idx = 0;
+  H5Literate(group, H5_INDEX_NAME, H5_ITER_INC, &idx, collect, &names);
+  return names;
+}
+
+void write_doubles(hid_t parent, const std::string& name, const std::vector<hsize_t>& shape, const double* data) {
+  write_numeric(parent, name, shape, data, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE);
+}
+
+void write_int64(hid_t parent, const std::string& name, const std::vector<hsize_t>& shape, const std::int64_t* data) {
+  write_numeric(parent, name, shape, data, H5T_NATIVE_INT64, H5T_STD_I64LE);
+}
+
+std::vector<double> read_doubles(hid_t parent, const std::string& name, std::vector<hsize_t>* shape) {
+  return read_numeric<double>(parent, name, shape, H5T_NATIVE_DOUBLE);
+}
+
+std::vector<std::int64_t> read_int64(hid_t parent, const std::string& name, std::vector<hsize_t>* shape) {
+  return read_numeric<std::int64_t>(parent, name, shape, H5T_NATIVE_INT64);
+}
+
+void write_strings(hid_t parent, const std::string& name, const std::vector<std::string>& values) {
+  Handle type = string_type();
+  std::vector<hsize_t> shape{values.size()};
+  Handle space = space_of(shape);
+  Handle ds(H5Dcreate2(parent, name.c_str(), type.id(), space.id(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose);
+  if (!ds.valid()) fail("HDF5: cannot create dataset '" + name + "'");
+  std::vector<const char*> ptrs;
+  for (const auto& v : values) ptrs.push_back(v.c_str());
+  if (!ptrs.empty() && H5Dwrite(ds.id(), type.id(), H5S_ALL, H5S_ALL, H5P_DEFAULT, ptrs.data()) < 0)
+    fail("HDF5: cannot write dataset '" + name + "'");
+}
+
+std::vector<std::string> read_strings(hid_t parent, const std::string& name) {
+  Handle ds(H5Dopen2(parent, name.c_str(), H5P_DEFAULT), H5Dclose);
+  if (!ds.valid()) fail("HDF5: dataset '" + name + "' is missing");
+  Handle space(H5Dget_space(ds.id()), H5Sclose);
+  hsize_t n = 0;
+  H5Sget_simple_extent_dims(space.id(), &n, nullptr);
+  Handle type = string_type();
+  std::vector<char*> ptrs(n, nullptr);
+  if (n > 0 && H5Dread(ds.id(), type.id(), H5S_ALL, H5S_ALL, H5P_DEFAULT, ptrs.data()) < 0)
+    fail("HDF5: cannot read dataset '" + name + "'");
+  std::vector<std::string> out;
+  for (char* p : ptrs) out.emplace_back(p ? p : "");
+  if (n > 0) H5Dvlen_reclaim(type.id(), space.id(), H5P_DEFAULT, ptrs.data());
+  return out;
+}
+
+namespace {
+
+void write_attr(hid_t obj, const std::string& name, hid_t mem_type, hid_t file_type, const std::vector<hsize_t>& shape,
+                const void* data) {
+  if (H5Aexists(obj, name.c_str()) > 0) H5Adelete(obj, name.c_str());
+  Handle space = space_of(shape);
+  Handle a(H5Acreate2(obj, name.c_str(), file_type, space.id(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+  if (!a.valid() || H5Awrite(a.id(), mem_type, data) < 0) fail("HDF5: cannot write attribute '" + name + "'");
+}
+
+Handle open_attr(hid_t obj, const std::string& name) {
+  Handle a(H5Aopen(obj, name.c_str(), H5P_DEFAULT), H5Aclose);
+  if (!a.valid()) fail("data set attribute '" + name + "' is missing");
+  return a;
+}
+
+}  // namespace
+
+void set_attr(hid_t obj, const std::string& name, const std::string& value) {
+  Handle type = string_type();
+  const char* p = value.c_str();
+  write_attr(obj, name, type.id(), type.id(), {}, &p);
+}
+
+void set_attr(hid_t obj, const std::string& name, double value) {
+  write_attr(obj, name, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE, {}, &value);
+}
+
+void set_attr(hid_t obj, const std::string& name, std::int64_t value) {
+  write_attr(obj, name, H5T_NATIVE_INT64, H5T_STD_I64LE, {}, &value);
+}
+
+void set_attr(hid_t obj, const std::string& name, const std::vector<std::int64_t>& values) {
+  write_attr(obj, name, H5T_NATIVE_INT64, H5T_STD_I64LE, {values.size()}, values.data());
+}
+
+bool has_attr(hid_t obj, const std::string& name) { return H5Aexists(obj, name.c_str()) > 0; }
+
+std::string get_attr_string(hid_t obj, const std::string& name) {
+  Handle a = open_attr(obj, name);
+  Handle type = string_type();
+  char* p = nullptr;
+  if (H5Aread(a.id(), type.id(), &p) < 0) fail("data set attribute '" + name + "' is not a string");
+  std::string out = p ? p : "";
+  H5free_memory(p);
+  return out;
+}
+
+double get_attr_double(hid_t obj, const std::string& name) {
+  Handle a = open_attr(obj, name);
+  double v = 0.0;
+  if (H5Aread(a.id(), H5T_NATIVE_DOUBLE, &v) < 0) fail("data set attribute '" + name + "' is not a number");
+  return v;
+}
+
+std::int64_t get_attr_int(hid_t obj, const std::string& name) {
+  Handle a = open_attr(obj, name);
+  std::int64_t v = 0;
+  if (H5Aread(a.id(), H5T_NATIVE_INT64, &v) < 0) fail("data set attribute '" + name + "' is not an integer");
+  return v;
+}
+
+std::vector<std::int64_t> get_attr_ints(hid_t obj, const std::string& name) {
+  Handle a = open_attr(obj, name);
+  Handle space(H5Aget_space(a.id()), H5Sclose);
+  hsize_t n = 0;
+  H5Sget_simple_extent_dims(space.id(), &n, nullptr);
+  std::vector<std::int64_t> v(n);
+  if (n > 0 && H5Aread(a.id(), H5T_NATIVE_INT64, v.data()) < 0)
+    fail("data set attribute '" + name + "' is not an integer list");
+  return v;
+}
+
+}  // namespace ek::h5
