@@ -48,5 +48,20 @@ sanitize: deps
 stress: build
 	$(CTEST) -L 'stress'
 
+# Microbenchmarks pinned to one core (Google Benchmark, median of 5), then the
+# macro benchmarks; one summary table at the end.
+BENCH_CORE ?= 0
+bench: build
+	@mkdir -p results/bench
+	@for b in $(BUILD)/bench/bench_*; do \
+	  [ -x "$$b" ] || continue; \
+	  echo "== $$b"; \
+	  taskset -c $(BENCH_CORE) $$b --benchmark_repetitions=5 --benchmark_report_aggregates_only=true \
+	    --benchmark_out=results/bench/$$(basename $$b).json --benchmark_out_format=json || exit 1; \
+	done
+	@if [ -x $(BUILD)/experiments/exp_bench_solver ]; then \
+	  taskset -c $(BENCH_CORE) $(BUILD)/experiments/exp_bench_solver --out results/bench; fi
+	@$(PYTHON) scripts/bench_summary.py results/bench
+
 clean:
 	rm -rf $(BUILD) $(BUILD)-asan
