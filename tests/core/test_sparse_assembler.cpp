@@ -71,6 +71,20 @@ TEST(SparseAssembler, MatchesDenseAndReusesPattern) {
   }
 }
 
+TEST(SparseAssembler, EmptySegmentsAreReplayed) {
+  // A segment without entries (e.g. no active contacts) must not force a rebuild.
+  SparseAssembler A;
+  for (int pass = 0; pass < 3; ++pass) {
+    A.begin(4);
+    A.segment(0, 1);
+    A.add(0, 0, 1.0);
+    A.add(1, 2, 2.0);
+    A.segment(1, 5);  // empty
+    const bool changed = A.end();
+    EXPECT_EQ(changed, pass == 0) << pass;
+  }
+}
+
 TEST(SparseAssembler, StoresUpperTriangleOnly) {
   SparseAssembler A;
   A.begin(3);

@@ -24,7 +24,7 @@ void SparseAssembler::segment(int id, std::uint64_t structure) {
   require(id == used_segments_, "SparseAssembler::segment: segments must be numbered 0, 1, 2, ... in order");
   if (static_cast<int>(segments_.size()) <= id) segments_.resize(static_cast<size_t>(id) + 1);
   Segment& s = segments_[static_cast<size_t>(id)];
-  const bool same = replay_ok_ && s.id == id && s.structure == structure && !s.slots.empty();
+  const bool same = replay_ok_ && s.id == id && s.structure == structure && s.has_slots;
   s.id = id;
   s.structure = structure;
   s.cursor = 0;
@@ -118,6 +118,7 @@ bool SparseAssembler::end() {
       s.recorded.shrink_to_fit();
     }
     s.slots = std::move(slots);
+    s.has_slots = true;
     s.replay = false;
   }
   ++version_;

@@ -75,6 +75,7 @@ class SparseAssembler {
     std::vector<Eigen::Triplet<double, Index>> recorded;  // positions+values (record)
     size_t cursor = 0;
     bool replay = false;
+    bool has_slots = false;  // slots describe the current pattern (possibly empty)
   };
   Eigen::SparseMatrix<double, Eigen::ColMajor, Index> H_;
   std::vector<Segment> segments_;
