@@ -1,0 +1,342 @@
+#include "ek/lattice/rounding.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <unordered_map>
+#include <vector>
+
+#include "ek/core/errors.hpp"
+#include "ek/geometry/curve_io.hpp"
+#include "ek/geometry/polyline.hpp"
+#include "ek/knots/alexander.hpp"
+
+// Proof of the theorem in rounding.hpp.
+//
+// Notation: Q = s·R·P with edges E_i (m of them, W <= m/2), L the lattice
+// polygon. Every step of L was made by the cell walk at a crossing point c on
+// some edge of Q. The correspondence φ: Q → L is continuous: it runs along a
+// step while x passes a short interval J_c of length η next to c inside the
+// edge that made the step (steps made at one point get consecutive intervals),
+// and it is constant, equal to the site r, on the arc G_r of Q between the
+// intervals of the steps entering and leaving r (the cell's stretch of Q and
+// any loops cut out there). Its displacement is at most the measured δ plus η;
+// take η so small that s·c_W > 2(δ + η), and write δ for δ + η below.
+//
+// Straight-line homotopy H_t(x) = (1 − t)·x + t·φ(x). On the common
+// subdivision of Q and φ both maps are linear, so every H_t is a closed
+// polygon whose vertices move continuously with t. Let x ≠ y be points of Q,
+// x ∈ E_i, y ∈ E_j, and t < 1.
+//  (a) The cyclic index distance of i and j is >= W: |x − y| >= s·c_W > 2δ,
+//      so |H_t(x) − H_t(y)| >= |x − y| − 2tδ > 0.
+//  (b) It is < W: the shorter chain of edges from E_i to E_j has at most W
+//      edges, so they share a coordinate k and a sign σ with σ·d_k > 0 on all
+//      of them, and σ(y_k − x_k) > 0 along the arc from x to y in the chain.
+//      φ(y) − φ(x) is a sum of (parts of) steps of L whose intervals J_c meet
+//      that arc, so they were made on edges of the chain, on which
+//      floor(x_k + 1/2) is monotone in the direction σ (a step made at a
+//      vertex by the neighbouring edge outside the chain has the same sign, or
+//      is followed by its back-track and both are erased). So
+//      σ(φ(y)_k − φ(x)_k) >= 0 and
+//         H_t(y)_k − H_t(x)_k = (1 − t)(y_k − x_k) + t(φ(y)_k − φ(x)_k) ≠ 0.
+// Hence H_t is an embedded polygon for every t < 1, of the knot type of Q.
+// At t = 1, H_1 = φ is injective except that each arc G_r collapses to its
+// site. All points of G_r are within δ of r, hence within 2δ of each other, so
+// by (a) G_r lies on at most W consecutive edges and is strictly monotone in
+// their common coordinate: an unknotted arc. For t close to 1, H_t maps G_r to
+// a copy of G_r scaled by 1 − t next to r and is within (1 − t)δ of L
+// elsewhere; contracting these small unknotted arcs is an isotopy onto L. So
+// L has the knot type of Q, which is that of P.                          ∎
+//
+// Bounds on δ. Before loop erasure every coordinate of x and of its site
+// differ by at most 1/2 (at a crossing the crossing coordinate sits exactly
+// half-way between the two sites), so δ₀ <= √3/2. A loop that closes at site r
+// is entered at x and left at y with |x − r|, |y − r| <= δ₀, so |x − y| <= 2δ₀.
+// With W = 2 and s·c_2 > 2δ₀, (a) puts x and y on adjacent edges (the walk
+// along one edge never repeats a site) around a corner p with turning angle
+// θ; for θ <= 90° the cut arc is the V x, p, y, whose height over the chord
+// [x, y] is at most (|x − y|/2)·tan(θ/2), and |x − p| <= |x − y| <= 2δ₀ (the
+// angle at p is >= 90°). So with the walk's start at the midpoint of an edge
+// longer than 4δ₀ no cut arc contains the start, δ <= δ₀·(1 + tan(θ_max/2)),
+// and the scale
+//      s > max( 2·(√3/2)·(1 + tan(θ_max/2)) / c_2 ,  4·(√3/2) / ℓ_max )
+// is certified a priori. round_to_lattice starts from the optimistic
+// s = 2·(√3/2)/c_W with the largest window W the curve allows (c_W can exceed
+// the edge length, which bounds c_2), checks s·c_W > 2δ with the measured δ,
+// enlarges s when it fails, and after half of its attempts falls back to
+// W = 2 with at least this a-priori scale.
+
+namespace ek {
+
+namespace {
+
+constexpr double kHalfDiagonal = 0.86602540378443865;  // √3/2
+constexpr double kMaxWalkSteps = 1e7;                  // larger cell walks are refused
+
+std::uint64_t splitmix64(std::uint64_t& state) {
+  std::uint64_t x = (state += 0x9E3779B97F4A7C15ull);
+  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
+  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
+  return x ^ (x >> 31);
+}
+
+double unit_uniform(std::uint64_t& state) { return static_cast<double>(splitmix64(state) >> 11) * 0x1.0p-53; }
+
+// Uniform random rotation (Shoemake's unit quaternion).
+Mat3 random_rotation_matrix(std::uint64_t& state) {
+  const double u1 = unit_uniform(state), u2 = unit_uniform(state), u3 = unit_uniform(state);
+  const double a = std::sqrt(1.0 - u1), b = std::sqrt(u1);
+  Eigen::Quaterniond q(b * std::cos(2 * M_PI * u3), a * std::sin(2 * M_PI * u2), a * std::cos(2 * M_PI * u2),
+                       b * std::sin(2 * M_PI * u3));
+  return q.normalized().toRotationMatrix();
+}
+
+Points rotated(const Points& P, const Mat3& R) { return P * R.transpose(); }
+
+struct Site {
+  std::int32_t p[3];
+  std::uint64_t key() const { return site_key(p[0], p[1], p[2]); }
+  double distance_to(const Vec3& x) const {
+    return std::sqrt((x[0] - p[0]) * (x[0] - p[0]) + (x[1] - p[1]) * (x[1] - p[1]) + (x[2] - p[2]) * (x[2] - p[2]));
+  }
+};
+
+Site round_site(const Vec3& x) {
+  Site s;
+  for (int k = 0; k < 3; ++k) {
+    const double r = std::floor(x[k] + 0.5);
+    require(std::abs(r) < 1e9, "lattice rounding: coordinates too large for the lattice (scale too big)");
+    s.p[k] = static_cast<std::int32_t>(r);
+  }
+  return s;
+}
+
+struct Event {
+  double tau;
+  int axis;
+  int dir;
+};
+
+}  // namespace
+
+int monotone_window(const Points& P, int max_window, double min_direction_cosine) {
+  const int m = static_cast<int>(P.rows());
+  require(m >= 4, "monotone_window: need at least 4 vertices");
+  require(max_window >= 1, "monotone_window: max_window must be >= 1");
+  std::vector<Vec3> d(static_cast<size_t>(m));
+  for (int i = 0; i < m; ++i) {
+    const Vec3 e = (P.row((i + 1) % m) - P.row(i)).transpose();
+    const double len = e.norm();
+    if (!(len > 0.0)) return 0;
+    d[static_cast<size_t>(i)] = e / len;
+  }
+  std::vector<int> best(static_cast<size_t>(m), 0);
+  for (int k = 0; k < 3; ++k)
+    for (int sign = -1; sign <= 1; sign += 2) {
+      int run = 0;
+      for (int i = 2 * m - 1; i >= 0; --i) {
+        const bool marked = sign * d[static_cast<size_t>(i % m)][k] >= min_direction_cosine;
+        run = marked ? std::min(run + 1, m) : 0;
+        if (i < m) best[static_cast<size_t>(i)] = std::max(best[static_cast<size_t>(i)], run);
+      }
+    }
+  int W = *std::min_element(best.begin(), best.end());
+  return std::min({W, max_window, m / 2});
+}
+
+RoundingResult lattice_walk_of(const Points& P, double scale, const Mat3& rotation) {
+  const int m = static_cast<int>(P.rows());
+  require(m >= 4, "lattice walk: need at least 4 vertices");
+  require(std::isfinite(scale) && scale > 0.0, "lattice walk: the scale must be positive");
+  const Points Q = rotated(P, rotation) * scale;
+  int j0 = 0;
+  double lmax = -1.0;
+  for (int i = 0; i < m; ++i) {
+    const double l = (Q.row((i + 1) % m) - Q.row(i)).norm();
+    if (l > lmax) lmax = l, j0 = i;
+  }
+  const Vec3 S = 0.5 * (Q.row(j0) + Q.row((j0 + 1) % m)).transpose();
+
+  // Cell walk: key points (crossings and polygon vertices) in curve order,
+  // walk sites with the key index at which they are entered.
+  std::vector<Vec3> keys;
+  std::vector<Site> walk;
+  std::vector<int> arrive;
+  keys.reserve(static_cast<size_t>(4 * m));
+  Site cur = round_site(S);
+  keys.push_back(S);
+  walk.push_back(cur);
+  arrive.push_back(0);
+  std::vector<Event> events;
+  auto piece = [&](const Vec3& A, const Vec3& B) {
+    events.clear();
+    for (int k = 0; k < 3; ++k) {
+      const double a = A[k], b = B[k];
+      if (a == b) continue;
+      const long long ca = static_cast<long long>(std::floor(a + 0.5));
+      const long long cb = static_cast<long long>(std::floor(b + 0.5));
+      for (long long c = ca; c < cb; ++c)
+        events.push_back({std::clamp((static_cast<double>(c) + 0.5 - a) / (b - a), 0.0, 1.0), k, +1});
+      for (long long c = ca; c > cb; --c)
+        events.push_back({std::clamp((static_cast<double>(c) - 0.5 - a) / (b - a), 0.0, 1.0), k, -1});
+    }
+    std::sort(events.begin(), events.end(),
+              [](const Event& x, const Event& y) { return x.tau < y.tau || (x.tau == y.tau && x.axis < y.axis); });
+    for (const Event& ev : events) {
+      keys.push_back(A + ev.tau * (B - A));
+      cur.p[ev.axis] += ev.dir;
+      walk.push_back(cur);
+      arrive.push_back(static_cast<int>(keys.size()) - 1);
+    }
+    keys.push_back(B);
+  };
+  piece(S, Q.row((j0 + 1) % m).transpose());
+  for (int e = 1; e < m; ++e) {
+    const int i = (j0 + e) % m;
+    piece(Q.row(i).transpose(), Q.row((i + 1) % m).transpose());
+  }
+  piece(Q.row(j0).transpose(), S);
+  const int N = static_cast<int>(walk.size()) - 1;  // w_N = w_0
+  const int K = static_cast<int>(keys.size());
+  if (walk[static_cast<size_t>(N)].key() != walk[0].key() || N < 4)
+    throw std::logic_error("lattice walk: the cell walk does not close");
+
+  auto range_max = [&](const Site& s, int from, int to) {
+    double d = 0.0;
+    for (int q = from; q <= to; ++q) d = std::max(d, s.distance_to(keys[static_cast<size_t>(q)]));
+    return d;
+  };
+  RoundingResult res;
+  res.scale = scale;
+  res.rotation = rotation;
+  res.walk_length = N;
+  for (int a = 0; a < N; ++a)
+    res.walk_displacement = std::max(
+        res.walk_displacement,
+        range_max(walk[static_cast<size_t>(a)], arrive[static_cast<size_t>(a)], arrive[static_cast<size_t>(a) + 1]));
+  res.walk_displacement = std::max(res.walk_displacement, range_max(walk[0], arrive[static_cast<size_t>(N)], K - 1));
+
+  // Chronological loop erasure of w_0 .. w_{N-1} (w_N = w_0 closes the polygon).
+  std::vector<Site> path;
+  std::vector<int> path_arrive;
+  std::unordered_map<std::uint64_t, int> where;
+  where.reserve(static_cast<size_t>(2 * N));
+  for (int a = 0; a < N; ++a) {
+    const Site& w = walk[static_cast<size_t>(a)];
+    const auto it = where.find(w.key());
+    if (it != where.end()) {
+      const int q = it->second;
+      while (static_cast<int>(path.size()) > q + 1) {
+        where.erase(path.back().key());
+        path.pop_back();
+        path_arrive.pop_back();
+      }
+      ++res.loops_erased;
+    } else {
+      where.emplace(w.key(), static_cast<int>(path.size()));
+      path.push_back(w);
+      path_arrive.push_back(arrive[static_cast<size_t>(a)]);
+    }
+  }
+  const int M = static_cast<int>(path.size());
+  // Preimage of path entry q: keys [arrive_q, arrive_{q+1}]; the last entry's
+  // ends where the walk returns to w_0, and w_0 also owns the tail up to S.
+  for (int q = 0; q < M; ++q) {
+    const int to = q + 1 < M ? path_arrive[static_cast<size_t>(q) + 1] : arrive[static_cast<size_t>(N)];
+    res.displacement =
+        std::max(res.displacement, range_max(path[static_cast<size_t>(q)], path_arrive[static_cast<size_t>(q)], to));
+  }
+  res.displacement = std::max(res.displacement, range_max(path[0], arrive[static_cast<size_t>(N)], K - 1));
+
+  res.points.resize(M, 3);
+  for (int q = 0; q < M; ++q)
+    for (int k = 0; k < 3; ++k) res.points(q, k) = path[static_cast<size_t>(q)].p[k];
+  const LatticePolygonCheck check = check_lattice_polygon(res.points);
+  if (!check.ok) throw std::logic_error("lattice walk: loop erasure left a defect: " + check.problem);
+  const VecX theta = turning_angles(P);
+  res.max_turning_angle = theta.maxCoeff();
+  return res;
+}
+
+RoundingResult round_to_lattice(const Points& P, const RoundingOptions& o,
+                                const std::optional<AlexanderPolynomial>& expected) {
+  require(std::isfinite(o.margin) && o.margin > 0.0, "lattice rounding: margin must be positive");
+  require(o.max_window >= 2, "lattice rounding: max_window must be >= 2");
+  require(o.min_direction_cosine > 0.0 && o.min_direction_cosine < 0.5,
+          "lattice rounding: min_direction_cosine must be in (0, 0.5)");
+  require(o.max_attempts >= 1 && o.rotation_attempts >= 0, "lattice rounding: attempt counts must be positive");
+  validate_closed_curve(P, "lattice rounding");
+
+  std::optional<AlexanderPolynomial> want = expected;
+  if (o.verify && !want) want = alexander(P);
+
+  // A rotation under which every corner has a common monotone coordinate.
+  Mat3 R = Mat3::Identity();
+  std::uint64_t rot_state = o.rotation_seed;
+  int W = monotone_window(P, o.max_window, o.min_direction_cosine);
+  for (int r = 0; W < 2 && r < o.rotation_attempts; ++r) {
+    R = random_rotation_matrix(rot_state);
+    W = monotone_window(rotated(P, R), o.max_window, o.min_direction_cosine);
+  }
+  if (W < 2) {
+    const VecX theta = turning_angles(P);
+    Eigen::Index at = 0;
+    const double tmax = theta.maxCoeff(&at);
+    throw InputError("lattice rounding: the corner at vertex " + std::to_string(at) + " turns by " +
+                     std::to_string(tmax * 180.0 / M_PI) +
+                     " degrees and no rotation gives its two edges a common monotone coordinate; "
+                     "use a more finely sampled curve");
+  }
+  const double lmax = edge_lengths(P).maxCoeff();
+  double cW = clearance(P, W).distance;  // rotation-invariant
+  const double diagonal = (P.colwise().maxCoeff() - P.colwise().minCoeff()).norm();
+  if (!(cW > 1e-9 * diagonal))
+    throw InputError("lattice rounding: the curve intersects itself (clearance " + std::to_string(cW) + " at size " +
+                     std::to_string(diagonal) + ")");
+  // optimistic first scale (δ = δ₀'s bound); the certificate decides
+  double s = (1.0 + o.margin) * 2.0 * kHalfDiagonal / cW;
+  double l1_length = 0.0;  // the cell walk has about s·Σ|e_i|₁ steps
+  for (Eigen::Index i = 0; i < P.rows(); ++i) l1_length += (P.row((i + 1) % P.rows()) - P.row(i)).lpNorm<1>();
+  if (s * l1_length > kMaxWalkSteps)
+    throw InputError("lattice rounding: the curve's clearance " + std::to_string(cW) +
+                     " is too small for its length: the lattice polygon would have about " +
+                     std::to_string(s * l1_length) + " edges");
+
+  RoundingResult res;
+  bool certified = false;
+  int attempts = 0;
+  for (; attempts < o.max_attempts && !certified; ++attempts) {
+    if (W > 2 && attempts == o.max_attempts / 2) {
+      // fall back to W = 2 and its a-priori scale (see the proof above)
+      W = 2;
+      cW = clearance(P, 2).distance;
+      const double tmax = turning_angles(P).maxCoeff();
+      const double apriori = 2.0 * kHalfDiagonal * (1.0 + std::tan(std::min(tmax, 0.5 * M_PI) / 2.0)) / cW;
+      s = std::max(s, (1.0 + o.margin) * std::max(apriori, 4.0 * kHalfDiagonal / lmax));
+    }
+    res = lattice_walk_of(P, s, R);
+    // strict inequality s·c_W > 2δ, with room for rounding errors of the measurement
+    certified = s * cW > 2.0 * res.displacement * (1.0 + 1e-12) + 1e-12;
+    if (!certified) s = std::max(1.25 * s, (1.0 + o.margin) * 2.0 * res.displacement / cW);
+    if (!certified && s * l1_length > kMaxWalkSteps) break;
+  }
+  if (!certified)
+    throw InputError("lattice rounding: no certified scale found in " + std::to_string(o.max_attempts) +
+                     " attempts (last scale " + std::to_string(s) + ", displacement " +
+                     std::to_string(res.displacement) + ")");
+  res.attempts = attempts;
+  res.window = W;
+  res.window_clearance = cW;
+  res.certificate_ratio = res.scale * cW / (2.0 * res.displacement);
+
+  if (want) {
+    const AlexanderPolynomial got = alexander(to_points(res.points));
+    if (got != *want)
+      throw TopologyError("lattice rounding: Alexander polynomial " + got.to_string() + " of the lattice polygon (" +
+                          std::to_string(res.points.rows()) + " vertices) differs from the expected " +
+                          want->to_string());
+  }
+  return res;
+}
+
+}  // namespace ek

@@ -1,0 +1,155 @@
+#include "ek/lattice/sampling.hpp"
+
+#include <cmath>
+
+#include "ek/core/errors.hpp"
+#include "ek/knots/alexander.hpp"
+
+namespace ek {
+
+namespace {
+
+void validate(const SampleOptions& o) {
+  require_input(o.vertices >= 4 && o.vertices % 2 == 0,
+                "sampling: a lattice polygon has an even number >= 4 of vertices, got " + std::to_string(o.vertices));
+  require_input(o.count >= 1, "sampling: the sample count must be >= 1, got " + std::to_string(o.count));
+  require_input(std::isfinite(o.grow_fugacity) && o.grow_fugacity > kCriticalFugacity,
+                "sampling: the growth fugacity must exceed the critical fugacity 0.2135");
+  require_input(std::isfinite(o.shrink_fugacity) && o.shrink_fugacity > 0.0 && o.shrink_fugacity < kCriticalFugacity,
+                "sampling: the shrink fugacity must be in (0, 0.2135)");
+  require_input(std::isfinite(o.growth_factor) && o.growth_factor >= 1.0, "sampling: the growth factor must be >= 1");
+  require_input(o.decorrelation_moves >= 0, "sampling: the decorrelation run must be >= 0 moves");
+  require_input(std::isfinite(o.max_attempts_per_vertex) && o.max_attempts_per_vertex > 0.0,
+                "sampling: the attempt budget must be positive");
+  require_input(o.growth_factor * o.vertices < kMaxLatticeLength, "sampling: growth_factor · n is too large");
+}
+
+// Largest even number <= x, at least 4.
+int even_floor(double x) { return std::max(4, 2 * static_cast<int>(std::floor(x / 2.0))); }
+
+LatticePoints centered(LatticePoints L) {
+  const Eigen::Vector3d c = L.cast<double>().colwise().mean();
+  for (int k = 0; k < 3; ++k) L.col(k).array() -= static_cast<std::int32_t>(std::floor(c[k] + 0.5));
+  return L;
+}
+
+long long budget(const SampleOptions& o, int target) {
+  const double b = o.max_attempts_per_vertex * std::max(target, 4);
+  return b > 9e18 ? static_cast<long long>(9e18) : static_cast<long long>(b);
+}
+
+}  // namespace
+
+SampleBatch sample_lattice_polygons(const LatticePoints& start, const SampleOptions& o,
+                                    const std::optional<AlexanderPolynomial>& expected, const std::string& what) {
+  validate(o);
+  const bool knotted = expected && *expected != AlexanderPolynomial{};
+  if (knotted && o.vertices < 24)
+    throw InputError("sampling " + what + ": a knotted lattice polygon has at least 24 vertices (Diao 1993), " +
+                     std::to_string(o.vertices) + " requested");
+  BfacfWalk walk(start, o.seed);
+  const int n = o.vertices;
+  const int peak = std::max(n, even_floor(o.growth_factor * n));
+  SampleBatch batch;
+  batch.samples.reserve(static_cast<size_t>(o.count));
+  for (int k = 0; k < o.count; ++k) {
+    SampleReport rep;
+    // Phase 1: grow to the peak (skipped when the walk is already that long).
+    if (walk.length() < peak) {
+      rep.grow = walk.run_to_length(peak, o.grow_fugacity, budget(o, peak));
+      if (!rep.grow.reached)
+        throw InputError("sampling " + what + ": the walk did not grow to " + std::to_string(peak) +
+                         " vertices within " + std::to_string(rep.grow.attempts) +
+                         " attempted moves (largest length reached " + std::to_string(rep.grow.max_length) + ")");
+    }
+    // Between samples: extra moves at the peak (length capped at the peak).
+    if (k > 0 && o.decorrelation_moves > 0)
+      rep.decorrelation = walk.run(o.decorrelation_moves, o.grow_fugacity, std::max(peak, walk.length()));
+    // Phase 2: shrink to exactly n.
+    rep.shrink = walk.run_to_length(n, o.shrink_fugacity, budget(o, peak));
+    if (!rep.shrink.reached)
+      throw InputError("sampling " + what + ": the walk did not shrink to " + std::to_string(n) + " vertices within " +
+                       std::to_string(rep.shrink.attempts) + " attempted moves: smallest length reached " +
+                       std::to_string(rep.shrink.min_length) +
+                       " (this knot type may need more lattice edges; use a larger vertex count)");
+    LatticePoints L = centered(walk.polygon());
+    if (o.verify && expected) {
+      const AlexanderPolynomial got = alexander(to_points(L));
+      if (got != *expected)
+        throw TopologyError("sampling " + what + ": sample " + std::to_string(k) + " has Alexander polynomial " +
+                            got.to_string() + " instead of " + expected->to_string());
+    }
+    batch.samples.push_back(std::move(L));
+    batch.reports.push_back(rep);
+  }
+  return batch;
+}
+
+LatticeStart lattice_start(const KnotRecord& knot, const LatticeStartOptions& o) {
+  require(!o.candidates.empty(), "lattice_start: no embedding candidates");
+  LatticeStart best;
+  best.alexander = knot.pd ? alexander(*knot.pd) : (knot.braid ? alexander(*knot.braid) : AlexanderPolynomial{});
+  if (knot.crossing_number == 0) {
+    best.points.resize(4, 3);
+    best.points << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0;
+    best.method = "square";
+    best.rounding.points = best.points;
+    return best;
+  }
+  std::string skipped;
+  for (const auto& [src, m] : o.candidates) {
+    EmbeddingOptions eo;
+    eo.vertices = m;
+    eo.pd_crossing_height = o.pd_crossing_height;
+    eo.verify = false;
+    Embedding e;
+    try {
+      e = embed_knot(knot, src, eo);
+    } catch (const InputError& err) {
+      skipped += std::string(skipped.empty() ? "" : "; ") + err.what();
+      continue;
+    }
+    if (!(e.clearance > 0.0) || alexander(e.points) != best.alexander) {
+      skipped += std::string(skipped.empty() ? "" : "; ") + e.method + " embedding with " + std::to_string(m) +
+                 " vertices is too coarse";
+      continue;
+    }
+    RoundingOptions ro = o.rounding;
+    ro.verify = false;  // the chosen rounding is verified below
+    RoundingResult r;
+    try {
+      r = round_to_lattice(e.points, ro);
+    } catch (const InputError& err) {
+      skipped += std::string(skipped.empty() ? "" : "; ") + err.what();
+      continue;
+    }
+    if (best.points.rows() == 0 || r.points.rows() < best.points.rows()) {
+      best.points = r.points;
+      best.rounding = std::move(r);
+      best.method = e.method;
+      best.embedding_vertices = m;
+    }
+  }
+  if (best.points.rows() == 0)
+    throw InputError("no usable embedding of " + knot.name + " to round onto the lattice: " + skipped);
+  if (o.rounding.verify) {
+    const AlexanderPolynomial got = alexander(to_points(best.points));
+    if (got != best.alexander)
+      throw TopologyError("lattice rounding of " + knot.name + ": Alexander polynomial " + got.to_string() +
+                          " differs from the table's " + best.alexander.to_string());
+  }
+  return best;
+}
+
+SampleBatch sample_knot(const KnotRecord& knot, const SampleOptions& options, const LatticeStartOptions& start_options,
+                        LatticeStart* start_out) {
+  if (knot.crossing_number > 0 && options.vertices < 24)  // also for knots with Δ = 1
+    throw InputError("sampling " + knot.name + ": a knotted lattice polygon has at least 24 vertices (Diao 1993), " +
+                     std::to_string(options.vertices) + " requested");
+  LatticeStart start = lattice_start(knot, start_options);
+  SampleBatch batch = sample_lattice_polygons(start.points, options, start.alexander, knot.name);
+  if (start_out) *start_out = std::move(start);
+  return batch;
+}
+
+}  // namespace ek
