@@ -1,0 +1,290 @@
+#include "ek/analysis/search.hpp"
+
+#include <Eigen/SVD>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "ek/core/errors.hpp"
+#include "ek/geometry/resample.hpp"
+#include "ek/geometry/segment_distance.hpp"
+
+namespace ek {
+
+namespace {
+
+/// Rigid motion (R, t) minimising Σ_k |R y_k + t - x_k|² (Kabsch/Umeyama, det R = +1).
+void kabsch(const Points& Y, const Points& X, Mat3& R, Vec3& t) {
+  const Vec3 cy = Y.colwise().mean().transpose(), cx = X.colwise().mean().transpose();
+  Mat3 H = Mat3::Zero();
+  for (Eigen::Index k = 0; k < Y.rows(); ++k) H += (Y.row(k).transpose() - cy) * (X.row(k).transpose() - cx).transpose();
+  Eigen::JacobiSVD<Mat3> svd(H, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  Mat3 Dg = Mat3::Identity();
+  Dg(2, 2) = (svd.matrixV() * svd.matrixU().transpose()).determinant() < 0.0 ? -1.0 : 1.0;
+  R = svd.matrixV() * Dg * svd.matrixU().transpose();
+  t = cx - R * cy;
+}
+
+Points centred(const Points& P) { return P.rowwise() - P.colwise().mean(); }
+
+/// Symmetric RMS of point-to-polygon distances between two closed polygons.
+double symmetric_rms(const Points& A, const Points& B) {
+  auto one_way = [](const Points& X, const Points& P) {
+    const auto m = P.rows();
+    double sum = 0.0;
+    for (Eigen::Index i = 0; i < X.rows(); ++i) {
+      const Vec3 x = X.row(i).transpose();
+      double best = std::numeric_limits<double>::infinity();
+      for (Eigen::Index j = 0; j < m; ++j)
+        best = std::min(best, point_segment_distance_squared(x, P.row(j).transpose(), P.row((j + 1) % m).transpose()));
+      sum += best;
+    }
+    return sum;
+  };
+  return std::sqrt((one_way(A, B) + one_way(B, A)) / static_cast<double>(A.rows() + B.rows()));
+  // (vertices of A to the polygon B and vertices of B to the polygon A)
+}
+
+/// Closest point on the closed polygon P to x (brute force over the segments);
+/// writes the unit direction of its segment.
+Vec3 closest_on_polygon(const Vec3& x, const Points& P, Vec3* tangent = nullptr) {
+  const auto n = P.rows();
+  double best = std::numeric_limits<double>::infinity();
+  Eigen::Index bj = 0;
+  double bt = 0.0;
+  for (Eigen::Index j = 0; j < n; ++j) {
+    double t = 0.0;
+    const double d2 = point_segment_distance_squared(x, P.row(j).transpose(), P.row((j + 1) % n).transpose(), &t);
+    if (d2 < best) {
+      best = d2;
+      bj = j;
+      bt = t;
+    }
+  }
+  const Vec3 a = P.row(bj).transpose(), e = P.row((bj + 1) % n).transpose() - a;
+  if (tangent) *tangent = e.norm() > 0.0 ? Vec3(e.normalized()) : Vec3::Zero();
+  return a + bt * e;
+}
+
+struct Start {
+  double residual;
+  int symmetry;  // bit 0: reversed, bit 1: mirrored
+  int shift;
+};
+
+Points apply_symmetry(const Points& C, int symmetry) {
+  Points S = C;
+  if (symmetry & 1) S = C.colwise().reverse().eval();
+  if (symmetry & 2) S.col(0) *= -1.0;
+  return S;
+}
+
+}  // namespace
+
+void AlignmentOptions::validate() const {
+  require(samples >= 4, "AlignmentOptions: samples must be >= 4");
+  require(refine_starts >= 1, "AlignmentOptions: refine_starts must be >= 1");
+  require(max_iterations >= 0, "AlignmentOptions: max_iterations must be >= 0");
+  require(polish_iterations >= 0, "AlignmentOptions: polish_iterations must be >= 0");
+  require(relative_tolerance >= 0.0 && std::isfinite(relative_tolerance),
+          "AlignmentOptions: relative_tolerance must be finite and >= 0");
+}
+
+Alignment align_curves(const Points& query, const Points& candidate, const AlignmentOptions& options) {
+  options.validate();
+  require(query.rows() >= 3 && candidate.rows() >= 3, "align_curves: closed polygons with >= 3 vertices expected");
+  require(query.allFinite() && candidate.allFinite(), "align_curves: non-finite coordinates");
+  const int m = options.samples;
+  const Points Q = resample_arclength(query, m);
+  const Points C = resample_arclength(candidate, m);
+  const Points Qc = centred(Q);
+  const double q2 = Qc.squaredNorm();
+
+  // 1. closed-form residual of every (symmetry, shift) correspondence
+  std::vector<int> symmetries = {0};
+  if (options.reversal) symmetries.push_back(1);
+  if (options.mirror) symmetries.push_back(2);
+  if (options.reversal && options.mirror) symmetries.push_back(3);
+  std::vector<Start> starts;
+  for (int sym : symmetries) {
+    const Points Cc = centred(apply_symmetry(C, sym));
+    const double c2 = Cc.squaredNorm();
+    std::vector<double> r(static_cast<size_t>(m));
+    for (int s = 0; s < m; ++s) {
+      Mat3 H = Mat3::Zero();
+      for (int i = 0; i < m; ++i) H += Cc.row((i + s) % m).transpose() * Qc.row(i);
+      const Eigen::JacobiSVD<Mat3> svd(H);
+      const Vec3 sv = svd.singularValues();
+      const double d = H.determinant() < 0.0 ? -1.0 : 1.0;
+      r[static_cast<size_t>(s)] = std::max(0.0, q2 + c2 - 2.0 * (sv(0) + sv(1) + d * sv(2)));
+    }
+    for (int s = 0; s < m; ++s) {
+      const double v = r[static_cast<size_t>(s)];
+      if (v <= r[static_cast<size_t>((s + m - 1) % m)] && v <= r[static_cast<size_t>((s + 1) % m)])
+        starts.push_back({v, sym, s});
+    }
+  }
+  std::stable_sort(starts.begin(), starts.end(), [](const Start& a, const Start& b) { return a.residual < b.residual; });
+  if (static_cast<int>(starts.size()) > options.refine_starts) starts.resize(static_cast<size_t>(options.refine_starts));
+
+  // 2. ICP from each start
+  Alignment best;
+  best.distance = std::numeric_limits<double>::infinity();
+  Points src(2 * m, 3), dst(2 * m, 3);
+  for (const Start& st : starts) {
+    const Points S = apply_symmetry(C, st.symmetry);
+    Points rolled(m, 3);
+    for (int i = 0; i < m; ++i) rolled.row(i) = S.row((i + st.shift) % m);
+    Mat3 R;
+    Vec3 t;
+    kabsch(rolled, Q, R, t);
+    Points Y = (S * R.transpose()).rowwise() + t.transpose();
+    double prev = std::numeric_limits<double>::infinity();
+    int it = 0;
+    AlignmentStatus status = AlignmentStatus::MaxIterations;
+    for (;; ++it) {
+      // nearest neighbours both ways (brute force, O(m²))
+      std::vector<double> bq(static_cast<size_t>(m), std::numeric_limits<double>::infinity()), by = bq;
+      std::vector<int> iq(static_cast<size_t>(m), 0), iy(static_cast<size_t>(m), 0);
+      for (int i = 0; i < m; ++i) {
+        for (int j = 0; j < m; ++j) {
+          const double d2 = (Q.row(i) - Y.row(j)).squaredNorm();
+          if (d2 < bq[static_cast<size_t>(i)]) {
+            bq[static_cast<size_t>(i)] = d2;
+            iq[static_cast<size_t>(i)] = j;
+          }
+          if (d2 < by[static_cast<size_t>(j)]) {
+            by[static_cast<size_t>(j)] = d2;
+            iy[static_cast<size_t>(j)] = i;
+          }
+        }
+      }
+      double mse = 0.0;
+      for (int k = 0; k < m; ++k) mse += bq[static_cast<size_t>(k)] + by[static_cast<size_t>(k)];
+      mse /= 2.0 * m;
+      if (prev - mse <= options.relative_tolerance * mse) {
+        status = AlignmentStatus::Converged;
+        break;
+      }
+      if (it >= options.max_iterations) break;
+      prev = mse;
+      for (int k = 0; k < m; ++k) {
+        src.row(k) = Y.row(iq[static_cast<size_t>(k)]);
+        dst.row(k) = Q.row(k);
+        src.row(m + k) = Y.row(k);
+        dst.row(m + k) = Q.row(iy[static_cast<size_t>(k)]);
+      }
+      Mat3 G;
+      Vec3 g;
+      kabsch(src, dst, G, g);
+      Y = (Y * G.transpose()).rowwise() + g.transpose();
+      R = G * R;
+      t = G * t + g;
+    }
+    const double dist = symmetric_rms(Q, Y);
+    if (dist < best.distance) {
+      best.distance = dist;
+      best.rotation = R;
+      best.translation = t;
+      best.shift = st.shift;
+      best.reversed = st.symmetry & 1;
+      best.mirrored = st.symmetry & 2;
+      best.iterations = it;
+      best.status = status;
+    }
+  }
+
+  // 3. polish the best alignment with point-to-line (Gauss-Newton) steps on the
+  //    original polygons: resampled points lie on them, so exact copies align exactly
+  const int sym = (best.reversed ? 1 : 0) | (best.mirrored ? 2 : 0);
+  const Points Csym = apply_symmetry(candidate, sym);
+  const Points Cres = apply_symmetry(C, sym);
+  const double scale = std::max(Qc.cwiseAbs().maxCoeff(), 1e-300);
+  for (int it = 0; it < options.polish_iterations; ++it) {
+    const Points Corig = (Csym * best.rotation.transpose()).rowwise() + best.translation.transpose();
+    const Points Cmoved = (Cres * best.rotation.transpose()).rowwise() + best.translation.transpose();
+    const Vec3 c = Q.colwise().mean().transpose();
+    Eigen::Matrix<double, 6, 6> A = Eigen::Matrix<double, 6, 6>::Zero();
+    Eigen::Matrix<double, 6, 1> b = Eigen::Matrix<double, 6, 1>::Zero();
+    // pair (y moving with C, x fixed on Q, unit tangent tg of the segment of the closest point)
+    auto add_pair = [&](const Vec3& y, const Vec3& x, const Vec3& tg) {
+      const Mat3 Pp = Mat3::Identity() - tg * tg.transpose();
+      Eigen::Matrix<double, 3, 6> J;
+      const Vec3 r = y - c;
+      J.leftCols<3>() << 0.0, r.z(), -r.y(), -r.z(), 0.0, r.x(), r.y(), -r.x(), 0.0;  // ω × r = -[r]× ω
+      J.rightCols<3>() = Mat3::Identity();
+      const Eigen::Matrix<double, 3, 6> PJ = Pp * J;
+      A += PJ.transpose() * PJ;
+      b -= PJ.transpose() * (Pp * (y - x));
+    };
+    for (int k = 0; k < m; ++k) {
+      Vec3 tg;
+      const Vec3 y = closest_on_polygon(Q.row(k).transpose(), Corig, &tg);
+      add_pair(y, Q.row(k).transpose(), tg);
+      const Vec3 x = closest_on_polygon(Cmoved.row(k).transpose(), query, &tg);
+      add_pair(Cmoved.row(k).transpose(), x, tg);
+    }
+    // damped solve: a circle's rotation about its axis is a free direction
+    const double damping = 1e-12 * std::max(A.diagonal().maxCoeff(), 1e-300);
+    const Eigen::Matrix<double, 6, 1> d = (A + damping * Eigen::Matrix<double, 6, 6>::Identity()).ldlt().solve(b);
+    const Vec3 w = d.head<3>(), tau = d.tail<3>();
+    const double angle = w.norm();
+    const Mat3 Rw = angle > 0.0 ? Mat3(Eigen::AngleAxisd(angle, w / angle)) : Mat3::Identity();
+    best.rotation = Rw * best.rotation;
+    best.translation = Rw * best.translation + c - Rw * c + tau;
+    if (angle + tau.norm() / scale < 1e-13) break;
+  }
+
+  // 4. the distance between the original polygons (vertices of each to the other)
+  const Points Cfinal = (Csym * best.rotation.transpose()).rowwise() + best.translation.transpose();
+  best.distance = symmetric_rms(query, Cfinal);
+  return best;
+}
+
+bool passes_filters(const Attributes& attributes, const std::vector<AttributeRange>& filters) {
+  for (const AttributeRange& f : filters) {
+    const std::optional<double> v = attribute_value(attributes, f.name);
+    if (!v || !(*v >= f.min && *v <= f.max)) return false;
+  }
+  return true;
+}
+
+std::vector<AttributeRange> ranges_around(const Attributes& query, const std::vector<std::string>& names,
+                                          double relative_width, double absolute_width) {
+  require(relative_width >= 0.0 && absolute_width >= 0.0, "ranges_around: widths must be >= 0");
+  std::vector<AttributeRange> out;
+  for (const std::string& name : names) {
+    const std::optional<double> v = attribute_value(query, name);
+    require(v.has_value(), "ranges_around: the query has no value for '" + name + "'");
+    const double w = std::max(relative_width * std::abs(*v), absolute_width);
+    out.push_back({name, *v - w, *v + w});
+  }
+  return out;
+}
+
+std::vector<SearchHit> search_similar(const Points& query, const std::vector<Points>& candidates,
+                                      const std::vector<Attributes>& candidate_attributes,
+                                      const SearchOptions& options) {
+  options.alignment.validate();
+  require(options.max_results >= 0, "search_similar: max_results must be >= 0");
+  require(candidate_attributes.empty() || candidate_attributes.size() == candidates.size(),
+          "search_similar: candidate_attributes must be empty or have one entry per candidate");
+  std::vector<SearchHit> hits;
+  for (size_t k = 0; k < candidates.size(); ++k) {
+    if (!options.filters.empty()) {
+      const Attributes a = candidate_attributes.empty() ? compute_attributes(candidates[k]) : candidate_attributes[k];
+      if (!passes_filters(a, options.filters)) continue;
+    }
+    SearchHit h;
+    h.index = static_cast<int>(k);
+    h.alignment = align_curves(query, candidates[k], options.alignment);
+    h.distance = h.alignment.distance;
+    hits.push_back(h);
+  }
+  std::stable_sort(hits.begin(), hits.end(), [](const SearchHit& a, const SearchHit& b) { return a.distance < b.distance; });
+  if (options.max_results > 0 && static_cast<int>(hits.size()) > options.max_results)
+    hits.resize(static_cast<size_t>(options.max_results));
+  return hits;
+}
+
+}  // namespace ek
