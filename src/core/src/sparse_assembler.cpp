@@ -37,7 +37,7 @@ void SparseAssembler::segment(int id, std::uint64_t structure) {
   ++used_segments_;
 }
 
-void SparseAssembler::add(Index i, Index j, double v) {
+void SparseAssembler::add_slow(Index i, Index j, double v) {
   if (current_ < 0) segment(0, 0);
   if (i > j) std::swap(i, j);
   Segment& s = segments_[static_cast<size_t>(current_)];

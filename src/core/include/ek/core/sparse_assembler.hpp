@@ -36,8 +36,19 @@ class SparseAssembler {
   /// Subsequent add() calls belong to segment `id` (0, 1, 2, ... in the same
   /// order every pass) whose sequence of positions is identified by `structure`.
   void segment(int id, std::uint64_t structure);
-  /// Adds v at (i, j); stored at (min, max).
-  void add(Index i, Index j, double v);
+  /// Adds v at (i, j); stored at (min, max). Inline: the replay path (the
+  /// common case) is one store into the cached value slot.
+  void add(Index i, Index j, double v) {
+    if (current_ >= 0) {
+      Segment& s = segments_[static_cast<size_t>(current_)];
+      if (s.replay && s.cursor < s.slots.size()) {
+        ++total_;
+        H_.valuePtr()[s.slots[s.cursor++]] += v;
+        return;
+      }
+    }
+    add_slow(i, j, v);
+  }
   /// Adds a dense symmetric local matrix H at global indices idx (H is k by k,
   /// idx has k entries; negative indices are skipped).
   template <class Derived, class IndexArray>
@@ -77,6 +88,7 @@ class SparseAssembler {
     bool replay = false;
     bool has_slots = false;  // slots describe the current pattern (possibly empty)
   };
+  void add_slow(Index i, Index j, double v);
   Eigen::SparseMatrix<double, Eigen::ColMajor, Index> H_;
   std::vector<Segment> segments_;
   int current_ = -1;
