@@ -34,7 +34,7 @@ class DoubleWell : public Objective {
     }
     return g;
   }
-  void assemble_hessian(SparseAssembler& A) override {
+  void assemble_hessian(SparseAssembler& A, bool) override {
     A.begin(num_dofs());
     for (int i = 0; i + 1 < x_.size(); i += 2) {
       A.add(i, i, 12.0 * x_(i) * x_(i) - 4.0);

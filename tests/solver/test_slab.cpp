@@ -9,24 +9,6 @@
 
 using namespace ek;
 
-TEST(Slab, BarrierDerivativesMatchFiniteDifferences) {
-  const double dhat = 0.3;
-  for (double d : {1e-3, 0.01, 0.1, 0.2, 0.29}) {
-    for (double rel : {1e-4, 1e-5, 1e-6}) {
-      const double h = rel * d;  // steps relative to d: the barrier varies on the scale of d
-      const double fd1 = (barrier(d + h, dhat) - barrier(d - h, dhat)) / (2 * h);
-      const double fd2 = (barrier_first(d + h, dhat) - barrier_first(d - h, dhat)) / (2 * h);
-      // central differences: O(h²) truncation; relative error 1e-6 for these steps
-      EXPECT_NEAR(barrier_first(d, dhat), fd1, 1e-6 * std::max(1.0, std::fabs(fd1))) << d << " " << rel;
-      EXPECT_NEAR(barrier_second(d, dhat), fd2, 1e-6 * std::max(1.0, std::fabs(fd2))) << d << " " << rel;
-    }
-  }
-  EXPECT_EQ(barrier(0.3, dhat), 0.0);
-  EXPECT_EQ(barrier_first(0.31, dhat), 0.0);
-  EXPECT_TRUE(std::isinf(barrier(0.0, dhat)));
-  EXPECT_GT(barrier(0.01, dhat), barrier(0.1, dhat));  // decreasing
-}
-
 TEST(Slab, GradientAndHessianOfWholeCurve) {
   SlabOptions o;
   o.half_thickness = 0.5;

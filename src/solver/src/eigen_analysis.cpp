@@ -48,6 +48,15 @@ Eigen::MatrixXd rigid_modes(const Points& positions, int dofs, int theta_begin) 
     }
   }
   if (theta_begin >= 0) {
+    // A rigid rotation ω also turns the reference frames about the edge
+    // tangents by ω·t_j relative to parallel transport; the material angles
+    // compensate (θ̇_j = ω·t_j) for the mode to be an exact zero mode.
+    for (int j = 0; j < n; ++j) {
+      const Vec3 t = (positions.row((j + 1) % n) - positions.row(j)).transpose().normalized();
+      for (int a = 0; a < 3; ++a) M(theta_begin + j, 3 + a) = t(a);
+    }
+  }
+  if (theta_begin >= 0) {
     require(theta_begin + n <= dofs, "rigid_modes: theta range out of bounds");
     for (int j = 0; j < n; ++j) M(theta_begin + j, 6) = 1.0;
   }

@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include "ek/core/errors.hpp"
@@ -57,16 +58,22 @@ NewtonReport minimize(Objective& f, const NewtonOptions& o) {
     return report;
   };
 
-  // Factorises H + shift I starting from base_shift; returns the shift used
-  // (infinity if every attempt failed). `first_ok` tells whether the base
-  // shift succeeded, i.e. H + ε λ_min I is positive definite.
-  auto factorize = [&](bool& first_ok) {
+  // Factorises H + shift·I, escalating the shift ×growth until it succeeds.
+  // The paper starts every attempt at ε·λ_min; starting one step below the
+  // last successful shift gives the same shift up to a factor `growth` and
+  // saves most failed factorisations far from equilibrium. Returns the shift
+  // used (infinity if every attempt failed); `base_ok` tells whether the
+  // factorisation at exactly ε·λ_min succeeded (H + ε λ_min I positive
+  // definite), which is decided here only when that shift was tried.
+  double start_shift = base_shift;
+  auto factorize = [&](double first, bool& base_ok, bool& base_tried) {
     const auto t0 = Clock::now();
-    double shift = base_shift;
-    first_ok = false;
+    double shift = first;
+    base_ok = false;
+    base_tried = (first <= base_shift);
     for (int attempt = 0; attempt < o.max_shift_attempts; ++attempt) {
       if (cholesky.factorize(assembler.matrix(), shift, assembler.pattern_version())) {
-        first_ok = (attempt == 0);
+        base_ok = base_tried && attempt == 0;
         report.time_factorization += since(t0);
         report.final_shift = shift;
         return shift;
@@ -80,15 +87,17 @@ NewtonReport minimize(Objective& f, const NewtonOptions& o) {
   for (;;) {
     auto t0 = Clock::now();
     VecX g = f.gradient();
-    f.assemble_hessian(assembler);
+    const bool near = g.norm() <= o.gradient_tolerance;
+    f.assemble_hessian(assembler, near);
     report.time_assembly += since(t0);
     const double gnorm = g.norm();
     report.gradient_norm = gnorm;
     require(std::isfinite(gnorm), "minimize: the gradient is not finite");
 
-    bool psd = false;
-    const double shift = factorize(psd);
+    bool psd = false, base_tried = false;
+    double shift = factorize(gnorm <= o.gradient_tolerance ? base_shift : start_shift, psd, base_tried);
     if (!std::isfinite(shift)) return finish(SolverStatus::Stalled);
+    start_shift = std::max(base_shift, shift / o.shift_growth);
     report.hessian_psd = psd;
 
     if (gnorm <= o.gradient_tolerance) {
@@ -102,6 +111,7 @@ NewtonReport minimize(Objective& f, const NewtonOptions& o) {
       eo.exclude_rigid = false;
       const EigenResult eig = smallest_eigenpairs(assembler.matrix(), Eigen::MatrixXd(), base_shift, eo);
       report.time_eigen += since(te);
+      if (eig.converged) report.smallest_eigenvalue = eig.values(0);
       if (!eig.converged || eig.values(0) >= 0.0) {
         // The factorisation failed only by a hair: treat as stable within the shift.
         return finish(o.stop_at_critical_point ? SolverStatus::ConvergedUnstable : SolverStatus::ConvergedStable);
@@ -127,8 +137,13 @@ NewtonReport minimize(Objective& f, const NewtonOptions& o) {
       }
       report.time_line_search += since(tl);
       if (!moved) {
+        // No step along the direction of negative curvature lowers the
+        // energy by more than its round-off: the negative eigenvalue is
+        // numerical noise on a flat (neutral) mode, and the point is a
+        // minimum to working precision.
         f.set_dofs(x);
-        return finish(SolverStatus::Stalled);
+        report.marginal = true;
+        return finish(SolverStatus::ConvergedStable);
       }
       f.accept();
       ++report.saddle_escapes;
@@ -147,7 +162,8 @@ NewtonReport minimize(Objective& f, const NewtonOptions& o) {
       gd = -gnorm * gnorm;
     }
     t0 = Clock::now();
-    double t = std::min(1.0, f.max_step(x, d));
+    const double t_max = f.max_step(x, d);
+    double t = std::min(1.0, t_max);
     report.time_collision += since(t0);
 
     // Armijo backtracking on the total energy. Near convergence the decrease
@@ -179,6 +195,10 @@ NewtonReport minimize(Objective& f, const NewtonOptions& o) {
       }
     }
     report.time_line_search += since(t0);
+    if (o.verbose)
+      std::fprintf(stderr, "newton %5d  E %.12g  |g| %.3e  shift %.2e  |d|inf %.2e  ccd %.3e  t %.3e  %s\n",
+                   report.iterations, E, gnorm, shift, d.lpNorm<Eigen::Infinity>(), t_max, accepted ? t : 0.0,
+                   assembler.pattern_changed() ? "pattern" : "");
     if (!accepted) {
       f.set_dofs(x);
       return finish(SolverStatus::Stalled);

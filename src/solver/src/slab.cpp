@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "ek/contact/barrier.hpp"
 #include "ek/core/errors.hpp"
 
 namespace ek {
@@ -12,24 +13,6 @@ void SlabOptions::validate() const {
   require(activation > 0.0 && activation <= 1.0, "SlabOptions: activation must be in (0, 1]");
   require(stiffness > 0.0, "SlabOptions: stiffness must be positive");
   require(separation > 0.0 && separation < 1.0, "SlabOptions: separation must be in (0, 1)");
-}
-
-double barrier(double d, double dhat) {
-  if (d >= dhat) return 0.0;
-  if (d <= 0.0) return std::numeric_limits<double>::infinity();
-  return -(d - dhat) * (d - dhat) * std::log(d / dhat);
-}
-
-double barrier_first(double d, double dhat) {
-  if (d >= dhat) return 0.0;
-  // d/dd [-(d - dhat)² ln(d/dhat)] = -2(d - dhat) ln(d/dhat) - (d - dhat)²/d
-  return -2.0 * (d - dhat) * std::log(d / dhat) - (d - dhat) * (d - dhat) / d;
-}
-
-double barrier_second(double d, double dhat) {
-  if (d >= dhat) return 0.0;
-  // -2 ln(d/dhat) - 4(d - dhat)/d + (d - dhat)²/d²
-  return -2.0 * std::log(d / dhat) - 4.0 * (d - dhat) / d + (d - dhat) * (d - dhat) / (d * d);
 }
 
 PlanaritySlab::PlanaritySlab(SlabOptions options) : o_(options) { o_.validate(); }
@@ -51,7 +34,7 @@ VecX PlanaritySlab::gradient(const Points& x) const {
   VecX g = VecX::Zero(x.size());
   for (Eigen::Index i = 0; i < x.rows(); ++i) {
     const double z = x(i, 2);
-    g(3 * i + 2) = o_.stiffness * (-barrier_first(h - z, dhat) + barrier_first(h + z, dhat));
+    g(3 * i + 2) = o_.stiffness * (-barrier_first_derivative(h - z, dhat) + barrier_first_derivative(h + z, dhat));
   }
   return g;
 }
@@ -61,7 +44,7 @@ void PlanaritySlab::add_hessian(const Points& x, SparseAssembler& A) const {
   for (Eigen::Index i = 0; i < x.rows(); ++i) {
     const double z = x(i, 2);
     const int k = static_cast<int>(3 * i + 2);
-    A.add(k, k, o_.stiffness * (barrier_second(h - z, dhat) + barrier_second(h + z, dhat)));
+    A.add(k, k, o_.stiffness * (barrier_second_derivative(h - z, dhat) + barrier_second_derivative(h + z, dhat)));
   }
 }
 

@@ -34,7 +34,9 @@ struct EigenResult {
 /// translations and three rotations about the centroid acting on the
 /// position dofs 0..3n-1 (n = positions.rows()), plus, when
 /// `theta_begin` >= 0, the uniform shift of the n material angles stored at
-/// dofs theta_begin .. theta_begin + n - 1.
+/// dofs theta_begin .. theta_begin + n - 1; then a rotation ω also moves each
+/// material angle by ω·t_j (t_j the unit tangent of edge j), which makes it an
+/// exact zero mode of the twisting energy.
 Eigen::MatrixXd rigid_modes(const Points& positions, int dofs, int theta_begin = -1);
 
 /// The `options.count` smallest eigenpairs of the symmetric matrix given by

@@ -27,7 +27,11 @@ class Objective {
   virtual double energy() = 0;
   virtual VecX gradient() = 0;
   /// Fills A with the Hessian's upper triangle (A.begin() ... A.end()).
-  virtual void assemble_hessian(SparseAssembler& A) = 0;
+  /// With exact = false an objective may return a modified Hessian that is
+  /// closer to positive semidefinite (for example with per-element
+  /// projections) to get better Newton directions; the stability test at
+  /// convergence always asks for the exact Hessian.
+  virtual void assemble_hessian(SparseAssembler& A, bool exact) = 0;
   /// Largest t in (0, 1] such that x + s·dx is feasible for all s <= t
   /// (continuous collision detection). Default: unconstrained.
   virtual double max_step(const VecX& x, const VecX& dx) {
@@ -65,6 +69,9 @@ struct NewtonOptions {
   bool stop_at_critical_point = false;
   int max_saddle_escapes = 50;      ///< [1]
   CholeskyMode cholesky = CholeskyMode::Simplicial;
+  /// Print one line per iteration to stderr (iteration, energy, ||g||, shift,
+  /// collision-free bound, accepted step, pattern changes).
+  bool verbose = false;
   void validate() const;
 };
 
@@ -78,6 +85,12 @@ struct NewtonReport {
   double final_shift = 0.0;             ///< shift used in the last factorisation
   bool hessian_psd = false;             ///< H + ε λ_min I factorised at the end
   int saddle_escapes = 0;
+  /// Converged where H + ε λ_min I is not positive definite but no step along
+  /// the direction of negative curvature lowers the energy beyond round-off
+  /// (a neutral mode): reported as converged-stable with this flag.
+  bool marginal = false;
+  /// [energy/length²] most negative eigenvalue found at the last saddle test (0 if none).
+  double smallest_eigenvalue = 0.0;
   int symbolic_factorizations = 0;
   int numeric_factorizations = 0;
   int line_search_trials = 0;

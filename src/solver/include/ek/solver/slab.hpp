@@ -5,7 +5,8 @@
 ///
 /// E_slab = κ Σ_i [ b(h - z_i) + b(h + z_i) ],
 /// b(d) = -(d - d̂)² ln(d / d̂) for 0 < d < d̂, 0 for d >= d̂ (the IPC barrier
-/// of Li et al. 2020 on the distance to each plane), d̂ = `activation` · h.
+/// of Li et al. 2020 on the distance to each plane, ek::barrier of the contact
+/// module), d̂ = `activation` · h.
 /// It is C² at d = d̂ and → ∞ as a vertex reaches a plane; max_step() keeps
 /// every vertex strictly inside.
 #include "ek/core/sparse_assembler.hpp"
@@ -20,11 +21,6 @@ struct SlabOptions {
   double separation = 0.1;      ///< [1] max_step keeps at least this fraction of the current distance to a plane
   void validate() const;
 };
-
-/// IPC barrier b(d) and its first two derivatives (d > 0, dhat > 0).
-double barrier(double d, double dhat);
-double barrier_first(double d, double dhat);
-double barrier_second(double d, double dhat);
 
 class PlanaritySlab {
  public:

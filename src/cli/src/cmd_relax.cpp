@@ -1,0 +1,138 @@
+// knots relax FILE [-o OUT] [--link LK] [--planar H [--release]] [--tol T] [--max-iter N]
+//             [--radius R] [--young E] [--poisson NU] [--full-model] [--eigen] [--json]
+#include <iostream>
+
+#include "args.hpp"
+#include "commands.hpp"
+#include "ek/core/atomic_file.hpp"
+#include "ek/core/errors.hpp"
+#include "ek/geometry/curve_io.hpp"
+#include "ek/solver/relax.hpp"
+#include "output.hpp"
+
+namespace ek::cli {
+namespace {
+
+Json energy_json(const EnergyParts& e) {
+  Json j;
+  j["energy"] = number(e.total);
+  j["energy_stretch"] = number(e.stretch);
+  j["energy_bend"] = number(e.bend);
+  j["energy_twist"] = number(e.twist);
+  j["energy_contact"] = number(e.contact);
+  j["energy_slab"] = number(e.slab);
+  return j;
+}
+
+Json report_json(const NewtonReport& r) {
+  Json j;
+  j["status"] = to_string(r.status);
+  j["iterations"] = r.iterations;
+  j["seconds"] = number(r.seconds);
+  j["gradient_norm"] = number(r.gradient_norm);
+  j["saddle_escapes"] = r.saddle_escapes;
+  j["marginal"] = r.marginal;
+  j["symbolic_factorizations"] = r.symbolic_factorizations;
+  j["numeric_factorizations"] = r.numeric_factorizations;
+  j["line_search_trials"] = r.line_search_trials;
+  j["time_assembly"] = number(r.time_assembly);
+  j["time_factorization"] = number(r.time_factorization);
+  j["time_collision"] = number(r.time_collision);
+  j["time_line_search"] = number(r.time_line_search);
+  j["time_eigen"] = number(r.time_eigen);
+  return j;
+}
+
+}  // namespace
+
+int cmd_relax(int argc, char** argv) {
+  std::string file, out;
+  std::optional<double> link, planar;
+  bool release = false, json = false, eigen = false, full = false, stop_at_saddle = false;
+  RelaxOptions opt;
+  ArgParser args("relax", "FILE [-o OUT] [--link LK] [--planar H [--release]] [--tol T] [--max-iter N] [--radius R] "
+                          "[--young E] [--poisson NU] [--full-model] [--eigen] [--json]");
+  args.positional("FILE", &file, "closed curve (.obj or .txt); its edge lengths are the rest lengths");
+  args.option("-o,--output", &out, "write the equilibrium here (.obj or .txt), atomically");
+  args.option("--link", &link, "prescribe the link Lk = Tw + Wr (full model with Theta fixed); default: Theta free");
+  args.option("--planar", &planar, "keep every vertex in the slab |z| < H (barrier)");
+  args.flag("--release", &release, "after relaxing in the slab, drop it and continue (jumping knots)");
+  args.option("--tol", &opt.tolerance, "gradient-norm tolerance (default 1e-8 scaled by EI and edge length)");
+  args.option("--max-iter", &opt.max_iterations, "Newton iterations per phase (default 2000)");
+  args.option("--radius", &opt.material.radius, "wire radius r (default 0.2)");
+  args.option("--young", &opt.material.young, "Young's modulus E (default 2000)");
+  args.option("--poisson", &opt.material.poisson, "Poisson ratio nu (default 0.3)");
+  args.option("--contact-stiffness", &opt.contact_stiffness, "contact stiffness omega (default 1e3 (E/2000)(r/0.2)^3)");
+  args.flag("--full-model", &full, "use the full model (positions, theta, Theta) even when Theta is free");
+  args.flag("--eigen", &eigen, "also report the smallest non-rigid eigenvalue of the Hessian");
+  args.flag("--stop-at-saddle", &stop_at_saddle, "report converged-unstable at a saddle instead of leaving it");
+  args.flag("--verbose", &opt.newton.verbose, "print one line per Newton iteration on stderr");
+  args.flag("--json", &json, "print one JSON object");
+  if (!args.parse(argc, argv)) return 0;
+  if (!out.empty()) check_writable(out);
+  if (release && !planar) throw InputError("--release needs --planar H");
+  opt.link = link;
+  opt.full_model = full;
+  opt.smallest_eigenvalue = eigen;
+  opt.stop_at_critical_point = stop_at_saddle;
+  if (planar) {
+    SlabOptions s;
+    s.half_thickness = *planar;
+    opt.slab = s;
+    opt.release_slab = release;
+  }
+  const Points curve = read_curve(file);
+  const RelaxResult r = relax(curve, opt);
+  if (!out.empty() && r.alexander_preserved) write_curve(out, r.positions);
+  if (json) {
+    Json j;
+    j["file"] = file;
+    j["status"] = r.status();
+    j["converged"] = r.converged();
+    j["stable"] = r.stable();
+    j["iterations"] = r.report.iterations;
+    j["seconds"] = number(r.report.seconds + (r.slab_report ? r.slab_report->seconds : 0.0));
+    const Json energies = energy_json(r.energy);
+    for (auto& [k, v] : energies.items()) j[k] = v;
+    j["gradient_norm"] = number(r.report.gradient_norm);
+    j["contacts"] = r.contacts;
+    j["min_distance"] = number(r.min_distance);
+    j["link"] = number(r.link);
+    j["twist"] = number(r.twist);
+    j["writhe"] = number(r.writhe);
+    j["alexander_preserved"] = r.alexander_preserved;
+    j["alexander"] = r.alexander.coefficients;
+    j["model"] = r.model;
+    j["vertices"] = r.positions.rows();
+    j["smallest_eigenvalue"] = r.smallest_eigenvalue ? number(*r.smallest_eigenvalue) : Json(nullptr);
+    j["report"] = report_json(r.report);
+    if (r.slab_report) {
+      j["slab_report"] = report_json(*r.slab_report);
+      j["slab_energy"] = energy_json(*r.slab_energy);
+    }
+    if (!out.empty() && r.alexander_preserved) j["output"] = out;
+    print_json(j);
+  } else {
+    std::cout << "status:       " << r.status() << " (" << r.report.iterations << " iterations, "
+              << fmt(r.report.seconds, 4) << " s)\n"
+              << "energy:       " << fmt(r.energy.total) << " (stretch " << fmt(r.energy.stretch, 6) << ", bend "
+              << fmt(r.energy.bend, 6) << ", twist " << fmt(r.energy.twist, 6) << ", contact "
+              << fmt(r.energy.contact, 6) << ")\n"
+              << "gradient:     " << fmt(r.report.gradient_norm, 4) << "\n"
+              << "contacts:     " << r.contacts << " (closest " << fmt(r.min_distance, 6) << ")\n"
+              << "link:         " << fmt(r.link) << " = twist " << fmt(r.twist) << " + writhe " << fmt(r.writhe)
+              << "\n"
+              << "Alexander:    " << r.result_alexander.to_string()
+              << (r.alexander_preserved ? " (preserved)" : " (CHANGED: the result is rejected)") << "\n";
+    if (r.smallest_eigenvalue) std::cout << "smallest eigenvalue: " << fmt(*r.smallest_eigenvalue) << "\n";
+    if (!out.empty() && r.alexander_preserved) std::cout << "wrote " << out << "\n";
+  }
+  if (!r.alexander_preserved) {
+    std::cerr << "knots relax: topology error: the Alexander polynomial changed from " << r.alexander.to_string()
+              << " to " << r.result_alexander.to_string() << "; no output written" << std::endl;
+    return 1;
+  }
+  return r.converged() ? 0 : 1;
+}
+
+}  // namespace ek::cli

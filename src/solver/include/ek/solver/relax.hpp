@@ -1,0 +1,107 @@
+#pragma once
+/// Relaxing a closed curve to a stable equilibrium of the elastic rod with
+/// self-contact (paper Section 6, eq. 1):
+///
+///   min_{x, θ} E_rod(x, θ) + ω E_contact(x) [+ E_slab(x)]
+///
+/// by Newton's method (newton.hpp) with the Hessian shift ε·λ_min, λ_min the
+/// smallest nonzero eigenvalue of the straight rod's Hessian (computed once per
+/// n, edge length, material and model, and cached), CHOLMOD with symbolic
+/// reuse while the contact set is unchanged, and a line search capped by the
+/// continuous collision detection, so that no accepted step ever produces a
+/// crossing. The result's Alexander polynomial is compared with the input's.
+#include <optional>
+#include <string>
+
+#include "ek/contact/contact_potential.hpp"
+#include "ek/geometry/types.hpp"
+#include "ek/knots/polynomial.hpp"
+#include "ek/rod/elastic_rod.hpp"
+#include "ek/solver/newton.hpp"
+#include "ek/solver/slab.hpp"
+
+namespace ek {
+
+/// Reference values of the paper's data set (Section 7.4): E = 2000, r = 0.2,
+/// unit edges. Tolerances and contact stiffness scale from them.
+inline constexpr double kReferenceBendingStiffness = 2000.0 * 3.14159265358979323846 * 0.0016 / 4.0;  // E π r⁴ / 4
+
+struct RelaxOptions {
+  RodMaterial material;             ///< E, ν, r (paper defaults)
+  /// [length] rest edge lengths (n); default: the input curve's edge lengths.
+  std::optional<VecX> rest_lengths;
+  /// [length] contact distance d̂; <= 0 means 2r (the wire diameter).
+  double dhat = 0.0;
+  /// [energy/length²] ω; <= 0 means 1e3 · (E/2000) · (r/0.2)³ (same relative
+  /// penetration for the same shape; contact_potential.hpp).
+  double contact_stiffness = 0.0;
+  /// [energy/length] gradient tolerance; <= 0 means 1e-8 · (EI / EI_ref) / ℓ²
+  /// with EI_ref = 2000·π·0.2⁴/4 and ℓ the mean rest edge length: the paper's
+  /// 1e-8 for its material and unit edges, scaled like the gradient.
+  double tolerance = 0.0;
+  int max_iterations = 2000;        ///< [1] Newton iterations (per phase)
+  /// Project each contact pair's barrier Hessian to positive semidefinite
+  /// (as IPC does): the edge-edge distance is not convex, and its negative
+  /// curvature times the barrier's large first derivative makes H strongly
+  /// indefinite right after contacts form. The convergence test is unchanged
+  /// (gradient norm, and H + ε λ_min I positive definite for the Hessian used).
+  bool project_contact_hessian = false;
+  /// Prescribed link Lk: the full model with Θ fixed (FixedLink). Without it
+  /// Θ is free and the twist relaxes to zero, so the centerline-only fast path
+  /// is used unless full_model is set.
+  std::optional<double> link;
+  bool full_model = false;          ///< use the 4n+1-dof model even when Θ is free
+  /// Planarity slab |z| < h (slab.hpp). With release_slab the slab is dropped
+  /// after the first phase and the solve continues from the flat state.
+  std::optional<SlabOptions> slab;
+  bool release_slab = false;
+  /// Tangent rotation allowed per Newton step when material frames are
+  /// transported (full model), so that time-parallel transport stays well defined.
+  double max_tangent_rotation = 0.5;  ///< [rad]
+  bool stop_at_critical_point = false;  ///< report converged-unstable instead of leaving saddles
+  bool check_topology = true;         ///< compare the Alexander polynomial of input and result
+  bool smallest_eigenvalue = false;   ///< also compute the smallest non-rigid eigenvalue of H (stiffness)
+  NewtonOptions newton;               ///< shift ε, Armijo constant, ... (tolerance, iterations, λ_min are set from the fields above)
+  /// Throws InputError for impossible values (non-positive radius, ...).
+  void validate() const;
+};
+
+/// Energy breakdown at a configuration.
+struct EnergyParts {
+  double total = 0.0, stretch = 0.0, bend = 0.0, twist = 0.0, contact = 0.0, slab = 0.0;
+};
+
+struct RelaxResult {
+  Points positions;                 ///< n by 3 equilibrium
+  VecX theta;                       ///< material angles (n; zeros for the fast path)
+  double Theta = 0.0;               ///< injected twist Θ
+  NewtonReport report;              ///< of the last phase (after release when released)
+  std::optional<NewtonReport> slab_report;  ///< of the phase under the slab, when released
+  EnergyParts energy;               ///< at the result
+  std::optional<EnergyParts> slab_energy;   ///< at the end of the slab phase
+  int contacts = 0;                 ///< active contact pairs at the result
+  double min_distance = 0.0;        ///< [length] smallest non-adjacent edge distance at the result
+  double link = 0.0, twist = 0.0, writhe = 0.0;
+  bool alexander_preserved = true;
+  AlexanderPolynomial alexander;          ///< of the input
+  AlexanderPolynomial result_alexander;   ///< of the result
+  std::optional<double> smallest_eigenvalue;  ///< of H without rigid modes, when asked
+  double lambda_min = 0.0;          ///< straight-rod λ_min used for the shift
+  std::string model;                ///< "twist-free", "free-theta" or "fixed-link"
+
+  bool converged() const;
+  bool stable() const;
+  /// The status as reported: the solver status, or "topology-changed" when the
+  /// Alexander polynomial differs (an error, never a silent result).
+  std::string status() const;
+};
+
+/// Relaxes `curve` (n by 3, a simple closed polygon; rest lengths are its edge
+/// lengths unless options.rest_lengths gives them). Throws InputError for a curve that is not simple or has a
+/// non-positive edge, and for impossible options.
+RelaxResult relax(const Points& curve, const RelaxOptions& options = {});
+
+/// λ_min of the straight rod (cached; thread-safe).
+double cached_lambda_min(int n, double edge_length, const RodMaterial& material, TwistModel model);
+
+}  // namespace ek

@@ -1,0 +1,158 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "ek/core/errors.hpp"
+#include "ek/embedding/embedding.hpp"
+#include "ek/geometry/curve_io.hpp"
+#include "ek/geometry/polyline.hpp"
+#include "ek/geometry/writhe.hpp"
+#include "ek/knots/alexander.hpp"
+#include "ek/solver/eigen_analysis.hpp"
+#include "ek/solver/relax.hpp"
+#include "testing.hpp"
+
+using namespace ek;
+
+namespace {
+
+/// Planar ring of n unit edges.
+Points unit_ring(int n) {
+  const double R = 0.5 / std::sin(M_PI / n);
+  return fixtures::circle(n, R);
+}
+
+}  // namespace
+
+// Michell's instability (issue 6 test 3): critical link √3 (1 + ν) = 2.2517 at ν = 0.3.
+TEST(Relax, MichellRingStaysFlatBelowCriticalLink) {
+  RelaxOptions o;
+  o.link = 2.0;
+  const RelaxResult r = relax(unit_ring(100), o);
+  EXPECT_EQ(r.status(), "converged-stable");
+  EXPECT_NEAR(r.link, 2.0, 1e-8);                            // link preserved (tolerance: round-off of Tw + Wr)
+  EXPECT_LT(r.positions.col(2).cwiseAbs().maxCoeff(), 1e-6);  // still planar
+  EXPECT_NEAR(total_curvature(r.positions), 2 * M_PI, 1e-6);  // still a circle
+}
+
+TEST(Relax, MichellRingLeavesThePlaneAboveCriticalLink) {
+  RelaxOptions o;
+  o.link = 2.5;
+  const RelaxResult r = relax(unit_ring(100), o);
+  EXPECT_EQ(r.status(), "converged-stable");
+  EXPECT_GE(r.report.saddle_escapes, 1);  // the flat ring is a saddle: left along negative curvature
+  EXPECT_NEAR(r.link, 2.5, 1e-8);         // link preserved while twist turns into writhe
+  EXPECT_GT(std::fabs(r.writhe), 0.5);    // measured ≈ 2.1: it left the plane
+  EXPECT_GT(r.positions.col(2).cwiseAbs().maxCoeff(), 1.0);
+  // lower energy than the twisted flat ring (GJ/2 · (2π Lk)² / L + bending of the circle)
+  RelaxOptions flat = o;
+  flat.max_iterations = 0;
+  flat.stop_at_critical_point = true;
+  const RelaxResult f = relax(unit_ring(100), flat);
+  EXPECT_LT(r.energy.total, f.energy.total);
+}
+
+TEST(Relax, StopsAtSaddleWhenAsked) {
+  RelaxOptions o;
+  o.link = 2.5;
+  o.stop_at_critical_point = true;
+  const RelaxResult r = relax(unit_ring(100), o);
+  EXPECT_EQ(r.status(), "converged-unstable");
+  EXPECT_FALSE(r.stable());
+}
+
+TEST(Relax, PeerFilesRelaxAsTheyAre) {
+  for (const char* f : {"4_1-smooth.obj", "9_47-cubiclattice.txt"}) {
+    const Points P = read_curve(fixtures::peer_dir() + "/" + f);
+    const RelaxResult r = relax(P);
+    EXPECT_EQ(r.status(), "converged-stable") << f;
+    EXPECT_TRUE(r.alexander_preserved) << f;
+    EXPECT_LE(r.report.gradient_norm, 1e-8) << f;
+    // no two non-adjacent edges closer than half the wire diameter at equilibrium
+    EXPECT_GT(r.min_distance, 0.2) << f;
+    // rest lengths are the input's: unit lattice edges stay nearly unit
+    EXPECT_NEAR(edge_lengths(r.positions).mean(), edge_lengths(P).mean(), 1e-3 * edge_lengths(P).mean()) << f;
+  }
+}
+
+TEST(Relax, FastPathAndFullModelReachTheSameEnergy) {
+  // Issue 4: the twist-free fast path and the full model with Θ free reach
+  // the same energy to solver tolerance. From the same lattice start they may
+  // follow different paths into different nearby minima of a flat landscape,
+  // so each model is started from the other's equilibrium: it must already be
+  // an equilibrium there, with the same energy and zero twist.
+  const Points P = read_curve(fixtures::peer_dir() + "/4_1-smooth.obj");
+  const RelaxResult fast = relax(P);
+  ASSERT_EQ(fast.status(), "converged-stable");
+  RelaxOptions full_options;
+  full_options.full_model = true;
+  full_options.rest_lengths = edge_lengths(P);
+  const RelaxResult full = relax(fast.positions, full_options);
+  ASSERT_EQ(full.status(), "converged-stable");
+  EXPECT_EQ(full.model, "free-theta");
+  EXPECT_NEAR(full.energy.twist, 0.0, 1e-12);
+  // same rest lengths: equal to 1e-8 relative (gradient tolerance 1e-8 times displacements of order 1)
+  EXPECT_NEAR(full.energy.total, fast.energy.total, 1e-8 * fast.energy.total);
+  EXPECT_LE(full.report.iterations, 20);
+  RelaxOptions fast_options;
+  fast_options.rest_lengths = edge_lengths(P);
+  const RelaxResult back = relax(full.positions, fast_options);
+  ASSERT_EQ(back.status(), "converged-stable");
+  EXPECT_NEAR(back.energy.total, full.energy.total, 1e-8 * full.energy.total);
+}
+
+TEST(Relax, BadInputIsInputError) {
+  Points P = unit_ring(20);
+  RelaxOptions o;
+  o.material.radius = -1;
+  EXPECT_THROW(relax(P, o), InputError);
+  o = {};
+  Points Q = P;
+  Q.row(3) = Q.row(2);
+  EXPECT_THROW(relax(Q, o), InputError);
+  // a self-intersecting curve
+  Points X(8, 3);
+  X << 1, 1, 0, 2, 0, 0, 1, -1, 0, 0, 0, 0, -1, 1, 0, -2, 0, 0, -1, -1, 0, 0, 0, 0;
+  EXPECT_THROW(relax(X, o), InputError);
+  // slab too thin for the curve
+  o.slab = SlabOptions{};
+  o.slab->half_thickness = 0.1;
+  EXPECT_THROW(relax(fixtures::torus_knot(60, 2, 3, 10, 3), o), InputError);
+}
+
+TEST(Relax, PlanaritySlabFlattensAndReleaseKeepsLink) {
+  // 3_1 as a doubly covered circle (braid coil with small strand spacing)
+  // under a slab: relaxes flat; released, it stays at its link.
+  EmbeddingOptions eo;
+  eo.vertices = 120;
+  eo.strand_spacing = 0.1;
+  const Points P = embed_knot(KnotTable::global().at("3_1"), EmbeddingSource::Braid, eo).points;
+  RelaxOptions o;
+  o.link = writhe(P);  // Lk = Wr of the start: zero initial twist
+  SlabOptions s;
+  s.half_thickness = 1.2 * P.col(2).cwiseAbs().maxCoeff() + 0.4;
+  o.slab = s;
+  o.release_slab = true;
+  const RelaxResult r = relax(P, o);
+  ASSERT_TRUE(r.slab_report.has_value());
+  EXPECT_TRUE(r.alexander_preserved);
+  EXPECT_NEAR(r.link, *o.link, 1e-6);  // issue 10: the link stays Lk_B throughout (1e-6)
+  EXPECT_EQ(to_string(r.slab_report->status), "converged-stable");
+  EXPECT_EQ(r.status(), "converged-stable");
+  EXPECT_LE(r.energy.total, r.slab_energy->total + 1e-9);
+}
+
+TEST(Relax, RigidModesAreZeroModesOfTheTwistedRing) {
+  // At a uniformly twisted ring (an equilibrium) the rotations, with the
+  // material angles turned by ω·t_j, and the uniform θ shift are exact null
+  // vectors of the full model's Hessian (positions-only rotations are not:
+  // ‖Hv‖ ≈ 2e-3 there, larger than the smallest true eigenvalue).
+  const Points P = unit_ring(60);
+  ElasticRod rod(P, RodMaterial{}, TwistModel::FixedLink);
+  rod.set_link(2.0);
+  rod.relax_twist();
+  const Eigen::MatrixXd H = Eigen::MatrixXd(rod.hessian());
+  const Eigen::MatrixXd Q = rigid_modes(rod.positions(), rod.num_dofs(), 3 * 60);
+  ASSERT_EQ(Q.cols(), 7);
+  for (int k = 0; k < Q.cols(); ++k) EXPECT_LT((H * Q.col(k)).norm(), 1e-9 * H.norm()) << "mode " << k;
+}
