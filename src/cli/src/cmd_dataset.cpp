@@ -1,0 +1,68 @@
+// knots dataset (--max-crossings C | --names A,B,...) -o DATASET.h5 [--jobs J] [--shard I/N] [--adaptive] ...
+#include <iostream>
+#include <algorithm>
+#include <sstream>
+
+#include "commands.hpp"
+#include "ek/dataset/run.hpp"
+#include "explore_options.hpp"
+#include "output.hpp"
+
+namespace ek::cli {
+
+int cmd_dataset(int argc, char** argv) {
+  std::string out, names, shard = "1/1";
+  std::optional<int> max_crossings;
+  bool json = false;
+  ExploreArgs a;
+  ArgParser args("dataset", "(--max-crossings C | --names A,B,...) -o DATASET.h5 [--jobs J] [--shard I/N] [--adaptive] [--json]");
+  args.option("--max-crossings", &max_crossings, "every table knot with 3 .. C crossings");
+  args.option("--names", &names, "comma-separated knot names");
+  args.option("-o,--output", &out, "data-set file (HDF5); an existing one with the same parameters is resumed/extended");
+  args.option("--shard", &shard, "I/N: only the knots k with k mod N = I - 1 (table order), for clusters");
+  add_explore_options(args, a);
+  args.flag("--json", &json, "print a JSON summary");
+  if (!args.parse(argc, argv)) return 0;
+  if (out.empty()) throw InputError("missing -o DATASET.h5");
+  if (max_crossings.has_value() == !names.empty()) throw InputError("give exactly one of --max-crossings and --names");
+  finish_explore_options(a);
+  DatasetRunOptions ro;
+  ro.explore = a.options;
+  ro.output = out;
+  std::tie(ro.shard_index, ro.shard_count) = parse_shard(shard);
+  const auto& table = KnotTable::global();
+  if (max_crossings) {
+    if (*max_crossings < 3 || *max_crossings > 12) throw InputError("--max-crossings must be between 3 and 12");
+    ro.knots = table.up_to_crossings(*max_crossings);
+  } else {
+    std::stringstream ss(names);
+    std::string n;
+    std::vector<const KnotRecord*> list;
+    while (std::getline(ss, n, ','))
+      if (!n.empty()) list.push_back(&table.at(n));
+    std::sort(list.begin(), list.end(), [](const KnotRecord* x, const KnotRecord* y) { return x->row < y->row; });
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+    ro.knots = list;
+  }
+  ro.progress = !a.quiet && !json;
+  const DatasetRunSummary s = run_dataset(ro);
+  if (json) {
+    Json j;
+    j["output"] = out;
+    j["knots"] = s.knots;
+    j["knots_skipped"] = s.knots_skipped;
+    j["knots_resumed"] = s.knots_resumed;
+    j["runs"] = s.runs;
+    j["equilibria"] = s.equilibria;
+    j["seconds"] = number(s.seconds);
+    j["equilibria_per_second"] = number(s.seconds > 0 ? s.equilibria / s.seconds : 0.0);
+    print_json(j);
+  } else {
+    std::cout << "data set " << out << ": " << s.knots << " knots (" << s.knots_skipped << " already there, "
+              << s.knots_resumed << " resumed), " << s.runs << " runs, " << s.equilibria << " stable equilibria in "
+              << fmt(s.seconds, 4) << " s\n";
+  }
+  return 0;
+}
+
+}  // namespace ek::cli

@@ -1,0 +1,45 @@
+#pragma once
+// Options shared by `knots explore` and `knots dataset`.
+#include "args.hpp"
+#include "ek/core/errors.hpp"
+#include "ek/dataset/pipeline.hpp"
+
+namespace ek::cli {
+
+struct ExploreArgs {
+  ExploreOptions options;
+  long long seed = 1;
+  bool adaptive = false;
+  std::optional<int> samples;
+  bool no_stiffness = false;
+  bool quiet = false;
+};
+
+inline void add_explore_options(ArgParser& args, ExploreArgs& a) {
+  args.option("--samples", &a.samples, "lattice samples per knot (default 50); not with --adaptive");
+  args.flag("--adaptive", &a.adaptive, "adaptive sampling: 50, then batches of 10 while the importance score S > 0.1, at most 500");
+  args.option("--max-samples", &a.options.max_samples, "adaptive sampling: at most this many samples (default 500)");
+  args.option("--jobs,-j", &a.options.jobs, "relaxations in parallel (default 1)");
+  args.option("--seed", &a.seed, "run seed (default 1); each knot's walk seed derives from it and the name");
+  args.option("-n,--vertices", &a.options.sampling.vertices, "vertices per curve, even (default 400)");
+  args.option("--radius", &a.options.relax.material.radius, "wire radius r (default 0.2)");
+  args.option("--young", &a.options.relax.material.young, "Young's modulus E (default 2000)");
+  args.option("--poisson", &a.options.relax.material.poisson, "Poisson ratio (default 0.3)");
+  args.option("--tol", &a.options.relax.tolerance, "gradient tolerance (default 1e-8 for the default material)");
+  args.option("--max-iter", &a.options.relax.max_iterations, "Newton iterations per relaxation (default 2000)");
+  args.flag("--no-stiffness", &a.no_stiffness, "skip the stiffness attribute (an eigenvalue per equilibrium)");
+  args.flag("--quiet", &a.quiet, "no progress output");
+}
+
+inline void finish_explore_options(ExploreArgs& a) {
+  if (a.adaptive && a.samples) throw InputError("--samples and --adaptive exclude each other");
+  if (a.seed < 0) throw InputError("--seed must be non-negative");
+  a.options.seed = static_cast<std::uint64_t>(a.seed);
+  a.options.adaptive = a.adaptive;
+  if (a.samples) a.options.samples = *a.samples;
+  a.options.stiffness = !a.no_stiffness;
+  if (a.adaptive && a.options.max_samples < a.options.initial_samples) a.options.initial_samples = a.options.max_samples;
+  a.options.validate();
+}
+
+}  // namespace ek::cli

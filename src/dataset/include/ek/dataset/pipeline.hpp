@@ -1,0 +1,93 @@
+#pragma once
+/// The data-set pipeline (paper Section 7.4, Fig. 3): for a knot type, random
+/// cubic-lattice samples (lattice module) are relaxed to stable equilibria
+/// (solver), compared with the curvature-torsion similarity, clustered
+/// (analysis), and stored with their attributes and the report of every run.
+///
+/// Adaptive sampling (Section 7.4; the paper's supplement, which defines the
+/// score, is not available, so the definition is ours): 50 initial samples,
+/// then batches of 10; after each batch the importance score
+///
+///   S = max_{j in batch, stable} ν_j · w_j  ∈ [0, 1],
+///   ν_j = min(1, (1 - max_{i earlier or earlier in the batch} sim(j, i)) / δ)   (geometric novelty)
+///   w_j = E_min / E_j                                                         (energy weight)
+///
+/// where sim is the similarity of Section 7.1 (with orientation reversal),
+/// δ = novelty_distance, the distance at which two states count as different,
+/// and E_min the lowest energy found so far (this batch included). S is 1
+/// when the batch found a state unlike all earlier ones at the lowest energy
+/// seen, and 0 when every new state repeats a known one (or none converged).
+/// Sampling continues while S > score_threshold (0.1) and stops at
+/// max_samples (500). A batch without any stable equilibrium scores 0.
+///
+/// Determinism: the samples of a knot come from one seeded walk (seed derived
+/// from the run's seed and the knot's name); each relaxation is sequential and
+/// deterministic, so the stored equilibria do not depend on the number of
+/// jobs or on thread scheduling (only the order in which runs finish and the
+/// measured seconds do).
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "ek/analysis/similarity.hpp"
+#include "ek/dataset/dataset_file.hpp"
+#include "ek/knots/table.hpp"
+#include "ek/lattice/sampling.hpp"
+#include "ek/solver/relax.hpp"
+
+namespace ek {
+
+struct ExploreOptions {
+  RelaxOptions relax;              ///< material, tolerance, iterations (stiffness: see `stiffness`)
+  SampleOptions sampling;          ///< n, fugacities, decorrelation (count and seed are set per batch)
+  LatticeStartOptions start;       ///< how the first lattice polygon is made
+  int samples = 50;                ///< [1] samples per knot without adaptive sampling
+  bool adaptive = false;           ///< adaptive sampling (see the file comment)
+  int initial_samples = 50;        ///< [1]
+  int batch_samples = 10;          ///< [1]
+  int max_samples = 500;           ///< [1]
+  double score_threshold = 0.1;    ///< [1] continue while S > this
+  double novelty_distance = 0.1;   ///< [1] δ in 1 - similarity
+  SimilarityOptions similarity;    ///< comparisons (orientation reversal on by default)
+  bool stiffness = true;           ///< compute the stiffness attribute (smallest non-rigid Hessian eigenvalue)
+  std::uint64_t seed = 1;          ///< run seed; each knot's walk seed is derived from it and the name
+  int jobs = 1;                    ///< [1] relaxations in parallel
+  ExploreOptions();
+  void validate() const;           ///< InputError for impossible values
+  /// "fixed:50" or "adaptive:50+10,max=500,S>0.1,delta=0.1": recorded in the file.
+  std::string sampling_description() const;
+};
+
+/// The file-level metadata of a data set computed with these options.
+DatasetMetadata dataset_metadata(const ExploreOptions& options);
+
+/// Seed of a knot's walk: splitmix64 of the run seed and a hash of the name.
+std::uint64_t knot_seed(std::uint64_t run_seed, const std::string& name);
+
+/// Names of the attribute columns stored per equilibrium.
+const std::vector<std::string>& dataset_attribute_names();
+
+/// Importance score S of a batch (see the file comment): `batch_similarity`
+/// is the batch's stable equilibria (rows) against every stable equilibrium
+/// known before the batch and the earlier members of the batch (columns in the
+/// order [earlier..., batch...]; entries of later batch members are ignored).
+double importance_score(const Eigen::MatrixXd& batch_similarity, int earlier, const std::vector<double>& batch_energies,
+                        double minimum_energy, double novelty_distance);
+
+/// Called after every finished run (from the coordinating thread).
+using RunCallback = std::function<void(const RunRecord&)>;
+
+/// Samples, relaxes, stores and clusters one knot type. Completed runs are
+/// appended to the journal file at `journal_path` (if not empty) as they
+/// finish; a journal left by an interrupted run with the same options is read
+/// first and its runs are not repeated. Throws InputError for impossible
+/// options and for a journal written with different options.
+KnotEntry explore_knot(const KnotRecord& knot, const ExploreOptions& options, const std::string& journal_path = "",
+                       const RunCallback& on_run = {});
+
+/// Recomputes the similarity matrix and the complete-linkage dendrogram of
+/// the stored equilibria (used after merging and by explore_knot).
+void cluster_entry(KnotEntry& entry, const SimilarityOptions& options);
+
+}  // namespace ek

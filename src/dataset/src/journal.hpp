@@ -1,0 +1,50 @@
+#pragma once
+// Private: the append-only journal of finished runs of one knot, so that an
+// interrupted run loses no completed equilibrium (crash safety, issue 8).
+//
+// File: the header line "elastic-knots-journal 1\n", the options text and
+// '\n', then records: u32 magic 0x314E5552 ("RUN1"), u32 payload length,
+// payload, u32 CRC-32 (zlib) of the payload. Each record is written with one
+// write(2) and fsync(2). A torn record at the end (killed mid-write) fails its
+// length or CRC check and is ignored, and the file is truncated to the last
+// good record before appending.
+#include <map>
+#include <mutex>
+#include <string>
+
+#include "ek/dataset/dataset_file.hpp"
+#include "ek/solver/relax.hpp"
+
+namespace ek {
+
+struct JournalRun {
+  RunRecord record;
+  Points positions;            // empty when no equilibrium is stored
+  EnergyParts energy;
+  double stiffness = 0.0;      // NaN when not computed
+  double link = 0.0;
+};
+
+class Journal {
+ public:
+  /// Opens or creates the journal. `options_text` identifies the run's
+  /// options; an existing journal with other options is an InputError.
+  Journal(std::string path, const std::string& options_text);
+  ~Journal();
+  Journal(const Journal&) = delete;
+  Journal& operator=(const Journal&) = delete;
+
+  const std::map<int, JournalRun>& runs() const { return runs_; }
+  /// Appends durably (thread-safe).
+  void append(const JournalRun& run);
+  /// Deletes the journal file (after its knot was committed elsewhere).
+  void remove();
+
+ private:
+  std::string path_;
+  int fd_ = -1;
+  std::map<int, JournalRun> runs_;
+  std::mutex mutex_;
+};
+
+}  // namespace ek

@@ -1,0 +1,298 @@
+#include "ek/dataset/pipeline.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+#include <mutex>
+#include <sstream>
+#include <thread>
+
+#include "ek/analysis/attributes.hpp"
+#include "ek/analysis/clustering.hpp"
+#include "ek/core/errors.hpp"
+#include "ek/core/paths.hpp"
+#include "ek/knots/alexander.hpp"
+#include "journal.hpp"
+
+namespace ek {
+namespace {
+
+std::uint64_t splitmix64(std::uint64_t x) {
+  x += 0x9E3779B97F4A7C15ULL;
+  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ULL;
+  x = (x ^ (x >> 27)) * 0x94D049BB133111EBULL;
+  return x ^ (x >> 31);
+}
+
+/// Canonical text of every option that changes results (the journal key).
+std::string options_text(const std::string& knot, const ExploreOptions& o) {
+  std::ostringstream s;
+  s.precision(17);
+  const auto meta = dataset_metadata(o);
+  s << "knot=" << knot << " young=" << meta.young << " poisson=" << meta.poisson << " radius=" << meta.radius
+    << " n=" << meta.vertices << " tol=" << meta.tolerance << " omega=" << meta.contact_stiffness
+    << " dhat=" << meta.dhat << " iterations=" << o.relax.max_iterations << " sampling=" << o.sampling_description()
+    << " grow=" << o.sampling.grow_fugacity << " shrink=" << o.sampling.shrink_fugacity
+    << " growth=" << o.sampling.growth_factor << " decorrelation=" << o.sampling.decorrelation_moves
+    << " seed=" << o.seed << " stiffness=" << o.stiffness;
+  return s.str();
+}
+
+JournalRun run_one(const Points& sample, int index, std::uint64_t seed, const ExploreOptions& o) {
+  JournalRun out;
+  out.record.sample = index;
+  out.record.seed = seed;
+  out.stiffness = std::numeric_limits<double>::quiet_NaN();
+  try {
+    RelaxOptions ro = o.relax;
+    ro.smallest_eigenvalue = o.stiffness;
+    const RelaxResult r = relax(sample, ro);
+    out.record.status = r.status();
+    out.record.iterations = r.report.iterations;
+    out.record.seconds = r.report.seconds;
+    out.record.energy = r.energy.total;
+    out.record.gradient_norm = r.report.gradient_norm;
+    out.record.contacts = r.contacts;
+    out.record.alexander_preserved = r.alexander_preserved;
+    out.energy = r.energy;
+    out.link = r.link;
+    if (r.smallest_eigenvalue) out.stiffness = *r.smallest_eigenvalue;
+    if (r.stable() && r.alexander_preserved) out.positions = r.positions;
+    if (!r.alexander_preserved)
+      out.record.message = "Alexander polynomial changed from " + r.alexander.to_string() + " to " +
+                           r.result_alexander.to_string();
+  } catch (const std::exception& e) {
+    out.record.status = "error";
+    out.record.message = e.what();
+  }
+  return out;
+}
+
+}  // namespace
+
+ExploreOptions::ExploreOptions() { similarity.reversal = true; }
+
+void ExploreOptions::validate() const {
+  relax.validate();
+  require_input(samples >= 1, "explore: --samples must be at least 1");
+  require_input(initial_samples >= 1 && batch_samples >= 1, "explore: initial and batch sample counts must be positive");
+  require_input(max_samples >= initial_samples, "explore: max samples must be >= the initial samples");
+  require_input(score_threshold >= 0.0 && score_threshold < 1.0, "explore: score threshold must be in [0, 1)");
+  require_input(novelty_distance > 0.0 && novelty_distance <= 1.0, "explore: novelty distance must be in (0, 1]");
+  require_input(jobs >= 1 && jobs <= 256, "explore: --jobs must be between 1 and 256");
+  require_input(sampling.vertices >= 4 && sampling.vertices % 2 == 0,
+                "explore: the vertex count n must be even and >= 4 (lattice polygons)");
+}
+
+std::string ExploreOptions::sampling_description() const {
+  std::ostringstream s;
+  if (adaptive)
+    s << "adaptive:" << initial_samples << "+" << batch_samples << ",max=" << max_samples << ",S>" << score_threshold
+      << ",delta=" << novelty_distance;
+  else
+    s << "fixed:" << samples;
+  return s.str();
+}
+
+DatasetMetadata dataset_metadata(const ExploreOptions& o) {
+  DatasetMetadata m;
+  const RodMaterial& mat = o.relax.material;
+  m.young = mat.young;
+  m.poisson = mat.poisson;
+  m.radius = mat.radius;
+  m.vertices = o.sampling.vertices;
+  m.edge_length = 1.0;
+  const double EI = mat.bending_stiffness();
+  m.tolerance = o.relax.tolerance > 0.0 ? o.relax.tolerance : 1e-8 * EI / kReferenceBendingStiffness;
+  const double rs = mat.radius / 0.2;
+  m.contact_stiffness =
+      o.relax.contact_stiffness > 0.0 ? o.relax.contact_stiffness : 1e3 * (mat.young / 2000.0) * rs * rs * rs;
+  m.dhat = o.relax.dhat > 0.0 ? o.relax.dhat : 2.0 * mat.radius;
+  m.twist_model = o.relax.full_model ? "free-theta" : "twist-free";
+  m.sampling = o.sampling_description();
+  m.seed = o.seed;
+  m.project_version = project_version();
+  m.knot_table = knot_table_path();
+  return m;
+}
+
+std::uint64_t knot_seed(std::uint64_t run_seed, const std::string& name) {
+  std::uint64_t h = 1469598103934665603ULL;  // FNV-1a
+  for (char c : name) {
+    h ^= static_cast<unsigned char>(c);
+    h *= 1099511628211ULL;
+  }
+  return splitmix64(run_seed ^ splitmix64(h));
+}
+
+const std::vector<std::string>& dataset_attribute_names() {
+  static const std::vector<std::string> names = {
+      "energy",          "energy_stretch", "energy_bend", "energy_twist", "energy_contact", "stiffness",
+      "max_stress",      "total_curvature", "threedim",  "sphericity",   "diameter",       "writhe",
+      "link",            "contacts",       "sample"};
+  return names;
+}
+
+double importance_score(const Eigen::MatrixXd& sim, int earlier, const std::vector<double>& energies,
+                        double minimum_energy, double novelty_distance) {
+  const int m = static_cast<int>(energies.size());
+  require(sim.rows() == m && sim.cols() == earlier + m, "importance_score: similarity matrix has the wrong shape");
+  double score = 0.0;
+  for (int j = 0; j < m; ++j) {
+    double best = 0.0;
+    for (int i = 0; i < earlier + j; ++i) best = std::max(best, sim(j, i));
+    const double novelty = std::min(1.0, (1.0 - best) / novelty_distance);
+    const double weight = energies[static_cast<size_t>(j)] > 0.0 ? minimum_energy / energies[static_cast<size_t>(j)] : 1.0;
+    score = std::max(score, std::clamp(novelty * weight, 0.0, 1.0));
+  }
+  return score;
+}
+
+void cluster_entry(KnotEntry& e, const SimilarityOptions& options) {
+  const int m = static_cast<int>(e.equilibria.size());
+  if (m == 0) {
+    e.similarity.resize(0, 0);
+    e.linkage.resize(0, 4);
+    return;
+  }
+  SimilarityEngine engine(static_cast<int>(e.equilibria.front().rows()), options);
+  std::vector<SignatureSpectrum> spectra;
+  spectra.reserve(static_cast<size_t>(m));
+  for (const auto& P : e.equilibria) spectra.push_back(engine.spectrum(P));
+  e.similarity = engine.matrix(spectra);
+  e.linkage = complete_linkage_from_similarity(e.similarity).linkage_matrix();
+}
+
+KnotEntry explore_knot(const KnotRecord& knot, const ExploreOptions& o, const std::string& journal_path,
+                       const RunCallback& on_run) {
+  o.validate();
+  KnotEntry entry;
+  entry.name = knot.name;
+  entry.crossing_number = knot.crossing_number;
+  entry.bridge_index = knot.bridge_index.value_or(-1);
+  entry.braid_index = knot.braid_index.value_or(-1);
+  entry.adaptive = o.adaptive;
+  const std::uint64_t seed = knot_seed(o.seed, knot.name);
+
+  std::unique_ptr<Journal> journal;
+  if (!journal_path.empty()) journal = std::make_unique<Journal>(journal_path, options_text(knot.name, o));
+  std::map<int, JournalRun> done = journal ? journal->runs() : std::map<int, JournalRun>{};
+
+  const LatticeStart start = lattice_start(knot, o.start);
+  entry.alexander = start.alexander.coefficients;
+  std::vector<LatticePoints> samples;
+  int batch_index = 0;
+  auto generate = [&](int count) {
+    SampleOptions so = o.sampling;
+    so.count = count;
+    so.seed = splitmix64(seed + static_cast<std::uint64_t>(batch_index));
+    const LatticePoints& from = samples.empty() ? start.points : samples.back();
+    SampleBatch b = sample_lattice_polygons(from, so, start.alexander, knot.name);
+    for (auto& s : b.samples) samples.push_back(std::move(s));
+    ++batch_index;
+  };
+
+  std::mutex mutex;
+  auto relax_range = [&](int begin, int end) {
+    std::vector<int> todo;
+    for (int k = begin; k < end; ++k)
+      if (!done.count(k)) todo.push_back(k);
+    std::atomic<size_t> next{0};
+    auto worker = [&]() {
+      for (;;) {
+        const size_t t = next.fetch_add(1);
+        if (t >= todo.size()) return;
+        const int k = todo[t];
+        JournalRun r = run_one(to_points(samples[static_cast<size_t>(k)]), k, seed, o);
+        std::lock_guard<std::mutex> lock(mutex);
+        if (journal) journal->append(r);
+        if (on_run) on_run(r.record);
+        done[k] = std::move(r);
+      }
+    };
+    const int threads = std::min<int>(o.jobs, static_cast<int>(todo.size()));
+    if (threads <= 1) {
+      worker();
+    } else {
+      std::vector<std::thread> pool;
+      for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
+      for (auto& th : pool) th.join();
+    }
+  };
+
+  // Adaptive bookkeeping: spectra of the stable equilibria in sample order.
+  SimilarityEngine engine(o.sampling.vertices, o.similarity);
+  std::vector<SignatureSpectrum> spectra;
+  std::vector<double> energies;
+  double min_energy = std::numeric_limits<double>::infinity();
+  auto score_batch = [&](int begin, int end) {
+    const int earlier = static_cast<int>(spectra.size());
+    std::vector<SignatureSpectrum> batch;
+    std::vector<double> batch_energy;
+    for (int k = begin; k < end; ++k) {
+      const JournalRun& r = done.at(k);
+      if (r.positions.rows() == 0) continue;
+      batch.push_back(engine.spectrum(r.positions));
+      batch_energy.push_back(r.energy.total);
+      min_energy = std::min(min_energy, r.energy.total);
+    }
+    double S = 0.0;
+    if (!batch.empty()) {
+      std::vector<SignatureSpectrum> columns = spectra;
+      columns.insert(columns.end(), batch.begin(), batch.end());
+      const Eigen::MatrixXd sim = engine.cross_matrix(batch, columns);
+      S = importance_score(sim, earlier, batch_energy, min_energy, o.novelty_distance);
+    }
+    spectra.insert(spectra.end(), batch.begin(), batch.end());
+    energies.insert(energies.end(), batch_energy.begin(), batch_energy.end());
+    return S;
+  };
+
+  int total = o.adaptive ? o.initial_samples : o.samples;
+  generate(total);
+  relax_range(0, total);
+  if (o.adaptive) {
+    entry.score_history.push_back(score_batch(0, total));
+    while (entry.score_history.back() > o.score_threshold && total < o.max_samples) {
+      const int count = std::min(o.batch_samples, o.max_samples - total);
+      generate(count);
+      relax_range(total, total + count);
+      entry.score_history.push_back(score_batch(total, total + count));
+      total += count;
+    }
+  }
+  entry.samples_used = total;
+
+  // Runs in sample order; stable equilibria with their attributes.
+  const auto& names = dataset_attribute_names();
+  std::vector<std::vector<double>> rows;
+  AttributeOptions ao;
+  ao.radius = o.relax.material.radius;
+  ao.young_modulus = o.relax.material.young;
+  for (int k = 0; k < total; ++k) {
+    JournalRun& r = done.at(k);
+    if (r.positions.rows() > 0) {
+      r.record.equilibrium = static_cast<int>(entry.equilibria.size());
+      const Attributes a = compute_attributes(r.positions, ao);
+      rows.push_back({r.energy.total, r.energy.stretch, r.energy.bend, r.energy.twist, r.energy.contact, r.stiffness,
+                      a.physical.max_stress.value_or(std::nan("")), a.geometric.total_curvature, a.geometric.threedim,
+                      a.geometric.sphericity, a.geometric.diameter, a.geometric.writhe, r.link,
+                      static_cast<double>(r.record.contacts), static_cast<double>(k)});
+      entry.equilibria.push_back(r.positions);
+    } else {
+      r.record.equilibrium = -1;
+    }
+    entry.runs.push_back(r.record);
+  }
+  entry.attribute_names = names;
+  entry.attributes.resize(static_cast<Eigen::Index>(rows.size()), static_cast<Eigen::Index>(names.size()));
+  for (size_t i = 0; i < rows.size(); ++i)
+    for (size_t c = 0; c < names.size(); ++c)
+      entry.attributes(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(c)) = rows[i][c];
+  cluster_entry(entry, o.similarity);
+  entry.complete = true;
+  return entry;
+}
+
+}  // namespace ek

@@ -1,0 +1,234 @@
+#include "ek/dataset/run.hpp"
+
+#include <unistd.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <ctime>
+#include <filesystem>
+#include <map>
+
+#include "ek/core/atomic_file.hpp"
+#include "ek/core/errors.hpp"
+#include "ek/knots/table.hpp"
+
+namespace ek {
+namespace {
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+std::string now_iso() {
+  std::time_t t = std::time(nullptr);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&t));
+  return buf;
+}
+
+std::string hms(double seconds) {
+  if (!std::isfinite(seconds) || seconds < 0) return "--:--:--";
+  const long s = static_cast<long>(seconds + 0.5);
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%02ld:%02ld:%02ld", s / 3600, (s / 60) % 60, s % 60);
+  return buf;
+}
+
+/// Progress on stderr: a bar redrawn in place on a terminal, otherwise one
+/// plain line at most every 30 seconds.
+class Progress {
+ public:
+  Progress(bool enabled, int knots) : enabled_(enabled), tty_(::isatty(2) != 0), knots_(knots), t0_(Clock::now()) {}
+  void knot_started(const std::string& name) { current_ = name; }
+  void run_finished(bool stable) {
+    ++runs_;
+    if (stable) ++equilibria_;
+    show(false);
+  }
+  void knot_finished() {
+    ++knots_done_;
+    show(true);
+  }
+  void finish() {
+    if (enabled_ && tty_) std::fprintf(stderr, "\n");
+  }
+
+ private:
+  void show(bool knot_event) {
+    if (!enabled_) return;
+    const double elapsed = std::chrono::duration<double>(Clock::now() - t0_).count();
+    const double rate = elapsed > 0 ? runs_ / elapsed : 0.0;
+    const double eta = knots_done_ > 0 ? elapsed / knots_done_ * (knots_ - knots_done_) : NAN;
+    if (tty_) {
+      const int width = 30;
+      const int filled = knots_ > 0 ? width * knots_done_ / knots_ : width;
+      std::string bar(static_cast<size_t>(filled), '=');
+      bar.resize(static_cast<size_t>(width), ' ');
+      std::fprintf(stderr, "\r[%s] %d/%d knots  %s  %d runs  %d equilibria  %.2f runs/s  ETA %s   ", bar.c_str(),
+                   knots_done_, knots_, current_.c_str(), runs_, equilibria_, rate, hms(eta).c_str());
+      std::fflush(stderr);
+    } else if (knot_event || elapsed - last_line_ >= 30.0) {
+      last_line_ = elapsed;
+      std::fprintf(stderr, "progress: %d/%d knots, %d runs, %d equilibria, %.2f runs/s, elapsed %s, ETA %s (%s)\n",
+                   knots_done_, knots_, runs_, equilibria_, rate, hms(elapsed).c_str(), hms(eta).c_str(),
+                   current_.c_str());
+    }
+  }
+  bool enabled_, tty_;
+  int knots_, knots_done_ = 0, runs_ = 0, equilibria_ = 0;
+  std::string current_;
+  Clock::time_point t0_;
+  double last_line_ = -1e9;
+};
+
+int table_index(const std::string& name) {
+  const KnotRecord* r = KnotTable::global().find(name);
+  return r ? r->row : 1 << 30;
+}
+
+}  // namespace
+
+std::pair<int, int> parse_shard(const std::string& text) {
+  const auto slash = text.find('/');
+  int i = 0, n = 0;
+  try {
+    if (slash == std::string::npos) throw std::invalid_argument("");
+    size_t p1 = 0, p2 = 0;
+    i = std::stoi(text.substr(0, slash), &p1);
+    n = std::stoi(text.substr(slash + 1), &p2);
+    if (p1 != slash || p2 != text.size() - slash - 1) throw std::invalid_argument("");
+  } catch (const std::exception&) {
+    throw InputError("--shard '" + text + "': expected I/N, for example 2/8");
+  }
+  if (n < 1 || i < 1 || i > n) throw InputError("--shard '" + text + "': need 1 <= I <= N");
+  return {i - 1, n};
+}
+
+DatasetRunSummary run_dataset(const DatasetRunOptions& o) {
+  o.explore.validate();
+  require_input(o.shard_count >= 1 && o.shard_index >= 0 && o.shard_index < o.shard_count, "bad shard");
+  check_writable(o.output);
+  const auto t0 = Clock::now();
+  DatasetMetadata meta = dataset_metadata(o.explore);
+  meta.created = now_iso();
+  // An existing output must have the same parameters; its knots are kept.
+  std::vector<std::string> existing;
+  if (fs::exists(o.output)) {
+    DatasetReader old(o.output);
+    const std::string diff = old.metadata().difference(meta);
+    if (!diff.empty())
+      throw InputError("'" + o.output + "' exists with different parameters (" + diff +
+                       "); choose another output or the same parameters");
+    if (old.metadata().sampling != meta.sampling)
+      throw InputError("'" + o.output + "' exists with different sampling (" + old.metadata().sampling + " vs " +
+                       meta.sampling + ")");
+    if (old.metadata().seed != meta.seed)
+      throw InputError("'" + o.output + "' exists with a different seed (" + std::to_string(old.metadata().seed) +
+                       " vs " + std::to_string(meta.seed) + ")");
+    existing = old.knot_names();
+    meta.created = old.metadata().created;
+  }
+  std::vector<const KnotRecord*> mine;
+  for (size_t k = 0; k < o.knots.size(); ++k)
+    if (static_cast<int>(k % static_cast<size_t>(o.shard_count)) == o.shard_index) mine.push_back(o.knots[k]);
+
+  const std::string work = o.output + ".work";
+  std::error_code ec;
+  fs::create_directories(work, ec);
+  if (ec) throw InputError("cannot create work folder '" + work + "': " + ec.message());
+
+  DatasetRunSummary summary;
+  summary.knots = static_cast<int>(mine.size());
+  Progress progress(o.progress, summary.knots);
+  std::vector<std::string> parts;
+  for (const KnotRecord* knot : mine) {
+    if (std::find(existing.begin(), existing.end(), knot->name) != existing.end()) {
+      ++summary.knots_skipped;
+      progress.knot_finished();
+      continue;
+    }
+    const std::string part = work + "/" + knot->name + ".h5";
+    if (fs::exists(part)) {
+      try {
+        DatasetReader check(part);
+        if (check.has_knot(knot->name) && check.metadata().difference(meta).empty()) {
+          parts.push_back(part);
+          ++summary.knots_resumed;
+          progress.knot_finished();
+          continue;
+        }
+      } catch (const InputError&) {
+        // unreadable part (cannot happen with rename, but be safe): recompute
+      }
+    }
+    progress.knot_started(knot->name);
+    const std::string journal = work + "/" + knot->name + ".journal";
+    KnotEntry entry = explore_knot(*knot, o.explore, journal, [&](const RunRecord& r) {
+      ++summary.runs;
+      const bool stable = r.status == "converged-stable";
+      if (stable) ++summary.equilibria;
+      progress.run_finished(stable);
+    });
+    {
+      DatasetWriter w(part, meta);
+      w.add(entry);
+      w.commit();
+    }
+    std::remove(journal.c_str());
+    parts.push_back(part);
+    progress.knot_finished();
+  }
+  progress.finish();
+  // Assemble: knots of the old output plus the parts, in table order.
+  std::map<std::pair<int, std::string>, std::pair<std::string, std::string>> order;  // -> (file, name)
+  for (const auto& name : existing) order[{table_index(name), name}] = {o.output, name};
+  for (const auto& part : parts) {
+    DatasetReader r(part);
+    for (const auto& name : r.knot_names()) order[{table_index(name), name}] = {part, name};
+  }
+  {
+    DatasetWriter w(o.output, meta);
+    std::map<std::string, std::unique_ptr<DatasetReader>> readers;
+    for (const auto& [key, src] : order) {
+      auto& reader = readers[src.first];
+      if (!reader) reader = std::make_unique<DatasetReader>(src.first);
+      w.add(reader->read(src.second));
+    }
+    readers.clear();
+    w.commit();
+  }
+  for (const auto& part : parts) std::remove(part.c_str());
+  fs::remove(work, ec);  // only when empty (other shards may share nothing here)
+  summary.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  return summary;
+}
+
+void merge_datasets(const std::vector<std::string>& inputs, const std::string& output) {
+  require_input(!inputs.empty(), "merge: no input data sets");
+  check_writable(output);
+  std::vector<std::unique_ptr<DatasetReader>> readers;
+  for (const auto& in : inputs) readers.push_back(std::make_unique<DatasetReader>(in));
+  DatasetMetadata meta = readers.front()->metadata();
+  std::map<std::pair<int, std::string>, size_t> order;
+  for (size_t k = 0; k < readers.size(); ++k) {
+    const auto& m = readers[k]->metadata();
+    const std::string diff = meta.difference(m);
+    if (!diff.empty())
+      throw InputError("merge: '" + inputs[k] + "' has different parameters from '" + inputs[0] + "' (" + diff + ")");
+    if (m.sampling != meta.sampling || m.seed != meta.seed)
+      throw InputError("merge: '" + inputs[k] + "' has different sampling or seed from '" + inputs[0] + "'");
+    if (m.created < meta.created) meta.created = m.created;
+    for (const auto& name : readers[k]->knot_names()) {
+      const auto key = std::make_pair(table_index(name), name);
+      if (order.count(key))
+        throw InputError("merge: knot " + name + " is in both '" + inputs[order[key]] + "' and '" + inputs[k] + "'");
+      order[key] = k;
+    }
+  }
+  DatasetWriter w(output, meta);
+  for (const auto& [key, k] : order) w.add(readers[k]->read(key.second));
+  readers.clear();
+  w.commit();
+}
+
+}  // namespace ek

@@ -1,0 +1,182 @@
+// The data-set commands end to end: explore/dataset/merge/cluster/query/export,
+// crash safety (kill and resume), shards, and bad input.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include "cli_runner.hpp"
+#include "ek/dataset/dataset_file.hpp"
+
+using ek::clitest::run;
+using ek::clitest::temp_dir;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kSmall = " -n 100 --no-stiffness --quiet ";
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+/// Equilibria of every knot in the file (the deterministic part of a data set).
+std::map<std::string, std::vector<ek::Points>> equilibria(const std::string& path) {
+  ek::DatasetReader r(path);
+  std::map<std::string, std::vector<ek::Points>> out;
+  for (const auto& name : r.knot_names()) out[name] = r.read(name).equilibria;
+  return out;
+}
+
+void expect_bad_input(const std::string& args, const std::string& needle) {
+  const auto r = run(args);
+  EXPECT_EQ(r.status, 2) << args << "\n" << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find(needle), std::string::npos) << r.err;
+}
+
+}  // namespace
+
+// Issue 8: a small end-to-end run (3_1, 4_1, 5_1, 5_2; 20 samples each; 2 jobs)
+// gives a valid data set that the query and cluster commands read.
+TEST(DatasetCli, EndToEndQueryClusterExport) {
+  const std::string dir = temp_dir("ds_e2e");
+  const std::string file = dir + "/e2e.h5";
+  const auto r = run("dataset --names 3_1,4_1,5_1,5_2 --samples 20 --jobs 2" + kSmall + "-o " + file + " --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = r.json();
+  EXPECT_EQ(j["knots"], 4);
+  EXPECT_EQ(j["runs"], 80);
+  EXPECT_GT(j["equilibria"].get<int>(), 60);  // most runs converge (measured: 80 of 80)
+  ek::DatasetReader reader(file);
+  EXPECT_EQ(reader.knot_names(), (std::vector<std::string>{"3_1", "4_1", "5_1", "5_2"}));
+  EXPECT_EQ(reader.metadata().vertices, 100);
+  EXPECT_EQ(reader.metadata().sampling, "fixed:20");
+  for (const auto& name : reader.knot_names()) EXPECT_EQ(reader.read(name).runs.size(), 20u) << name;
+  // query: sorted, filtered, limited
+  const auto q = run("query " + file + " --sort energy --where 'total_curvature<20' --limit 5 --json");
+  ASSERT_EQ(q.status, 0) << q.err;
+  const auto rows = q.json()["rows"];
+  ASSERT_GT(rows.size(), 0u);
+  EXPECT_LE(rows.size(), 5u);
+  for (size_t i = 1; i < rows.size(); ++i) EXPECT_LE(rows[i - 1]["energy"], rows[i]["energy"]);
+  for (const auto& row : rows) EXPECT_LT(row["total_curvature"].get<double>(), 20.0);
+  // cluster: every equilibrium in exactly one cluster
+  const auto c = run("cluster " + file + " 4_1 --cut 0.1 --json");
+  ASSERT_EQ(c.status, 0) << c.err;
+  size_t members = 0;
+  const auto clusters = c.json()["clusters"];  // keep the parsed object alive while iterating
+  for (const auto& cl : clusters) members += cl["members"].size();
+  EXPECT_EQ(members, reader.read("4_1").equilibria.size());
+  // export
+  const auto x = run("export " + file + " 4_1 0 -o " + dir + "/eq.obj");
+  ASSERT_EQ(x.status, 0) << x.err;
+  const auto inv = run("invariants " + dir + "/eq.obj --json");
+  EXPECT_EQ(inv.json()["alexander"], nlohmann::json::parse("[-1,3,-1]"));
+  expect_bad_input("export " + file + " 4_1 999 -o " + dir + "/eq2.obj", "out of range");
+  expect_bad_input("cluster " + file + " 6_1 --cut 0.1", "has no knot '6_1'");
+  expect_bad_input("query " + file + " --sort colour", "unknown attribute 'colour'");
+  expect_bad_input("query " + file + " --where 'energy~1'", "expected ATTR<VALUE");
+  fs::remove_all(dir);
+}
+
+// Issue 8: kill a run midway (SIGKILL), re-run, and get every equilibrium of
+// an uninterrupted run with the same seeds; the output is never unreadable.
+TEST(DatasetCli, KilledRunResumesWithoutLoss) {
+  const std::string dir = temp_dir("ds_resume");
+  const std::string args = "dataset --names 3_1,4_1 --samples 6 --jobs 1" + kSmall;
+  ASSERT_EQ(run(args + "-o " + dir + "/full.h5").status, 0);
+  const std::string out = dir + "/killed.h5";
+  const pid_t pid = fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    // `exec` so that the pid is the knots process itself
+    execl("/bin/sh", "sh", "-c",
+          ("exec " + std::string(EK_KNOTS_BIN) + " " + args + "-o " + out + " >/dev/null 2>&1").c_str(),
+          static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  // wait until the first knot's journal holds a few runs, then kill
+  const std::string journal = out + ".work/3_1.journal";
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  bool killed = false;
+  while (std::chrono::steady_clock::now() < deadline) {
+    if (fs::exists(journal) && fs::file_size(journal) > 10000) {  // header + at least one run with a curve
+      kill(pid, SIGKILL);
+      killed = true;
+      break;
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  int status = 0;
+  waitpid(pid, &status, 0);
+  ASSERT_TRUE(killed) << "the run finished before it could be killed";
+  EXPECT_FALSE(fs::exists(out));  // nothing committed yet, and certainly nothing half-written
+  // re-run the same command: resumes from the journal
+  const auto resumed = run(args + "-o " + out + " --json");
+  ASSERT_EQ(resumed.status, 0) << resumed.err;
+  EXPECT_LT(resumed.json()["runs"].get<int>(), 12);  // the journaled runs were not repeated
+  EXPECT_EQ(equilibria(out), equilibria(dir + "/full.h5"));
+  EXPECT_FALSE(fs::exists(out + ".work"));
+  fs::remove_all(dir);
+}
+
+// Issue 8: merge of two shards equals the unsharded run.
+TEST(DatasetCli, MergedShardsEqualTheUnshardedRun) {
+  const std::string dir = temp_dir("ds_shards");
+  const std::string args = "dataset --names 3_1,4_1,5_2 --samples 4 --jobs 2" + kSmall;
+  ASSERT_EQ(run(args + "-o " + dir + "/all.h5").status, 0);
+  ASSERT_EQ(run(args + "--shard 1/2 -o " + dir + "/s1.h5").status, 0);
+  ASSERT_EQ(run(args + "--shard 2/2 -o " + dir + "/s2.h5").status, 0);
+  EXPECT_EQ(ek::DatasetReader(dir + "/s1.h5").knot_names(), (std::vector<std::string>{"3_1", "5_2"}));
+  EXPECT_EQ(ek::DatasetReader(dir + "/s2.h5").knot_names(), (std::vector<std::string>{"4_1"}));
+  const auto m = run("merge " + dir + "/s2.h5 " + dir + "/s1.h5 -o " + dir + "/merged.h5");
+  ASSERT_EQ(m.status, 0) << m.err;
+  EXPECT_EQ(equilibria(dir + "/merged.h5"), equilibria(dir + "/all.h5"));
+  ek::DatasetReader a(dir + "/all.h5"), b(dir + "/merged.h5");
+  EXPECT_EQ(a.knot_names(), b.knot_names());
+  for (const auto& name : a.knot_names()) {
+    const auto ea = a.read(name), eb = b.read(name);
+    EXPECT_EQ(ea.similarity, eb.similarity) << name;
+    EXPECT_EQ(ea.linkage, eb.linkage) << name;
+    const int t = ea.attribute_column("sample");
+    EXPECT_EQ(ea.attributes.col(t), eb.attributes.col(t)) << name;
+  }
+  // merging a knot twice is an error and writes nothing
+  expect_bad_input("merge " + dir + "/s1.h5 " + dir + "/all.h5 -o " + dir + "/bad.h5", "is in both");
+  EXPECT_FALSE(fs::exists(dir + "/bad.h5"));
+  fs::remove_all(dir);
+}
+
+// Issue 8: an unknown knot, an unwritable output, an existing data set with a
+// different material or n: a clear error, nothing overwritten.
+TEST(DatasetCli, BadInputOverwritesNothing) {
+  const std::string dir = temp_dir("ds_bad");
+  const std::string file = dir + "/d.h5";
+  ASSERT_EQ(run("explore 3_1 --samples 2" + kSmall + "-o " + file).status, 0);
+  const std::string before = slurp(file);
+  expect_bad_input("explore 13_7 --samples 2" + kSmall + "-o " + file, "unknown knot '13_7'");
+  expect_bad_input("explore 4_1 --samples 2 -n 100 --radius 0.1 --quiet -o " + file, "radius 0.2 vs 0.1");
+  expect_bad_input("explore 4_1 --samples 2 -n 120 --no-stiffness --quiet -o " + file, "vertices 100 vs 120");
+  expect_bad_input("explore 4_1 --samples 2" + kSmall + "-o /nonexistent-folder/d.h5", "does not exist");
+  expect_bad_input("explore 4_1 --samples 2 --adaptive" + kSmall + "-o " + file, "exclude each other");
+  expect_bad_input("dataset --max-crossings 2" + kSmall + "-o " + file, "between 3 and 12");
+  expect_bad_input("dataset --names 3_1 --shard 3/2" + kSmall + "-o " + file, "1 <= I <= N");
+  EXPECT_EQ(slurp(file), before);
+  // a second explore of the same knot is a no-op; another knot extends the file
+  const auto again = run("explore 3_1 --samples 2" + kSmall + "-o " + file + " --json");
+  ASSERT_EQ(again.status, 0);
+  EXPECT_EQ(again.json()["skipped"], true);
+  ASSERT_EQ(run("explore 4_1 --samples 2" + kSmall + "-o " + file).status, 0);
+  EXPECT_EQ(ek::DatasetReader(file).knot_names(), (std::vector<std::string>{"3_1", "4_1"}));
+  fs::remove_all(dir);
+}

@@ -1,0 +1,127 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+
+#include "ek/core/errors.hpp"
+#include "ek/dataset/run.hpp"
+#include "ek/knots/alexander.hpp"
+
+using namespace ek;
+
+TEST(Adaptive, ImportanceScoreByHand) {
+  // One earlier state; a batch of two: the first repeats the earlier state
+  // (similarity 1), the second is new (similarity 0.7 < 1 - δ with δ = 0.1)
+  // at twice the minimum energy: S = max(0·1, 1·0.5) = 0.5.
+  Eigen::MatrixXd sim(2, 3);
+  sim << 1.0, 0.0, 0.0,  //
+      0.7, 0.6, 0.0;
+  EXPECT_DOUBLE_EQ(importance_score(sim, 1, {1.0, 2.0}, 1.0, 0.1), 0.5);
+  // a state at distance 0.05 = δ/2 from the nearest earlier one, at the minimum energy: 0.5
+  Eigen::MatrixXd near(1, 3);
+  near << 0.95, 0.2, 1.0;  // the last column (itself) is ignored
+  EXPECT_NEAR(importance_score(near, 2, {3.0}, 3.0, 0.1), 0.5, 1e-12);
+  // nothing new: 0
+  Eigen::MatrixXd same(1, 2);
+  same << 1.0, 1.0;
+  EXPECT_DOUBLE_EQ(importance_score(same, 1, {1.0}, 1.0, 0.1), 0.0);
+  // the first batch: no earlier state, its lowest state is new at the minimum: 1
+  Eigen::MatrixXd first(2, 2);
+  first << 1.0, 0.0, 0.99, 1.0;
+  EXPECT_DOUBLE_EQ(importance_score(first, 0, {1.0, 1.5}, 1.0, 0.1), 1.0);
+  EXPECT_THROW(importance_score(first, 1, {1.0, 1.5}, 1.0, 0.1), std::invalid_argument);
+}
+
+TEST(Adaptive, SeedsDependOnNameAndRunSeed) {
+  EXPECT_NE(knot_seed(1, "3_1"), knot_seed(1, "4_1"));
+  EXPECT_NE(knot_seed(1, "3_1"), knot_seed(2, "3_1"));
+  EXPECT_EQ(knot_seed(7, "12a_1019"), knot_seed(7, "12a_1019"));
+}
+
+TEST(Pipeline, ExploreKnotStoresRunsEquilibriaAndClusters) {
+  ExploreOptions o;
+  o.sampling.vertices = 100;
+  o.samples = 6;
+  o.jobs = 2;
+  const KnotRecord& k = KnotTable::global().at("5_2");
+  const KnotEntry e = explore_knot(k, o);
+  EXPECT_EQ(e.runs.size(), 6u);
+  EXPECT_EQ(e.samples_used, 6);
+  EXPECT_EQ(e.alexander, alexander(*k.pd).coefficients);
+  int stable = 0;
+  for (const auto& r : e.runs) {
+    EXPECT_TRUE(r.alexander_preserved);
+    if (r.status == "converged-stable") {
+      ASSERT_GE(r.equilibrium, 0);
+      ++stable;
+    } else {
+      EXPECT_EQ(r.equilibrium, -1);
+    }
+  }
+  ASSERT_EQ(static_cast<int>(e.equilibria.size()), stable);
+  ASSERT_GT(stable, 0);
+  ASSERT_EQ(e.attributes.rows(), stable);
+  ASSERT_EQ(e.attributes.cols(), static_cast<Eigen::Index>(dataset_attribute_names().size()));
+  EXPECT_TRUE(e.attributes.allFinite());
+  for (const auto& P : e.equilibria) {
+    EXPECT_EQ(P.rows(), 100);
+    EXPECT_EQ(alexander(P), alexander(*k.pd));  // every stored equilibrium keeps the knot type
+  }
+  // Milnor: total curvature above 2π · bridge index for every equilibrium
+  const int tc = e.attribute_column("total_curvature");
+  for (Eigen::Index i = 0; i < e.attributes.rows(); ++i) EXPECT_GT(e.attributes(i, tc), 2 * M_PI * 2);
+  ASSERT_EQ(e.similarity.rows(), stable);
+  EXPECT_LT((e.similarity - e.similarity.transpose()).cwiseAbs().maxCoeff(), 1e-12);
+  for (int i = 0; i < stable; ++i) EXPECT_DOUBLE_EQ(e.similarity(i, i), 1.0);
+  EXPECT_EQ(e.linkage.rows(), stable - 1);
+}
+
+TEST(Pipeline, AdaptiveSamplingStopsAndRecordsScores) {
+  ExploreOptions o;
+  o.sampling.vertices = 100;
+  o.adaptive = true;
+  o.initial_samples = 4;
+  o.batch_samples = 2;
+  o.max_samples = 10;
+  o.jobs = 2;
+  const KnotEntry e = explore_knot(KnotTable::global().at("4_1"), o);
+  ASSERT_FALSE(e.score_history.empty());
+  EXPECT_EQ(e.samples_used, 4 + 2 * (static_cast<int>(e.score_history.size()) - 1));
+  EXPECT_LE(e.samples_used, 10);
+  for (double S : e.score_history) {
+    EXPECT_GE(S, 0.0);
+    EXPECT_LE(S, 1.0);
+  }
+  // stopped because of the score or the cap
+  EXPECT_TRUE(e.score_history.back() <= o.score_threshold || e.samples_used == o.max_samples);
+  for (size_t b = 0; b + 1 < e.score_history.size(); ++b) EXPECT_GT(e.score_history[b], o.score_threshold);
+}
+
+TEST(Pipeline, SameSeedSameEquilibriaWhateverTheJobs) {
+  ExploreOptions o;
+  o.sampling.vertices = 100;
+  o.samples = 4;
+  o.stiffness = false;
+  o.jobs = 1;
+  const KnotEntry a = explore_knot(KnotTable::global().at("3_1"), o);
+  o.jobs = 3;
+  const KnotEntry b = explore_knot(KnotTable::global().at("3_1"), o);
+  ASSERT_EQ(a.equilibria.size(), b.equilibria.size());
+  for (size_t i = 0; i < a.equilibria.size(); ++i) EXPECT_EQ(a.equilibria[i], b.equilibria[i]);
+  o.seed = 2;
+  const KnotEntry c = explore_knot(KnotTable::global().at("3_1"), o);
+  ASSERT_FALSE(c.runs.empty());
+  EXPECT_NE(c.runs[0].seed, a.runs[0].seed);
+}
+
+TEST(Pipeline, BadOptionsAreInputErrors) {
+  ExploreOptions o;
+  o.sampling.vertices = 101;  // lattice polygons have an even number of edges
+  EXPECT_THROW(o.validate(), InputError);
+  o = ExploreOptions{};
+  o.jobs = 0;
+  EXPECT_THROW(o.validate(), InputError);
+  EXPECT_THROW(parse_shard("3/2"), InputError);
+  EXPECT_THROW(parse_shard("a/b"), InputError);
+  EXPECT_EQ(parse_shard("2/8"), std::make_pair(1, 8));
+}
