@@ -125,3 +125,31 @@ TEST(Pipeline, BadOptionsAreInputErrors) {
   EXPECT_THROW(parse_shard("a/b"), InputError);
   EXPECT_EQ(parse_shard("2/8"), std::make_pair(1, 8));
 }
+
+TEST(Pipeline, AdaptiveRunIsAPrefixOfTheFixedRunAndReplayAgrees) {
+  ExploreOptions fixed;
+  fixed.sampling.vertices = 100;
+  fixed.samples = 10;
+  fixed.stiffness = false;
+  fixed.jobs = 2;
+  const KnotRecord& k = KnotTable::global().at("4_1");
+  const KnotEntry full = explore_knot(k, fixed);
+  ExploreOptions adaptive = fixed;
+  adaptive.adaptive = true;
+  adaptive.initial_samples = 4;
+  adaptive.batch_samples = 2;
+  adaptive.max_samples = 10;
+  adaptive.score_threshold = 0.0;  // any novelty continues: exercises several batches
+  const KnotEntry a = explore_knot(k, adaptive);
+  ASSERT_LE(a.samples_used, 10);
+  for (int s = 0; s < a.samples_used; ++s) {
+    EXPECT_EQ(a.runs[s].status, full.runs[s].status) << s;
+    if (a.runs[s].equilibrium >= 0) {
+      EXPECT_EQ(a.equilibria[a.runs[s].equilibrium], full.equilibria[full.runs[s].equilibrium]) << s;
+    }
+  }
+  const AdaptiveReplay replay = replay_adaptive(full, adaptive);
+  EXPECT_EQ(replay.samples_used, a.samples_used);
+  ASSERT_EQ(replay.score_history.size(), a.score_history.size());
+  for (size_t b = 0; b < a.score_history.size(); ++b) EXPECT_DOUBLE_EQ(replay.score_history[b], a.score_history[b]);
+}

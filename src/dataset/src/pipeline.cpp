@@ -117,6 +117,10 @@ DatasetMetadata dataset_metadata(const ExploreOptions& o) {
   return m;
 }
 
+std::uint64_t sample_seed(std::uint64_t knot_seed, int sample) {
+  return splitmix64(knot_seed + 0x632BE59BD9B4E019ULL * static_cast<std::uint64_t>(sample + 1));
+}
+
 std::uint64_t knot_seed(std::uint64_t run_seed, const std::string& name) {
   std::uint64_t h = 1469598103934665603ULL;  // FNV-1a
   for (char c : name) {
@@ -164,6 +168,59 @@ void cluster_entry(KnotEntry& e, const SimilarityOptions& options) {
   e.linkage = complete_linkage_from_similarity(e.similarity).linkage_matrix();
 }
 
+AdaptiveScorer::AdaptiveScorer(const ExploreOptions& o)
+    : engine_(o.sampling.vertices, o.similarity), novelty_distance_(o.novelty_distance) {}
+
+double AdaptiveScorer::add_batch(const std::vector<std::pair<const Points*, double>>& stable) {
+  const int earlier = static_cast<int>(spectra_.size());
+  std::vector<SignatureSpectrum> batch;
+  std::vector<double> energies;
+  for (const auto& [P, E] : stable) {
+    batch.push_back(engine_.spectrum(*P));
+    energies.push_back(E);
+    min_energy_ = std::min(min_energy_, E);
+  }
+  double S = 0.0;
+  if (!batch.empty()) {
+    std::vector<SignatureSpectrum> columns = spectra_;
+    columns.insert(columns.end(), batch.begin(), batch.end());
+    S = importance_score(engine_.cross_matrix(batch, columns), earlier, energies, min_energy_, novelty_distance_);
+  }
+  spectra_.insert(spectra_.end(), batch.begin(), batch.end());
+  return S;
+}
+
+AdaptiveReplay replay_adaptive(const KnotEntry& fixed, const ExploreOptions& o) {
+  const int available = static_cast<int>(fixed.runs.size());
+  const int energy_col = fixed.equilibria.empty() ? -1 : fixed.attribute_column("energy");
+  AdaptiveScorer scorer(o);
+  auto score = [&](int begin, int end) {
+    std::vector<std::pair<const Points*, double>> stable;
+    for (int k = begin; k < end; ++k) {
+      const RunRecord& r = fixed.runs[static_cast<size_t>(k)];
+      require(r.sample == k, "replay_adaptive: runs must be in sample order");
+      if (r.equilibrium >= 0)
+        stable.emplace_back(&fixed.equilibria[static_cast<size_t>(r.equilibrium)],
+                            fixed.attributes(r.equilibrium, energy_col));
+    }
+    return scorer.add_batch(stable);
+  };
+  AdaptiveReplay out;
+  int total = std::min(o.initial_samples, available);
+  out.score_history.push_back(score(0, total));
+  while (out.score_history.back() > o.score_threshold && total < o.max_samples) {
+    const int count = std::min(o.batch_samples, o.max_samples - total);
+    if (total + count > available) {
+      out.truncated = true;
+      break;
+    }
+    out.score_history.push_back(score(total, total + count));
+    total += count;
+  }
+  out.samples_used = total;
+  return out;
+}
+
 KnotEntry explore_knot(const KnotRecord& knot, const ExploreOptions& o, const std::string& journal_path,
                        const RunCallback& on_run) {
   o.validate();
@@ -181,16 +238,19 @@ KnotEntry explore_knot(const KnotRecord& knot, const ExploreOptions& o, const st
 
   const LatticeStart start = lattice_start(knot, o.start);
   entry.alexander = start.alexander.coefficients;
+  // Sample k continues the walk from sample k - 1 with its own seed derived
+  // from (knot seed, k): the samples do not depend on how they are batched, so
+  // an adaptive run uses exactly the first samples of a fixed-budget run.
   std::vector<LatticePoints> samples;
-  int batch_index = 0;
   auto generate = [&](int count) {
-    SampleOptions so = o.sampling;
-    so.count = count;
-    so.seed = splitmix64(seed + static_cast<std::uint64_t>(batch_index));
-    const LatticePoints& from = samples.empty() ? start.points : samples.back();
-    SampleBatch b = sample_lattice_polygons(from, so, start.alexander, knot.name);
-    for (auto& s : b.samples) samples.push_back(std::move(s));
-    ++batch_index;
+    for (int c = 0; c < count; ++c) {
+      SampleOptions so = o.sampling;
+      so.count = 1;
+      so.seed = sample_seed(seed, static_cast<int>(samples.size()));
+      const LatticePoints& from = samples.empty() ? start.points : samples.back();
+      SampleBatch b = sample_lattice_polygons(from, so, start.alexander, knot.name);
+      samples.push_back(std::move(b.samples.front()));
+    }
   };
 
   std::mutex mutex;
@@ -204,7 +264,7 @@ KnotEntry explore_knot(const KnotRecord& knot, const ExploreOptions& o, const st
         const size_t t = next.fetch_add(1);
         if (t >= todo.size()) return;
         const int k = todo[t];
-        JournalRun r = run_one(to_points(samples[static_cast<size_t>(k)]), k, seed, o);
+        JournalRun r = run_one(to_points(samples[static_cast<size_t>(k)]), k, sample_seed(seed, k), o);
         std::lock_guard<std::mutex> lock(mutex);
         if (journal) journal->append(r);
         if (on_run) on_run(r.record);
@@ -221,32 +281,14 @@ KnotEntry explore_knot(const KnotRecord& knot, const ExploreOptions& o, const st
     }
   };
 
-  // Adaptive bookkeeping: spectra of the stable equilibria in sample order.
-  SimilarityEngine engine(o.sampling.vertices, o.similarity);
-  std::vector<SignatureSpectrum> spectra;
-  std::vector<double> energies;
-  double min_energy = std::numeric_limits<double>::infinity();
+  AdaptiveScorer scorer(o);
   auto score_batch = [&](int begin, int end) {
-    const int earlier = static_cast<int>(spectra.size());
-    std::vector<SignatureSpectrum> batch;
-    std::vector<double> batch_energy;
+    std::vector<std::pair<const Points*, double>> stable;
     for (int k = begin; k < end; ++k) {
       const JournalRun& r = done.at(k);
-      if (r.positions.rows() == 0) continue;
-      batch.push_back(engine.spectrum(r.positions));
-      batch_energy.push_back(r.energy.total);
-      min_energy = std::min(min_energy, r.energy.total);
+      if (r.positions.rows() > 0) stable.emplace_back(&r.positions, r.energy.total);
     }
-    double S = 0.0;
-    if (!batch.empty()) {
-      std::vector<SignatureSpectrum> columns = spectra;
-      columns.insert(columns.end(), batch.begin(), batch.end());
-      const Eigen::MatrixXd sim = engine.cross_matrix(batch, columns);
-      S = importance_score(sim, earlier, batch_energy, min_energy, o.novelty_distance);
-    }
-    spectra.insert(spectra.end(), batch.begin(), batch.end());
-    energies.insert(energies.end(), batch_energy.begin(), batch_energy.end());
-    return S;
+    return scorer.add_batch(stable);
   };
 
   int total = o.adaptive ? o.initial_samples : o.samples;

@@ -20,13 +20,16 @@
 /// Sampling continues while S > score_threshold (0.1) and stops at
 /// max_samples (500). A batch without any stable equilibrium scores 0.
 ///
-/// Determinism: the samples of a knot come from one seeded walk (seed derived
-/// from the run's seed and the knot's name); each relaxation is sequential and
+/// Determinism: the samples of a knot come from one walk: sample k continues
+/// from sample k - 1 with a seed derived from the run's seed, the knot's name
+/// and k, so an adaptive run uses exactly the first samples of a fixed-budget
+/// run with the same seed; each relaxation is sequential and
 /// deterministic, so the stored equilibria do not depend on the number of
 /// jobs or on thread scheduling (only the order in which runs finish and the
 /// measured seconds do).
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -64,6 +67,9 @@ DatasetMetadata dataset_metadata(const ExploreOptions& options);
 
 /// Seed of a knot's walk: splitmix64 of the run seed and a hash of the name.
 std::uint64_t knot_seed(std::uint64_t run_seed, const std::string& name);
+/// Seed of sample k of a knot: the walk continues from sample k - 1 with
+/// this seed, so sample k depends only on (knot seed, k), not on batching.
+std::uint64_t sample_seed(std::uint64_t knot_seed, int sample);
 
 /// Names of the attribute columns stored per equilibrium.
 const std::vector<std::string>& dataset_attribute_names();
@@ -75,7 +81,33 @@ const std::vector<std::string>& dataset_attribute_names();
 double importance_score(const Eigen::MatrixXd& batch_similarity, int earlier, const std::vector<double>& batch_energies,
                         double minimum_energy, double novelty_distance);
 
-/// Called after every finished run (from the coordinating thread).
+/// The importance score of successive batches (see the file comment): keeps
+/// the signature spectra of every stable equilibrium seen so far.
+class AdaptiveScorer {
+ public:
+  explicit AdaptiveScorer(const ExploreOptions& options);
+  /// Adds a batch of stable equilibria (curve, energy) and returns its score S.
+  double add_batch(const std::vector<std::pair<const Points*, double>>& stable);
+
+ private:
+  SimilarityEngine engine_;
+  std::vector<SignatureSpectrum> spectra_;
+  double min_energy_ = std::numeric_limits<double>::infinity();
+  double novelty_distance_;
+};
+
+/// Where adaptive sampling would stop on the runs of a fixed-budget entry
+/// (its samples are the adaptive run's first samples, see sample_seed()), and
+/// the score after each batch; `truncated` when the fixed run has too few
+/// samples to decide.
+struct AdaptiveReplay {
+  int samples_used = 0;
+  std::vector<double> score_history;
+  bool truncated = false;
+};
+AdaptiveReplay replay_adaptive(const KnotEntry& fixed, const ExploreOptions& options);
+
+/// Called after every finished run (under a lock, from a worker thread).
 using RunCallback = std::function<void(const RunRecord&)>;
 
 /// Samples, relaxes, stores and clusters one knot type. Completed runs are
