@@ -131,6 +131,21 @@ TEST(Alexander, ProjectionCountsMatchBruteForce) {
   }
 }
 
+TEST(Alexander, ProjectionCrossingsOfATorusKnot) {
+  // T(2,5) on a torus about the z axis, seen from above: 5 crossings, all of
+  // one sign, the over strand above the under strand, both on the torus.
+  const Points P = fixtures::torus_knot(300, 2, 5, 2.0, 0.5);
+  bool generic = false;
+  const auto crossings = projection_crossings(P, Vec3(0.01, 0.02, 1.0).normalized(), &generic);
+  ASSERT_TRUE(generic);
+  ASSERT_EQ(crossings.size(), 5u);
+  for (const auto& c : crossings) {
+    EXPECT_EQ(c.sign, crossings.front().sign);
+    EXPECT_GT(c.over.z(), c.under.z());
+    EXPECT_NEAR(c.over.head<2>().norm(), c.under.head<2>().norm(), 0.05);
+  }
+}
+
 TEST(Alexander, SelfIntersectingCurveIsRejected) {
   // A figure-eight curve in the plane through the origin twice at equal height.
   Points P(8, 3);

@@ -167,6 +167,26 @@ int projection_crossing_count(const Points& P, const Vec3& direction) {
   return static_cast<int>(p.crossings.size());
 }
 
+std::vector<ProjectedCrossing> projection_crossings(const Points& P, const Vec3& direction, bool* generic) {
+  Projection p = project(P, direction, 1e-12, false);
+  if (generic) *generic = p.generic;
+  std::vector<ProjectedCrossing> out;
+  if (!p.generic) return out;
+  const int n = static_cast<int>(P.rows());
+  for (const auto& c : p.crossings) {
+    const Vec3 a = P.row(c.seg_a).transpose() + c.s * (P.row((c.seg_a + 1) % n) - P.row(c.seg_a)).transpose();
+    const Vec3 b = P.row(c.seg_b).transpose() + c.t * (P.row((c.seg_b + 1) % n) - P.row(c.seg_b)).transpose();
+    ProjectedCrossing x;
+    x.over = c.a_over ? a : b;
+    x.under = c.a_over ? b : a;
+    x.over_edge = c.a_over ? c.seg_a : c.seg_b;
+    x.under_edge = c.a_over ? c.seg_b : c.seg_a;
+    x.sign = c.sign;
+    out.push_back(x);
+  }
+  return out;
+}
+
 GaussDiagram diagram_from_curve(const Points& P, const ProjectionOptions& options) {
   require(P.rows() >= 3, "diagram_from_curve: need at least 3 vertices");
   require(options.directions >= 1, "diagram_from_curve: need at least one direction");

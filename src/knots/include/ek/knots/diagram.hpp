@@ -53,6 +53,18 @@ GaussDiagram diagram_from_curve(const Points& P, const ProjectionOptions& option
 /// of the projection code against an independent count).
 int projection_crossing_count(const Points& P, const Vec3& direction);
 
+/// One crossing of a projection: where the two strands pass over each other.
+struct ProjectedCrossing {
+  Vec3 over;        ///< point of the over strand (nearer the viewer)
+  Vec3 under;       ///< point of the under strand
+  int over_edge = -1, under_edge = -1;  ///< edges (edge i joins vertex i to i + 1)
+  int sign = 0;     ///< +1 right-handed, -1 left-handed
+};
+
+/// Every crossing of the projection of P along `direction` (viewer at
+/// +direction); empty and `generic` = false when the projection is not generic.
+std::vector<ProjectedCrossing> projection_crossings(const Points& P, const Vec3& direction, bool* generic = nullptr);
+
 /// Simplifies the diagram without changing the knot group's presentation up
 /// to Tietze moves (so every Alexander-type invariant is unchanged):
 ///  - a crossing whose over-arc is its own incoming or outgoing under-arc
