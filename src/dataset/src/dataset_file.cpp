@@ -106,8 +106,14 @@ DatasetWriter::DatasetWriter(const std::string& path, const DatasetMetadata& met
   impl_->path = path;
   impl_->tmp = path + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(counter++);
   impl_->file = h5::create_file(impl_->tmp);
-  write_meta(impl_->file.id(), meta);
-  impl_->knots = h5::create_group(impl_->file.id(), "knots");
+  try {
+    write_meta(impl_->file.id(), meta);
+    impl_->knots = h5::create_group(impl_->file.id(), "knots");
+  } catch (...) {
+    impl_->file.reset();
+    std::remove(impl_->tmp.c_str());
+    throw;
+  }
 }
 
 DatasetWriter::~DatasetWriter() {
@@ -116,7 +122,6 @@ DatasetWriter::~DatasetWriter() {
     impl_->file.reset();
     std::remove(impl_->tmp.c_str());
   }
-  delete impl_;
 }
 
 void DatasetWriter::add(const KnotEntry& k) {
@@ -205,18 +210,14 @@ struct DatasetReader::Impl {
 };
 
 DatasetReader::DatasetReader(const std::string& path) : impl_(new Impl) {
-  try {
-    impl_->path = path;
-    impl_->file = h5::open_file(path, false);
-    impl_->meta = read_meta(impl_->file.id(), path);
-    impl_->names = h5::read_strings(impl_->file.id(), "knot_names");
-  } catch (...) {
-    delete impl_;
-    throw;
-  }
+  // impl_ is a unique_ptr member: a throw below releases it.
+  impl_->path = path;
+  impl_->file = h5::open_file(path, false);
+  impl_->meta = read_meta(impl_->file.id(), path);
+  impl_->names = h5::read_strings(impl_->file.id(), "knot_names");
 }
 
-DatasetReader::~DatasetReader() { delete impl_; }
+DatasetReader::~DatasetReader() = default;
 
 const DatasetMetadata& DatasetReader::metadata() const { return impl_->meta; }
 std::vector<std::string> DatasetReader::knot_names() const { return impl_->names; }

@@ -22,6 +22,7 @@
 ///
 /// Files are always written to a temporary name and renamed into place.
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -102,7 +103,7 @@ class DatasetWriter {
 
  private:
   struct Impl;
-  Impl* impl_;
+  std::unique_ptr<Impl> impl_;
 };
 
 /// Reads a data-set file. Every problem (not HDF5, wrong format, missing
@@ -120,7 +121,7 @@ class DatasetReader {
 
  private:
   struct Impl;
-  Impl* impl_;
+  std::unique_ptr<Impl> impl_;
 };
 
 }  // namespace ek
