@@ -35,6 +35,8 @@ void ContactOptions::validate() const {
   require(ccd_max_iterations >= 1, "ContactOptions: ccd_max_iterations must be >= 1");
   require(std::isfinite(broad_phase_skin) && broad_phase_skin >= 0.0,
           "ContactOptions: broad_phase_skin must be >= 0 and finite");
+  require(std::isfinite(hessian_margin) && hessian_margin >= 0.0,
+          "ContactOptions: hessian_margin must be >= 0 and finite");
 }
 
 ContactPotential::ContactPotential(CurveTopology topology, ContactOptions options)
@@ -65,14 +67,16 @@ void ContactPotential::update(const Points& x) {
     ++broad_phase_runs_;
   }
   const std::uint64_t previous = structure_;
+  const double margin = options_.hessian_margin;
   active_.clear();
+  near_.clear();
   candidates_ = 0;
   double min_d2 = std::numeric_limits<double>::infinity();
-  std::uint64_t h = mix(0x636f6e74616374ull, static_cast<std::uint64_t>(n_));
-  const double r = 0.5 * dhat;
+  const double r = 0.5 * (dhat + margin);
+  const double near2 = (dhat + margin) * (dhat + margin);
   for (const EdgePair& p : verlet_) {
     const int a1 = broad_.edge_end(p.a), b1 = broad_.edge_end(p.b);
-    if (skin > 0.0) {  // the boxes of the current segments, inflated by d̂/2, must overlap
+    if (skin > 0.0) {  // the boxes of the current segments, inflated by (d̂ + margin)/2, must overlap
       const double *pa0 = x.data() + 3 * p.a, *pa1 = x.data() + 3 * a1, *pb0 = x.data() + 3 * p.b,
                    *pb1 = x.data() + 3 * b1;
       bool overlap = true;
@@ -95,13 +99,45 @@ void ContactPotential::update(const Points& x) {
       c.type = cl.type;
       c.distance = std::sqrt(cl.distance_squared);
       active_.push_back(c);
-      h = mix(h, (static_cast<std::uint64_t>(static_cast<std::uint32_t>(p.a)) << 32) |
-                     static_cast<std::uint32_t>(p.b));
     }
+    if (margin > 0.0 && cl.distance_squared < near2) near_.push_back(p);
   }
   min_distance_ = std::sqrt(min_d2);
-  structure_ = mix(h, active_.size());
-  if (structure_ != previous || pair_blocks_.size() != active_.size()) build_hessian_plan();
+  // The Hessian's pattern: the active set itself (margin 0), or the pairs
+  // within d̂ + margin at the last rebuild, rebuilt when an active pair is
+  // not among them. active_slot_[k]: index of active pair k in pattern_.
+  active_slot_.resize(active_.size());
+  bool covered = margin > 0.0 && have_pattern_;
+  if (covered) {
+    size_t q = 0;
+    for (size_t k = 0; k < active_.size() && covered; ++k) {
+      const EdgePair e{active_[k].edge_a, active_[k].edge_b};
+      while (q < pattern_.size() && pattern_[q] < e) ++q;
+      covered = q < pattern_.size() && pattern_[q] == e;
+      if (covered) active_slot_[k] = static_cast<int>(q);
+    }
+  }
+  if (!covered) {
+    if (margin > 0.0) {
+      pattern_ = near_;
+    } else {
+      pattern_.resize(active_.size());
+      for (size_t k = 0; k < active_.size(); ++k) pattern_[k] = EdgePair{active_[k].edge_a, active_[k].edge_b};
+    }
+    have_pattern_ = true;
+    std::uint64_t h = mix(0x636f6e74616374ull, static_cast<std::uint64_t>(n_));
+    for (const EdgePair& p : pattern_)
+      h = mix(h, (static_cast<std::uint64_t>(static_cast<std::uint32_t>(p.a)) << 32) | static_cast<std::uint32_t>(p.b));
+    structure_ = mix(h, pattern_.size());
+    // every active pair is in the new pattern (in the same sorted order)
+    size_t q = 0;
+    for (size_t k = 0; k < active_.size(); ++k) {
+      const EdgePair e{active_[k].edge_a, active_[k].edge_b};
+      while (pattern_[q] != e) ++q;
+      active_slot_[k] = static_cast<int>(q);
+    }
+  }
+  if (structure_ != previous || pair_blocks_.size() != pattern_.size()) build_hessian_plan();
 }
 
 void ContactPotential::build_hessian_plan() {
@@ -113,10 +149,10 @@ void ContactPotential::build_hessian_plan() {
     bool transposed;
   };
   std::vector<Key> keys;
-  keys.reserve(10 * active_.size());
-  for (size_t p = 0; p < active_.size(); ++p) {
-    const ContactPair& c = active_[p];
-    const int v[4] = {c.a0, c.a1, c.b0, c.b1};
+  keys.reserve(10 * pattern_.size());
+  for (size_t p = 0; p < pattern_.size(); ++p) {
+    const EdgePair& e = pattern_[p];
+    const int v[4] = {e.a, broad_.edge_end(e.a), e.b, broad_.edge_end(e.b)};
     int slot = 0;
     for (int k = 0; k < 4; ++k)
       for (int l = k; l < 4; ++l, ++slot) {
@@ -127,7 +163,7 @@ void ContactPotential::build_hessian_plan() {
   }
   std::sort(keys.begin(), keys.end(), [](const Key& a, const Key& b) { return a.key < b.key; });
   blocks_.clear();
-  pair_blocks_.assign(active_.size(), {});
+  pair_blocks_.assign(pattern_.size(), {});
   for (size_t i = 0; i < keys.size(); ++i) {
     if (i == 0 || keys[i].key != keys[i - 1].key)
       blocks_.emplace_back(static_cast<int>(keys[i].key >> 32), static_cast<int>(keys[i].key & 0xffffffffu));
@@ -169,8 +205,12 @@ void ContactPotential::add_gradient(const Points& x, Eigen::Ref<VecX> g) const {
 }
 
 void ContactPotential::add_hessian(const Points& x, SparseAssembler& A) const {
+  add_hessian(x, A, options_.project_psd);
+}
+
+void ContactPotential::add_hessian(const Points& x, SparseAssembler& A, bool project_psd) const {
   if (x.rows() != n_) require(false, "ContactPotential::add_hessian: wrong number of points");
-  if (active_.empty()) return;
+  if (blocks_.empty()) return;
   const PairBarrierParams params = pair_params();
   const double w = options_.stiffness;
   for (Mat3& B : block_values_) B.setZero();
@@ -178,8 +218,8 @@ void ContactPotential::add_hessian(const Points& x, SparseAssembler& A) const {
   for (size_t p = 0; p < active_.size(); ++p) {
     const ContactPair& c = active_[p];
     edge_edge_barrier_derivatives(row(x, c.a0), row(x, c.a1), row(x, c.b0), row(x, c.b1), params, nullptr, &H, w);
-    if (options_.project_psd) project_to_psd(H);
-    const auto& plan = pair_blocks_[p];
+    if (project_psd) project_to_psd(H);
+    const auto& plan = pair_blocks_[static_cast<size_t>(active_slot_[p])];
     int slot = 0;
     for (int k = 0; k < 4; ++k)
       for (int l = k; l < 4; ++l, ++slot) {
@@ -237,6 +277,33 @@ StepReport ContactPotential::max_step_report(const Points& x, const Points& dx) 
 }
 
 double ContactPotential::max_step(const Points& x, const Points& dx) const { return max_step_report(x, dx).t; }
+
+std::vector<BlockingPair> ContactPotential::blocking_pairs(const Points& x, const Points& dx, double fraction) const {
+  if (x.rows() != n_ || dx.rows() != n_)
+    require(false, "ContactPotential::blocking_pairs: x and dx need " + std::to_string(n_) + " rows");
+  std::vector<BlockingPair> out;
+  const double dhat = options_.dhat;
+  const auto& pairs = ccd_broad_.swept_pairs(x, dx, 0.5 * fraction * dhat);
+  for (const EdgePair& p : pairs) {
+    BlockingPair b;
+    b.a0 = p.a;
+    b.a1 = ccd_broad_.edge_end(p.a);
+    b.b0 = p.b;
+    b.b1 = ccd_broad_.edge_end(p.b);
+    const Vec3 a0 = row(x, b.a0), a1 = row(x, b.a1), b0 = row(x, b.b0), b1 = row(x, b.b1);
+    const EdgeEdgeClosest cl = edge_edge_closest(a0, a1, b0, b1);
+    edge_edge_closest_parameters(a0, a1, b0, b1, cl.type, &b.s, &b.t);
+    const Vec3 w = (a0 + b.s * (a1 - a0)) - (b0 + b.t * (b1 - b0));
+    b.distance = w.norm();
+    if (!(b.distance > 0.0)) continue;
+    b.normal = w / b.distance;
+    const Vec3 da = (1.0 - b.s) * row(dx, b.a0) + b.s * row(dx, b.a1);
+    const Vec3 db = (1.0 - b.t) * row(dx, b.b0) + b.t * row(dx, b.b1);
+    b.rate = b.normal.dot(da - db);
+    if (b.rate < 0.0 && b.distance + b.rate < fraction * std::min(b.distance, dhat)) out.push_back(b);
+  }
+  return out;
+}
 
 double max_step(const Points& x, const Points& dx, const CurveTopology& topology, const ContactOptions& options) {
   return ContactPotential(topology, options).max_step(x, dx);

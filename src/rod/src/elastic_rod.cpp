@@ -185,7 +185,9 @@ VecX ElasticRod::gradient(EnergyTerm term) const {
   return g;
 }
 
-void ElasticRod::add_hessian(SparseAssembler& A, EnergyTerm term) const {
+void ElasticRod::add_hessian(SparseAssembler& A, EnergyTerm term) const { add_hessian(A, term, false); }
+
+void ElasticRod::add_hessian(SparseAssembler& A, EnergyTerm term, bool project_stretch) const {
   const bool stretch = term == EnergyTerm::Stretch || term == EnergyTerm::All;
   const bool bend = term == EnergyTerm::Bend || term == EnergyTerm::All;
   const bool twist = (term == EnergyTerm::Twist || term == EnergyTerm::All) && has_theta();
@@ -210,7 +212,8 @@ void ElasticRod::add_hessian(SparseAssembler& A, EnergyTerm term) const {
   }
   for (int j = 0; j < n_; ++j) {
     if (stretch)
-      Kd[static_cast<size_t>(j)] = rod::stretch_hessian(e_.col(j), rest_len_(j), EA);
+      Kd[static_cast<size_t>(j)] = project_stretch ? rod::stretch_hessian_projected(e_.col(j), rest_len_(j), EA)
+                                                   : rod::stretch_hessian(e_.col(j), rest_len_(j), EA);
     else
       Kd[static_cast<size_t>(j)].setZero();
     Ko[static_cast<size_t>(j)].setZero();

@@ -49,6 +49,13 @@ Mat3 stretch_hessian(const Vec3& e, double rest_length, double EA) {
   return H;
 }
 
+Mat3 stretch_hessian_projected(const Vec3& e, double rest_length, double EA) {
+  const double len = e.norm();
+  if (len >= rest_length) return stretch_hessian(e, rest_length, EA);
+  const Vec3 t = e / len;
+  return (EA / rest_length) * (t * t.transpose());
+}
+
 // ---------------------------------------------------------------------------
 // Bending
 

@@ -1,40 +1,213 @@
 #include "ek/solver/cholesky.hpp"
 
+#include <cholmod.h>
+
+#include <chrono>
 #include <cmath>
+#include <string>
 
 #include "ek/core/errors.hpp"
 
 namespace ek {
 
-CholeskySolver::CholeskySolver(CholeskyMode mode) {
-  chol_.setMode(mode == CholeskyMode::Simplicial ? Eigen::CholmodSimplicialLLt : Eigen::CholmodSupernodalLLt);
-  chol_.cholmod().print = 0;            // failures are expected (indefinite H) and handled: no stderr noise
-  chol_.cholmod().error_handler = nullptr;
-  chol_.cholmod().quick_return_if_not_posdef = 1;  // stop at the first non-positive pivot
+struct CholeskySolver::Cholmod {
+  cholmod_common c;
+  cholmod_factor* L = nullptr;
+  cholmod_dense* X = nullptr;  // solve2 workspaces, reused
+  cholmod_dense* Y = nullptr;
+  cholmod_dense* E = nullptr;
+  Cholmod() {
+    cholmod_start(&c);
+    c.print = 0;                         // failures are expected (indefinite H) and handled: no stderr noise
+    c.error_handler = nullptr;
+    c.quick_return_if_not_posdef = 1;    // stop at the first non-positive pivot
+    c.final_ll = 1;                      // LL' directly (no LDL' and conversion)
+    c.final_asis = 1;
+  }
+  ~Cholmod() {
+    if (L) cholmod_free_factor(&L, &c);
+    if (X) cholmod_free_dense(&X, &c);
+    if (Y) cholmod_free_dense(&Y, &c);
+    if (E) cholmod_free_dense(&E, &c);
+    cholmod_finish(&c);
+  }
+};
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+/// A cholmod_sparse header over compressed column arrays (no copy).
+cholmod_sparse view(int n, const int* p, const int* i, const double* x, int stype) {
+  cholmod_sparse A{};
+  A.nrow = A.ncol = static_cast<size_t>(n);
+  A.nzmax = static_cast<size_t>(p[n]);
+  A.p = const_cast<int*>(p);
+  A.i = const_cast<int*>(i);
+  A.nz = nullptr;
+  A.x = const_cast<double*>(x);
+  A.z = nullptr;
+  A.stype = stype;
+  A.itype = CHOLMOD_INT;
+  A.xtype = x ? CHOLMOD_REAL : CHOLMOD_PATTERN;
+  A.dtype = CHOLMOD_DOUBLE;
+  A.sorted = 1;
+  A.packed = 1;
+  return A;
+}
+
+}  // namespace
+
+CholeskySolver::CholeskySolver(CholeskyMode mode) : CholeskySolver(CholeskyOptions{mode}) {}
+
+CholeskySolver::CholeskySolver(const CholeskyOptions& options) : options_(options), cm_(std::make_unique<Cholmod>()) {
+  require(options.reorder_fill_growth >= 0.0, "CholeskySolver: reorder_fill_growth must be >= 0");
+}
+
+CholeskySolver::~CholeskySolver() = default;
+
+long long CholeskySolver::factor_nonzeros() const {
+  const cholmod_factor* L = cm_->L;
+  if (!L) return 0;
+  const int* count = static_cast<const int*>(L->ColCount);
+  long long nnz = 0;
+  for (size_t j = 0; j < L->n; ++j) nnz += count[j];
+  return nnz;
+}
+
+void CholeskySolver::order(const Matrix& upper) {
+  // AMD with elimination-tree postordering (CHOLMOD's default analysis) on the pattern of H.
+  const int n = static_cast<int>(upper.rows());
+  cholmod_sparse A = view(n, upper.outerIndexPtr(), upper.innerIndexPtr(), nullptr, 1);
+  cholmod_common& c = cm_->c;
+  c.nmethods = 1;
+  c.method[0].ordering = CHOLMOD_AMD;
+  c.postorder = 1;
+  c.supernodal = CHOLMOD_SIMPLICIAL;
+  cholmod_factor* L = cholmod_analyze(&A, &c);
+  require(L != nullptr, "CholeskySolver: CHOLMOD analysis failed (status " + std::to_string(c.status) + ")");
+  const int* P = static_cast<const int*>(L->Perm);
+  perm_.assign(P, P + n);
+  cholmod_free_factor(&L, &c);
+  inverse_.resize(static_cast<size_t>(n));
+  for (int k = 0; k < n; ++k) inverse_[static_cast<size_t>(perm_[static_cast<size_t>(k)])] = k;
+  ++ordering_count_;
+}
+
+void CholeskySolver::build_permuted_pattern(const Matrix& upper) {
+  // Entry (i, j), i <= j, of H goes to (a, b) = (inverse[i], inverse[j]) of B,
+  // stored at (min, max) for the upper triangle (simplicial) or (max, min) for
+  // the lower one (supernodal: CHOLMOD then factorises it without transposing).
+  // Two counting passes (by row, then stably by column) sort every column.
+  const int n = static_cast<int>(upper.rows());
+  const int nnz = static_cast<int>(upper.nonZeros());
+  const bool lower = options_.mode == CholeskyMode::Supernodal;
+  const int* p = upper.outerIndexPtr();
+  const int* idx = upper.innerIndexPtr();
+  std::vector<int> row(static_cast<size_t>(nnz)), col(static_cast<size_t>(nnz));
+  for (int j = 0; j < n; ++j)
+    for (int k = p[j]; k < p[j + 1]; ++k) {
+      const int a = inverse_[static_cast<size_t>(idx[k])], b = inverse_[static_cast<size_t>(j)];
+      const int lo = std::min(a, b), hi = std::max(a, b);
+      row[static_cast<size_t>(k)] = lower ? hi : lo;
+      col[static_cast<size_t>(k)] = lower ? lo : hi;
+    }
+  std::vector<int> count(static_cast<size_t>(n) + 1, 0), by_row(static_cast<size_t>(nnz));
+  for (int k = 0; k < nnz; ++k) ++count[static_cast<size_t>(row[static_cast<size_t>(k)]) + 1];
+  for (int r = 0; r < n; ++r) count[static_cast<size_t>(r) + 1] += count[static_cast<size_t>(r)];
+  for (int k = 0; k < nnz; ++k) by_row[static_cast<size_t>(count[static_cast<size_t>(row[static_cast<size_t>(k)])]++)] = k;
+  Bp_.assign(static_cast<size_t>(n) + 1, 0);
+  for (int k = 0; k < nnz; ++k) ++Bp_[static_cast<size_t>(col[static_cast<size_t>(k)]) + 1];
+  for (int c = 0; c < n; ++c) Bp_[static_cast<size_t>(c) + 1] += Bp_[static_cast<size_t>(c)];
+  std::vector<int> next(Bp_.begin(), Bp_.end() - 1);
+  Bi_.resize(static_cast<size_t>(nnz));
+  Bx_.assign(static_cast<size_t>(nnz), 0.0);
+  slot_.resize(static_cast<size_t>(nnz));
+  for (int k : by_row) {
+    const int dst = next[static_cast<size_t>(col[static_cast<size_t>(k)])]++;
+    Bi_[static_cast<size_t>(dst)] = row[static_cast<size_t>(k)];
+    slot_[static_cast<size_t>(k)] = dst;
+  }
+}
+
+void CholeskySolver::analyse(const Matrix& upper) {
+  const int n = static_cast<int>(upper.rows());
+  const bool fresh = !options_.reuse_ordering || reorder_ || static_cast<int>(perm_.size()) != n;
+  if (fresh) order(upper);
+  build_permuted_pattern(upper);
+  cholmod_common& c = cm_->c;
+  if (cm_->L) cholmod_free_factor(&cm_->L, &c);
+  cholmod_sparse B = view(n, Bp_.data(), Bi_.data(), nullptr,
+                          options_.mode == CholeskyMode::Supernodal ? -1 : 1);
+  c.nmethods = 1;
+  c.method[0].ordering = CHOLMOD_NATURAL;
+  c.postorder = 0;
+  c.supernodal = options_.mode == CholeskyMode::Supernodal ? CHOLMOD_SUPERNODAL : CHOLMOD_SIMPLICIAL;
+  cm_->L = cholmod_analyze(&B, &c);
+  require(cm_->L != nullptr, "CholeskySolver: CHOLMOD analysis failed (status " + std::to_string(c.status) + ")");
+  ++symbolic_count_;
+  const long long fill = factor_nonzeros();
+  reorder_ = false;
+  if (fresh) {
+    ordered_fill_ = fill;
+  } else if (static_cast<double>(fill) > (1.0 + options_.reorder_fill_growth) * static_cast<double>(ordered_fill_)) {
+    reorder_ = true;  // the kept ordering fills too much for this pattern: order afresh
+    analyse(upper);
+  }
 }
 
 bool CholeskySolver::factorize(const Matrix& upper, double shift, std::uint64_t pattern_version) {
-  require(upper.rows() == upper.cols(), "CholeskySolver::factorize: matrix must be square");
-  require(std::isfinite(shift), "CholeskySolver::factorize: shift must be finite");
+  if (upper.rows() != upper.cols()) require(false, "CholeskySolver::factorize: matrix must be square");
+  if (!std::isfinite(shift)) require(false, "CholeskySolver::factorize: shift must be finite");
+  if (!upper.isCompressed()) require(false, "CholeskySolver::factorize: matrix must be compressed");
   const double* v = upper.valuePtr();
-  for (Eigen::Index k = 0; k < upper.nonZeros(); ++k)
-    require(std::isfinite(v[k]), "CholeskySolver::factorize: matrix has a non-finite entry");
-  if (pattern_version != analysed_version_ || upper.rows() != analysed_size_) {
-    chol_.analyzePattern(upper);
+  const Eigen::Index nnz = upper.nonZeros();
+  bool finite = true;
+  for (Eigen::Index k = 0; k < nnz; ++k) finite &= std::isfinite(v[k]);
+  if (!finite) require(false, "CholeskySolver::factorize: matrix has a non-finite entry");
+  ok_ = false;
+  const int n = static_cast<int>(upper.rows());
+  if (n == 0) return ok_ = true;
+  if (pattern_version != analysed_version_ || upper.rows() != analysed_size_ ||
+      static_cast<size_t>(nnz) != slot_.size()) {
+    const auto t0 = Clock::now();
+    analyse(upper);
     analysed_version_ = pattern_version;
     analysed_size_ = upper.rows();
-    ++symbolic_count_;
+    symbolic_seconds_ += std::chrono::duration<double>(Clock::now() - t0).count();
   }
-  chol_.setShift(shift);
-  chol_.factorize(upper);
+  for (Eigen::Index k = 0; k < nnz; ++k) Bx_[static_cast<size_t>(slot_[static_cast<size_t>(k)])] = v[k];
+  cholmod_common& c = cm_->c;
+  cholmod_sparse B = view(n, Bp_.data(), Bi_.data(), Bx_.data(), options_.mode == CholeskyMode::Supernodal ? -1 : 1);
+  double beta[2] = {shift, 0.0};
+  cholmod_factorize_p(&B, beta, nullptr, 0, cm_->L, &c);
   ++numeric_count_;
-  ok_ = (chol_.info() == Eigen::Success);
+  ok_ = c.status == CHOLMOD_OK && cm_->L->minor == cm_->L->n;
   return ok_;
 }
 
 VecX CholeskySolver::solve(const VecX& b) const {
   require(ok_, "CholeskySolver::solve: no successful factorisation");
-  return chol_.solve(b);
+  const Eigen::Index n = analysed_size_;
+  require(b.size() == n, "CholeskySolver::solve: right-hand side has the wrong size");
+  VecX x(n);
+  if (n == 0) return x;
+  work_.resize(n);
+  for (Eigen::Index k = 0; k < n; ++k) work_(k) = b(perm_[static_cast<size_t>(k)]);
+  cholmod_dense rhs{};
+  rhs.nrow = static_cast<size_t>(n);
+  rhs.ncol = 1;
+  rhs.nzmax = static_cast<size_t>(n);
+  rhs.d = static_cast<size_t>(n);
+  rhs.x = work_.data();
+  rhs.z = nullptr;
+  rhs.xtype = CHOLMOD_REAL;
+  rhs.dtype = CHOLMOD_DOUBLE;
+  const bool solved = cholmod_solve2(CHOLMOD_A, cm_->L, &rhs, nullptr, &cm_->X, nullptr, &cm_->Y, &cm_->E, &cm_->c);
+  require(solved, "CholeskySolver::solve: CHOLMOD solve failed");
+  const double* y = static_cast<const double*>(cm_->X->x);
+  for (Eigen::Index k = 0; k < n; ++k) x(perm_[static_cast<size_t>(k)]) = y[k];
+  return x;
 }
 
 }  // namespace ek

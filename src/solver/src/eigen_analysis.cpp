@@ -60,18 +60,22 @@ Eigen::MatrixXd rigid_modes(const Points& positions, int dofs, int theta_begin) 
     require(theta_begin + n <= dofs, "rigid_modes: theta range out of bounds");
     for (int j = 0; j < n; ++j) M(theta_begin + j, 6) = 1.0;
   }
-  // Orthonormalise (a degenerate rotation, e.g. about the axis of a straight
-  // line, gives a zero column: dropped).
-  Eigen::HouseholderQR<Eigen::MatrixXd> qr(M);
-  Eigen::MatrixXd R = qr.matrixQR().topRows(k).triangularView<Eigen::Upper>();
-  Eigen::MatrixXd Q = qr.householderQ() * Eigen::MatrixXd::Identity(dofs, k);
-  std::vector<int> keep;
+  // Orthonormalise by modified Gram-Schmidt, twice (O(dofs·k²); cheap enough
+  // to run every Newton iteration). A degenerate rotation, e.g. about the
+  // axis of a straight line, gives a (numerically) zero column: dropped.
   const double scale = M.colwise().norm().maxCoeff();
-  for (int j = 0; j < k; ++j)
-    if (std::fabs(R(j, j)) > 1e-10 * scale) keep.push_back(j);
-  Eigen::MatrixXd out(dofs, static_cast<Eigen::Index>(keep.size()));
-  for (size_t j = 0; j < keep.size(); ++j) out.col(static_cast<Eigen::Index>(j)) = Q.col(keep[j]);
-  return out;
+  Eigen::MatrixXd out(dofs, k);
+  int kept = 0;
+  for (int j = 0; j < k; ++j) {
+    VecX v = M.col(j);
+    const double norm0 = v.norm();
+    for (int pass = 0; pass < 2; ++pass)
+      for (int i = 0; i < kept; ++i) v -= out.col(i).dot(v) * out.col(i);
+    const double norm = v.norm();
+    if (norm <= 1e-10 * scale || norm <= 1e-8 * norm0) continue;
+    out.col(kept++) = v / norm;
+  }
+  return out.leftCols(kept);
 }
 
 EigenResult smallest_eigenpairs(const Eigen::SparseMatrix<double, Eigen::ColMajor, int>& upper,

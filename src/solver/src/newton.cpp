@@ -26,6 +26,21 @@ std::string to_string(SolverStatus status) {
   return "unknown";
 }
 
+std::string to_string(HessianMode mode) {
+  switch (mode) {
+    case HessianMode::Exact: return "exact";
+    case HessianMode::Hybrid: return "hybrid";
+  }
+  return "unknown";
+}
+
+NewtonOptions NewtonOptions::paper() {
+  NewtonOptions o;
+  o.hessian = HessianMode::Exact;
+  o.remove_rigid_motions = false;
+  return o;
+}
+
 void NewtonOptions::validate() const {
   require(gradient_tolerance > 0.0, "NewtonOptions: gradient_tolerance must be positive");
   require(max_iterations >= 0, "NewtonOptions: max_iterations must be >= 0");
@@ -35,6 +50,10 @@ void NewtonOptions::validate() const {
   require(armijo > 0.0 && armijo < 0.5, "NewtonOptions: armijo must be in (0, 0.5)");
   require(backtrack > 0.0 && backtrack < 1.0, "NewtonOptions: backtrack must be in (0, 1)");
   require(min_step > 0.0 && min_step < 1.0, "NewtonOptions: min_step must be in (0, 1)");
+  require(hybrid_switch >= 1.0 && std::isfinite(hybrid_switch), "NewtonOptions: hybrid_switch must be >= 1");
+  require(max_shift_attempts >= 1, "NewtonOptions: max_shift_attempts must be >= 1");
+  require(max_lazy_steps >= 0, "NewtonOptions: max_lazy_steps must be >= 0");
+  require(max_expansion >= 1.0 && expansion_ratio > 0.0, "NewtonOptions: max_expansion must be >= 1, expansion_ratio > 0");
 }
 
 NewtonReport minimize(Objective& f, const NewtonOptions& o) {
@@ -54,6 +73,8 @@ NewtonReport minimize(Objective& f, const NewtonOptions& o) {
     report.energy = E;
     report.symbolic_factorizations = cholesky.symbolic_count();
     report.numeric_factorizations = cholesky.numeric_count();
+    report.orderings = cholesky.ordering_count();
+    report.time_symbolic = cholesky.symbolic_seconds();
     report.seconds = since(t_start);
     return report;
   };
@@ -65,15 +86,15 @@ NewtonReport minimize(Objective& f, const NewtonOptions& o) {
   // used (infinity if every attempt failed); `base_ok` tells whether the
   // factorisation at exactly ε·λ_min succeeded (H + ε λ_min I positive
   // definite), which is decided here only when that shift was tried.
-  double start_shift = base_shift;
-  auto factorize = [&](double first, bool& base_ok, bool& base_tried) {
+  double start_shift = base_shift, last_shift = base_shift;
+  int backoff = 0, wait = 0;
+  auto factorize = [&](double first, bool& base_ok) {
     const auto t0 = Clock::now();
     double shift = first;
     base_ok = false;
-    base_tried = (first <= base_shift);
     for (int attempt = 0; attempt < o.max_shift_attempts; ++attempt) {
       if (cholesky.factorize(assembler.matrix(), shift, assembler.pattern_version())) {
-        base_ok = base_tried && attempt == 0;
+        base_ok = first <= base_shift && attempt == 0;
         report.time_factorization += since(t0);
         report.final_shift = shift;
         return shift;
@@ -84,78 +105,142 @@ NewtonReport minimize(Objective& f, const NewtonOptions& o) {
     return std::numeric_limits<double>::infinity();
   };
 
+  bool have_factor = false;  // the factorisation of an earlier iterate's Hessian may be reused
+  bool lazy_allowed = false;
+  int lazy_run = 0;
+  double shift = base_shift;
   for (;;) {
     auto t0 = Clock::now();
-    VecX g = f.gradient();
-    const bool near = g.norm() <= o.gradient_tolerance;
-    f.assemble_hessian(assembler, near);
+    const VecX g = f.gradient();
     report.time_assembly += since(t0);
     const double gnorm = g.norm();
     report.gradient_norm = gnorm;
     require(std::isfinite(gnorm), "minimize: the gradient is not finite");
+    const bool converged = gnorm <= o.gradient_tolerance;
+    const bool exact = o.hessian == HessianMode::Exact || gnorm <= o.hybrid_switch * o.gradient_tolerance;
+    const bool lazy = !exact && have_factor && lazy_allowed && lazy_run < o.max_lazy_steps;
 
-    bool psd = false, base_tried = false;
-    double shift = factorize(gnorm <= o.gradient_tolerance ? base_shift : start_shift, psd, base_tried);
-    if (!std::isfinite(shift)) return finish(SolverStatus::Stalled);
-    start_shift = std::max(base_shift, shift / o.shift_growth);
-    report.hessian_psd = psd;
-
-    if (gnorm <= o.gradient_tolerance) {
-      if (psd) return finish(SolverStatus::ConvergedStable);
-      if (o.stop_at_critical_point) return finish(SolverStatus::ConvergedUnstable);
-      if (report.saddle_escapes >= o.max_saddle_escapes) return finish(SolverStatus::Stalled);
-      // Leave the saddle along the eigenvector of the most negative eigenvalue.
-      const auto te = Clock::now();
-      EigenOptions eo;
-      eo.count = 1;
-      eo.exclude_rigid = false;
-      const EigenResult eig = smallest_eigenpairs(assembler.matrix(), Eigen::MatrixXd(), base_shift, eo);
-      report.time_eigen += since(te);
-      if (eig.converged) report.smallest_eigenvalue = eig.values(0);
-      if (!eig.converged || eig.values(0) >= 0.0) {
-        // The factorisation failed only by a hair: treat as stable within the shift.
-        return finish(o.stop_at_critical_point ? SolverStatus::ConvergedUnstable : SolverStatus::ConvergedStable);
+    if (lazy) {
+      ++lazy_run;
+      ++report.lazy_steps;
+    } else {
+      t0 = Clock::now();
+      f.assemble_hessian(assembler, exact);
+      report.time_assembly += since(t0);
+      bool psd = false;
+      const double first = converged || !o.shift_warm_start ? base_shift : start_shift;
+      shift = factorize(first, psd);
+      if (!std::isfinite(shift)) return finish(SolverStatus::Stalled);
+      // Warm start: next time try one factor lower, unless that level has
+      // just failed; then wait 1, 2, 4, ... factorisations before retrying
+      // it (a shift that stays needed costs no failed attempts).
+      if (shift > first) {
+        backoff = std::min(2 * backoff + 1, 64);
+        wait = backoff;
+      } else if (shift < last_shift) {
+        backoff = 0;
       }
-      VecX v = eig.vectors.col(0);
-      if (g.dot(v) > 0.0) v = -v;
-      const auto tc = Clock::now();
-      double t = std::min(1.0, f.max_step(x, v));
-      report.time_collision += since(tc);
-      bool moved = false;
-      const auto tl = Clock::now();
-      for (; t >= o.min_step; t *= o.backtrack) {
-        const VecX trial = x + t * v;
-        f.set_dofs(trial);
-        ++report.line_search_trials;
-        const double Et = f.energy();
-        if (std::isfinite(Et) && Et < E) {
-          x = trial;
-          E = Et;
-          moved = true;
-          break;
+      last_shift = shift;
+      if (wait > 0) {
+        --wait;
+        start_shift = shift;
+      } else {
+        start_shift = std::max(base_shift, shift / o.shift_growth);
+      }
+      report.hessian_psd = psd;
+      have_factor = true;
+      lazy_run = 0;
+
+      if (converged) {
+        if (psd) return finish(SolverStatus::ConvergedStable);
+        if (o.stop_at_critical_point) return finish(SolverStatus::ConvergedUnstable);
+        if (report.saddle_escapes >= o.max_saddle_escapes) return finish(SolverStatus::Stalled);
+        // Leave the saddle along the eigenvector of the most negative eigenvalue.
+        const auto te = Clock::now();
+        EigenOptions eo;
+        eo.count = 1;
+        eo.exclude_rigid = false;
+        const EigenResult eig = smallest_eigenpairs(assembler.matrix(), Eigen::MatrixXd(), base_shift, eo);
+        report.time_eigen += since(te);
+        if (eig.converged) report.smallest_eigenvalue = eig.values(0);
+        if (!eig.converged || eig.values(0) >= 0.0) {
+          // The factorisation failed only by a hair: treat as stable within the shift.
+          return finish(o.stop_at_critical_point ? SolverStatus::ConvergedUnstable : SolverStatus::ConvergedStable);
         }
+        VecX v = eig.vectors.col(0);
+        if (g.dot(v) > 0.0) v = -v;
+        const auto tc = Clock::now();
+        double t = std::min(1.0, f.max_step(x, v));
+        report.time_collision += since(tc);
+        bool moved = false;
+        const auto tl = Clock::now();
+        for (; t >= o.min_step; t *= o.backtrack) {
+          const VecX trial = x + t * v;
+          f.set_dofs(trial);
+          ++report.line_search_trials;
+          const double Et = f.energy();
+          if (std::isfinite(Et) && Et < E) {
+            x = trial;
+            E = Et;
+            moved = true;
+            break;
+          }
+        }
+        report.time_line_search += since(tl);
+        if (!moved) {
+          // No step along the direction of negative curvature lowers the
+          // energy by more than its round-off: the negative eigenvalue is
+          // numerical noise on a flat (neutral) mode, and the point is a
+          // minimum to working precision.
+          f.set_dofs(x);
+          report.marginal = true;
+          return finish(SolverStatus::ConvergedStable);
+        }
+        f.accept();
+        ++report.saddle_escapes;
+        ++report.iterations;
+        have_factor = false;
+        if (report.iterations >= o.max_iterations) return finish(SolverStatus::MaxIterations);
+        continue;
       }
-      report.time_line_search += since(tl);
-      if (!moved) {
-        // No step along the direction of negative curvature lowers the
-        // energy by more than its round-off: the negative eigenvalue is
-        // numerical noise on a flat (neutral) mode, and the point is a
-        // minimum to working precision.
-        f.set_dofs(x);
-        report.marginal = true;
-        return finish(SolverStatus::ConvergedStable);
-      }
-      f.accept();
-      ++report.saddle_escapes;
-      ++report.iterations;
-      if (report.iterations >= o.max_iterations) return finish(SolverStatus::MaxIterations);
-      continue;
     }
     if (report.iterations >= o.max_iterations) return finish(SolverStatus::MaxIterations);
 
     t0 = Clock::now();
     VecX d = -cholesky.solve(g);
     report.time_factorization += since(t0);
+    if (exact) ++report.exact_iterations;
+    if (o.constrain_steps && !exact) {
+      const auto tq = Clock::now();
+      std::vector<StepConstraint> C;
+      const VecX d_free = d;
+      for (int round = 0; round < o.max_constraint_rounds; ++round) {
+        const std::vector<StepConstraint> more = f.step_constraints(x, d);
+        if (more.empty()) break;
+        C.insert(C.end(), more.begin(), more.end());
+        const Eigen::Index m = static_cast<Eigen::Index>(C.size());
+        Eigen::MatrixXd Ct = Eigen::MatrixXd::Zero(d.size(), m);
+        for (Eigen::Index k = 0; k < m; ++k)
+          for (int j = 0; j < 12; ++j)
+            if (C[static_cast<size_t>(k)].index[static_cast<size_t>(j)] >= 0)
+              Ct(C[static_cast<size_t>(k)].index[static_cast<size_t>(j)], k) += C[static_cast<size_t>(k)].coefficient[static_cast<size_t>(j)];
+        Eigen::MatrixXd Y(d.size(), m);
+        for (Eigen::Index k = 0; k < m; ++k) Y.col(k) = cholesky.solve(Ct.col(k));
+        Eigen::MatrixXd S = Ct.transpose() * Y;
+        S.diagonal().array() += 1e-12 * S.diagonal().cwiseAbs().maxCoeff();
+        const VecX lambda = S.ldlt().solve(Ct.transpose() * d_free);
+        d = d_free - Y * lambda;
+      }
+      if (!C.empty()) {
+        ++report.constrained_steps;
+        report.step_constraints += static_cast<int>(C.size());
+      }
+      report.time_collision += since(tq);
+    }
+    if (o.remove_rigid_motions) {
+      const Eigen::MatrixXd Q = f.rigid_modes();
+      if (Q.cols() > 0) d -= Q * (Q.transpose() * d);
+    }
     double gd = g.dot(d);
     if (!(gd < 0.0) || !d.allFinite()) {
       d = -g;  // cannot happen for a positive definite shifted H; guard against round-off
@@ -171,6 +256,8 @@ NewtonReport minimize(Objective& f, const NewtonOptions& o) {
     // gradient norm is accepted instead.
     t0 = Clock::now();
     bool accepted = false;
+    const VecX x0 = x;
+    const double E0 = E;
     const double roundoff = 64.0 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::fabs(E));
     for (; t >= o.min_step; t *= o.backtrack) {
       const VecX trial = x + t * d;
@@ -194,15 +281,48 @@ NewtonReport minimize(Objective& f, const NewtonOptions& o) {
         }
       }
     }
+    // Expansion: the full step met the Armijo condition and lowered E by
+    // nearly its first-order prediction (the model overestimates the
+    // curvature along d, as a large shift or a projected Hessian does):
+    // try 2, 4, ... times the step within the collision-free bound while E
+    // keeps decreasing.
+    if (accepted && t == 1.0 && o.max_expansion > 1.0 && E0 - E >= -o.expansion_ratio * gd) {
+      const auto tc = Clock::now();
+      const double T = o.max_expansion;
+      const double t_ext = T * f.max_step(x0, T * d);
+      report.time_collision += since(tc);
+      double tb = 1.0, Eb = E;
+      for (double tt = 2.0; tt <= t_ext && tt <= T; tt *= 2.0) {
+        f.set_dofs(x0 + tt * d);
+        ++report.line_search_trials;
+        const double Et = f.energy();
+        if (!(Et < Eb)) break;
+        tb = tt;
+        Eb = Et;
+      }
+      if (tb > 1.0) {
+        x = x0 + tb * d;
+        E = Eb;
+        t = tb;
+        ++report.expansions;
+      }
+      f.set_dofs(x);
+    }
     report.time_line_search += since(t0);
     if (o.verbose)
-      std::fprintf(stderr, "newton %5d  E %.12g  |g| %.3e  shift %.2e  |d|inf %.2e  ccd %.3e  t %.3e  %s\n",
+      std::fprintf(stderr, "newton %5d  E %.12g  |g| %.3e  shift %.2e  |d|inf %.2e  ccd %.3e  t %.3e  %s %s\n",
                    report.iterations, E, gnorm, shift, d.lpNorm<Eigen::Infinity>(), t_max, accepted ? t : 0.0,
-                   assembler.pattern_changed() ? "pattern" : "");
+                   lazy ? "lazy" : exact ? "exact" : "proj", assembler.pattern_changed() ? "pattern" : "");
     if (!accepted) {
       f.set_dofs(x);
+      if (lazy) {  // the reused factorisation gave no progress: refactorise
+        lazy_allowed = false;
+        continue;
+      }
       return finish(SolverStatus::Stalled);
     }
+    // Reuse the factorisation for the next step only after a full (or expanded) step.
+    lazy_allowed = t >= 1.0;
     f.accept();
     ++report.iterations;
   }

@@ -1,6 +1,8 @@
 #include "ek/solver/relax.hpp"
 
 #include <chrono>
+#include <cstdio>
+#include <cstdlib>
 #include <cmath>
 #include <map>
 #include <mutex>
@@ -17,11 +19,8 @@ namespace {
 /// E_rod + ω E_contact (+ E_slab) over the rod's dofs (positions first).
 class KnotObjective : public Objective {
  public:
-  /// `exact_contact` (optional) is the same contact potential without the
-  /// per-pair PSD projection, used for the exact Hessian.
-  KnotObjective(ElasticRod& rod, ContactPotential& contact, ContactPotential* exact_contact, const PlanaritySlab* slab,
-                double max_rotation)
-      : rod_(rod), contact_(contact), exact_contact_(exact_contact), slab_(slab), max_rotation_(max_rotation) {
+  KnotObjective(ElasticRod& rod, ContactPotential& contact, const PlanaritySlab* slab, double max_rotation)
+      : rod_(rod), contact_(contact), slab_(slab), max_rotation_(max_rotation) {
     contact_.update(rod_.positions());
   }
   void set_slab(const PlanaritySlab* slab) { slab_ = slab; }
@@ -51,26 +50,35 @@ class KnotObjective : public Objective {
     if (slab_) g.head(x.size()) += slab_->gradient(x);
     return g;
   }
+  /// exact = false: the contact pairs' barrier Hessians and the stretching
+  /// Hessians of compressed edges projected to positive semidefinite
+  /// (bending and twisting stay exact; see NewtonOptions::hessian).
   void assemble_hessian(SparseAssembler& A, bool exact) override {
     const Points& x = rod_.positions();
-    ContactPotential* c = &contact_;
-    if (exact && exact_contact_) {
-      exact_contact_->update(x);
-      c = exact_contact_;
-    }
     A.begin(num_dofs());
     A.segment(0, rod_.hessian_structure());
-    rod_.add_hessian(A);
-    A.segment(1, c->hessian_structure());
-    c->add_hessian(x, A);
+    static const int proj = std::getenv("EK_PROJ") ? std::atoi(std::getenv("EK_PROJ")) : 3;  // SCRATCH
+    rod_.add_hessian(A, EnergyTerm::All, !exact && (proj & 1));
+    A.segment(1, contact_.hessian_structure());
+    contact_.add_hessian(x, A, !exact && (proj & 2));
     A.segment(2, slab_ ? 1 : 0);
     if (slab_) slab_->add_hessian(x, A);
     A.end();
+  }
+  Eigen::MatrixXd rigid_modes() override {
+    return ek::rigid_modes(rod_.positions(), rod_.num_dofs(),
+                           rod_.model() == TwistModel::TwistFree ? -1 : 3 * rod_.num_vertices());
   }
   double max_step(const VecX& x, const VecX& dx) override {
     const Eigen::Index m = rod_.positions().size();
     const Points X = as_points(x.head(m)), D = as_points(dx.head(m));
     double t = contact_.max_step(X, D);
+    if (std::getenv("EK_CCDLOG") && t < 1.0) {  // SCRATCH
+      const StepReport r = contact_.max_step_report(X, D);
+      double dmax = 0; for (Eigen::Index i = 0; i < D.rows(); ++i) dmax = std::max(dmax, D.row(i).norm());
+      const double da = (D.row(r.edge_a).norm() + D.row(broad_end(r.edge_a)).norm()) / 2, db = (D.row(r.edge_b).norm() + D.row(broad_end(r.edge_b)).norm()) / 2;
+      std::fprintf(stderr, "ccd t %.3e pair (%d,%d) d0 %.4f floor %.4f |D|max %.3f |D|a %.3f |D|b %.3f cand %d\n", r.t, r.edge_a, r.edge_b, r.start_distance, r.floor, dmax, da, db, r.candidates);
+    }
     if (slab_) t = std::min(t, slab_->max_step(X, D));
     if (rod_.model() != TwistModel::TwistFree) {
       // keep every tangent within max_rotation of its source: |s·de| <= sin(α)|e|
@@ -85,12 +93,30 @@ class KnotObjective : public Objective {
     }
     return t;
   }
+  std::vector<StepConstraint> step_constraints(const VecX& x, const VecX& d) override {
+    static const double rho = std::getenv("EK_BLOCK") ? std::atof(std::getenv("EK_BLOCK")) : 0.5;  // SCRATCH
+    const Eigen::Index m = rod_.positions().size();
+    const Points X = as_points(x.head(m)), D = as_points(d.head(m));
+    std::vector<StepConstraint> out;
+    for (const BlockingPair& b : contact_.blocking_pairs(X, D, rho)) {
+      StepConstraint c;
+      const int v[4] = {b.a0, b.a1, b.b0, b.b1};
+      const double w[4] = {1.0 - b.s, b.s, -(1.0 - b.t), -b.t};
+      for (int k = 0; k < 4; ++k)
+        for (int i = 0; i < 3; ++i) {
+          c.index[static_cast<size_t>(3 * k + i)] = 3 * v[k] + i;
+          c.coefficient[static_cast<size_t>(3 * k + i)] = w[k] * b.normal(i);
+        }
+      out.push_back(c);
+    }
+    return out;
+  }
   void accept() override { rod_.update_reference_frames(); }
+  int broad_end(int e) const { return (e + 1) % rod_.num_vertices(); }
 
  private:
   ElasticRod& rod_;
   ContactPotential& contact_;
-  ContactPotential* exact_contact_;
   const PlanaritySlab* slab_;
   double max_rotation_;
 };
@@ -166,7 +192,8 @@ RelaxResult relax(const Points& curve, const RelaxOptions& options) {
   co.dhat = options.dhat > 0.0 ? options.dhat : 2.0 * mat.radius;
   co.stiffness =
       options.contact_stiffness > 0.0 ? options.contact_stiffness : 1e3 * (mat.young / 2000.0) * r_scale * r_scale * r_scale;
-  co.project_psd = options.project_contact_hessian;
+  if (std::getenv("EK_SKIN")) co.broad_phase_skin = std::atof(std::getenv("EK_SKIN"));  // SCRATCH
+  co.hessian_margin = std::getenv("EK_MARGIN") ? std::atof(std::getenv("EK_MARGIN")) * co.dhat : 0.0;  // SCRATCH
   const double tol = options.tolerance > 0.0 ? options.tolerance : 1e-8 * (EI / kReferenceBendingStiffness) / (edge * edge);
 
   TwistModel model = TwistModel::TwistFree;
@@ -181,10 +208,6 @@ RelaxResult relax(const Points& curve, const RelaxOptions& options) {
   }
   ContactPotential contact(CurveTopology::single(n), co);
   contact.update(curve);
-  ContactOptions exact_co = co;
-  exact_co.project_psd = false;
-  std::optional<ContactPotential> exact_contact;
-  if (co.project_psd) exact_contact.emplace(CurveTopology::single(n), exact_co);
   if (contact.min_distance() <= 0.0) throw InputError("relax: the input curve touches itself");
   std::optional<PlanaritySlab> slab;
   if (options.slab) {
@@ -193,8 +216,7 @@ RelaxResult relax(const Points& curve, const RelaxOptions& options) {
       throw InputError("relax: the input curve is not strictly inside the planarity slab |z| < " +
                        std::to_string(options.slab->half_thickness));
   }
-  KnotObjective objective(rod, contact, exact_contact ? &*exact_contact : nullptr, slab ? &*slab : nullptr,
-                          options.max_tangent_rotation);
+  KnotObjective objective(rod, contact, slab ? &*slab : nullptr, options.max_tangent_rotation);
 
   NewtonOptions no = options.newton;
   no.gradient_tolerance = tol;

@@ -43,6 +43,17 @@
 /// most skin/2 each), so update() re-filters that list instead of rerunning
 /// the broad phase. Newton iterations near convergence move far less.
 ///
+/// Hessian pattern: add_hessian() writes into a fixed set of vertex blocks,
+/// identified by hessian_structure(), so that a solver keeps its symbolic
+/// factorisation while the identifier stays the same. With hessian_margin = 0
+/// the blocks are those of the active pairs and change whenever the active
+/// set does. With hessian_margin > 0 they are those of the "pattern pairs":
+/// the pairs within d̂ + hessian_margin when the pattern was last built; it is
+/// rebuilt (all pairs then within d̂ + margin) only when an active pair is not
+/// a pattern pair, and blocks of inactive pattern pairs are explicit zeros.
+/// Values, energy and gradient are the same either way; pairs approaching
+/// from within the margin then do not change the pattern when they activate.
+///
 /// Not thread-safe: const methods use scratch buffers of the object.
 #include <array>
 #include <cstdint>
@@ -71,6 +82,10 @@ struct ContactOptions {
   double ccd_tolerance = 0.1;   ///< [1] per-pair CCD stops within this fraction of the gap to the floor (ccd.hpp); in (0, 1]
   int ccd_max_iterations = 1000;  ///< [1] per-pair cap on CCD distance evaluations (result stays certified)
   double broad_phase_skin = 0.1;  ///< [length] update() keeps the broad phase's pairs within d̂ + skin while no vertex has moved skin/2 since it ran (0: run it every time)
+  /// [length] Hessian pattern with hysteresis (see "Hessian pattern" above):
+  /// 0 = the pattern is the active set; > 0 = the pairs within d̂ + margin at
+  /// the last rebuild, kept until an active pair falls outside them.
+  double hessian_margin = 0.0;
 
   /// Throws std::invalid_argument naming the first bad field.
   void validate() const;
@@ -82,6 +97,15 @@ struct ContactPair {
   int a0 = -1, a1 = -1, b0 = -1, b1 = -1;  ///< vertex indices of the endpoints
   EdgeEdgeDistanceType type = EdgeEdgeDistanceType::EA_EB;  ///< closest features at update()
   double distance = 0.0;  ///< [length] segment distance at update()
+};
+
+/// A pair that a motion would bring deep into the barrier (blocking_pairs()).
+struct BlockingPair {
+  int a0 = -1, a1 = -1, b0 = -1, b1 = -1;  ///< vertex indices of the two edges
+  double s = 0.0, t = 0.0;  ///< closest points a0 + s (a1 − a0) and b0 + t (b1 − b0) at x
+  Vec3 normal = Vec3::Zero();  ///< unit vector from the closest point on b to the one on a
+  double distance = 0.0;    ///< [length] segment distance at x
+  double rate = 0.0;        ///< [length] normal·(δp_a − δp_b): first-order change of the distance under dx (< 0)
 };
 
 /// Report of one collision-detection query.
@@ -107,7 +131,7 @@ class ContactPotential {
   void update(const Points& x);
   size_t num_active() const { return active_.size(); }
   const std::vector<ContactPair>& active_pairs() const { return active_; }
-  /// Pairs tested by the last update() (boxes within d̂).
+  /// Pairs tested by the last update() (boxes within d̂ + hessian_margin).
   size_t num_candidates() const { return candidates_; }
   /// How many times update() has run the broad phase (the rest reused it).
   size_t num_broad_phase_runs() const { return broad_phase_runs_; }
@@ -123,18 +147,30 @@ class ContactPotential {
   void add_gradient(const Points& x, Eigen::Ref<VecX> g) const;
   /// Adds the Hessian into the position dofs 0..3n−1 of A. The pairs' 12 by
   /// 12 blocks are first summed per pair of vertices (pairs along a contact
-  /// share vertices), then each vertex block is added once, in an order that
-  /// depends only on the active set (so A replays its pattern while the set
-  /// is unchanged). Call A.segment(id, hessian_structure()) first.
+  /// share vertices), then each vertex block of the pattern (see "Hessian
+  /// pattern") is added once, in an order that depends only on the pattern
+  /// (so A replays its pattern while hessian_structure() is unchanged). Call A.segment(id, hessian_structure()) first.
   void add_hessian(const Points& x, SparseAssembler& A) const;
-  /// Identifies the active set (a 64-bit hash of n and the sorted pairs): it
-  /// changes iff the set of active pairs changes (up to hash collisions,
-  /// probability ~2⁻⁶⁴), for SparseAssembler::segment.
+  /// As above, with each pair's 12 by 12 Hessian projected to positive
+  /// semidefinite when `project_psd` (instead of options().project_psd).
+  void add_hessian(const Points& x, SparseAssembler& A, bool project_psd) const;
+  /// Identifies the Hessian pattern (a 64-bit hash of n and the sorted pattern
+  /// pairs; with hessian_margin = 0 the active pairs): it changes iff the
+  /// pattern changes (up to hash collisions, probability ~2⁻⁶⁴), for
+  /// SparseAssembler::segment.
   std::uint64_t hessian_structure() const { return structure_; }
 
   /// Largest certified step t ∈ [0, 1] of the motion x + s·dx (see the file
   /// comment). 0 if two non-excluded edges already touch at x.
   double max_step(const Points& x, const Points& dx) const;
+  /// Pairs that the motion x + dx would bring, to first order, below
+  /// fraction · min(d(x), d̂) (fraction in (0, 1)): non-excluded pairs whose
+  /// swept boxes come within fraction · d̂, with distance d(x) and
+  /// first-order change r = n·(δp_a − δp_b) < 0 (δp the motion of the
+  /// closest points at x, n their unit normal) such that
+  /// d + r < fraction · min(d, d̂). For step control in solvers (a
+  /// linearisation; the certified bound is max_step()). Sorted by edge pair.
+  std::vector<BlockingPair> blocking_pairs(const Points& x, const Points& dx, double fraction) const;
   /// The same with a report (candidates, limiting pair).
   StepReport max_step_report(const Points& x, const Points& dx) const;
 
@@ -144,6 +180,10 @@ class ContactPotential {
   EdgeBroadPhase broad_;
   mutable EdgeBroadPhase ccd_broad_;
   std::vector<ContactPair> active_;
+  std::vector<EdgePair> near_;       // pairs within d̂ + hessian_margin (scratch of update())
+  std::vector<EdgePair> pattern_;    // pairs whose blocks the Hessian pattern holds (sorted)
+  std::vector<int> active_slot_;     // index in pattern_ of each active pair
+  bool have_pattern_ = false;
   size_t candidates_ = 0;
   size_t broad_phase_runs_ = 0;
   Points x_ref_;                   // positions at the last broad phase

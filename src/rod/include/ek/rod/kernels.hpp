@@ -33,6 +33,12 @@ double stretch_energy(const Vec3& e, double rest_length, double EA);
 Vec3 stretch_gradient(const Vec3& e, double rest_length, double EA);
 /// ∂²E/∂e² = EA/l̄ [ê êᵀ + (1 - l̄/|e|)(I - ê êᵀ)].
 Mat3 stretch_hessian(const Vec3& e, double rest_length, double EA);
+/// The nearest positive semidefinite matrix to stretch_hessian() (its
+/// eigenvalues are EA/l̄ along ê and EA/l̄ (1 - l̄/|e|) twice across, negative
+/// for a compressed edge |e| < l̄): EA/l̄ [ê êᵀ + max(0, 1 - l̄/|e|)(I - ê êᵀ)].
+/// Equal to stretch_hessian() for |e| >= l̄. Used by solvers for descent
+/// directions far from equilibrium (a per-element projection, as in IPC).
+Mat3 stretch_hessian_projected(const Vec3& e, double rest_length, double EA);
 
 // ---------------------------------------------------------------------------
 // Curvature binormal and bending

@@ -1,16 +1,33 @@
 #pragma once
-/// Sparse Cholesky factorisation with CHOLMOD (SuiteSparse) through Eigen's
-/// CholmodSupport wrapper (RAII for the cholmod_common context).
+/// Sparse Cholesky factorisation of H + shift·I with CHOLMOD (SuiteSparse),
+/// keeping the symbolic analysis between factorisations (paper Section 6,
+/// "Numerical Solver": the pattern of the contact Hessian changes only when
+/// the contact set does, and only then is the symbolic factorisation redone).
 ///
-/// The symbolic analysis (fill-reducing ordering, elimination tree) is done
-/// once per sparsity pattern and reused while the pattern stays the same
-/// (paper Section 6, "Numerical Solver": the pattern of the contact Hessian
-/// changes only when the contact set does). The numeric factorisation is of
-/// H + shift·I (CHOLMOD's cholmod_factorize_p with beta = shift), always in
-/// LL' form so that a matrix that is not positive definite is detected.
-#include <Eigen/CholmodSupport>
+/// How CHOLMOD is driven (all through its C API, one cholmod_common per
+/// solver, released by the destructor):
+///  - Ordering: a fill-reducing permutation P (AMD with elimination-tree
+///    postordering, CHOLMOD's cholmod_analyze) is computed for a pattern;
+///    the solver then keeps B = P H Pᵀ itself (upper triangle, a gather of
+///    H's values through a slot map) and lets CHOLMOD factorise B in its
+///    natural order. This is the same factorisation CHOLMOD would compute
+///    with P, without the two permuted transposes (allocations) that
+///    cholmod_factorize_p makes of an upper-triangular input on every call.
+///  - Symbolic analysis (elimination tree, column counts, storage of L) is
+///    redone only when `pattern_version` changes. With reuse_ordering the
+///    previous P is kept for the new pattern (any P is valid; only the fill
+///    differs) and AMD is rerun only when nnz(L) has grown by more than
+///    reorder_fill_growth over the nnz(L) right after the last AMD, or the
+///    size changed.
+///  - Numeric factorisation: simplicial LL' (Simplicial) or supernodal LL'
+///    (Supernodal) of B + shift·I (cholmod_factorize_p with beta = shift),
+///    stopping at the first non-positive pivot (quick_return_if_not_posdef),
+///    so a matrix that is not positive definite is detected at the cost of
+///    the columns before the failing pivot.
 #include <Eigen/SparseCore>
 #include <cstdint>
+#include <memory>
+#include <vector>
 
 #include "ek/geometry/types.hpp"
 
@@ -21,33 +38,65 @@ enum class CholeskyMode {
   Supernodal,  ///< supernodal LL' (BLAS-3; better for large, dense fill)
 };
 
+struct CholeskyOptions {
+  CholeskyMode mode = CholeskyMode::Simplicial;
+  /// Keep the fill-reducing ordering across pattern changes (see the file comment).
+  bool reuse_ordering = true;
+  /// [1] rerun AMD when nnz(L) exceeds (1 + this) times nnz(L) of the last AMD ordering.
+  double reorder_fill_growth = 0.2;
+};
+
 class CholeskySolver {
  public:
   using Matrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 
   explicit CholeskySolver(CholeskyMode mode = CholeskyMode::Simplicial);
+  explicit CholeskySolver(const CholeskyOptions& options);
+  ~CholeskySolver();
+  CholeskySolver(const CholeskySolver&) = delete;
+  CholeskySolver& operator=(const CholeskySolver&) = delete;
 
-  /// Factorises H + shift·I, where H is given by its upper triangle. The
+  /// Factorises H + shift·I, where H is given by its upper triangle (compressed,
+  /// column-major, sorted row indices, as SparseAssembler::matrix()). The
   /// symbolic analysis is redone only when `pattern_version` differs from the
-  /// previous call's (pass SparseAssembler::pattern_version()). Returns false
-  /// when the shifted matrix is not positive definite. Throws
-  /// std::invalid_argument for non-finite entries or a non-square matrix.
+  /// previous call's (pass SparseAssembler::pattern_version()) or the size
+  /// changed. Returns false when the shifted matrix is not positive definite.
+  /// Throws std::invalid_argument for non-finite entries or a non-square matrix.
   bool factorize(const Matrix& upper, double shift, std::uint64_t pattern_version);
 
   /// Solves (H + shift·I) x = b with the last successful factorisation.
   VecX solve(const VecX& b) const;
 
   /// Statistics.
-  int symbolic_count() const { return symbolic_count_; }
-  int numeric_count() const { return numeric_count_; }
+  int symbolic_count() const { return symbolic_count_; }   ///< symbolic analyses
+  int ordering_count() const { return ordering_count_; }   ///< AMD orderings (<= symbolic_count)
+  int numeric_count() const { return numeric_count_; }     ///< numeric factorisations (failed ones included)
+  double symbolic_seconds() const { return symbolic_seconds_; }  ///< [s] time in orderings and symbolic analyses
+  long long factor_nonzeros() const;                       ///< nnz(L) of the current symbolic factor (0 if none)
 
  private:
-  Eigen::CholmodDecomposition<Matrix, Eigen::Upper> chol_;
+  struct Cholmod;  // the cholmod_common and factor (keeps cholmod.h out of this header)
+  void analyse(const Matrix& upper);
+  void order(const Matrix& upper);
+  void build_permuted_pattern(const Matrix& upper);
+
+  CholeskyOptions options_;
+  std::unique_ptr<Cholmod> cm_;
   std::uint64_t analysed_version_ = ~std::uint64_t(0);
   Eigen::Index analysed_size_ = -1;
+  std::vector<int> perm_;     // perm_[new] = old (the fill-reducing P)
+  std::vector<int> inverse_;  // inverse_[old] = new
+  std::vector<int> Bp_, Bi_;  // pattern of B = P H Pᵀ (upper, or lower for Supernodal)
+  std::vector<double> Bx_;
+  std::vector<int> slot_;     // slot_[k] = index in Bx_ of H's k-th stored value
+  long long ordered_fill_ = 0;  // nnz(L) right after the last AMD ordering
+  bool reorder_ = true;
   bool ok_ = false;
   int symbolic_count_ = 0;
+  int ordering_count_ = 0;
   int numeric_count_ = 0;
+  double symbolic_seconds_ = 0.0;
+  mutable VecX work_;
 };
 
 }  // namespace ek

@@ -2,14 +2,24 @@
 /// Newton's method with a Hessian shift, CHOLMOD factorisation with symbolic
 /// reuse, a collision-free step bound and Armijo backtracking (paper Section 6,
 /// "Numerical Solver"), on an abstract objective.
+#include <Eigen/Dense>
+#include <array>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 #include "ek/core/sparse_assembler.hpp"
 #include "ek/geometry/types.hpp"
 #include "ek/solver/cholesky.hpp"
 
 namespace ek {
+
+/// A linear constraint on a Newton step d: Σ_k coefficient[k] · d[index[k]] = 0
+/// (slots with index -1 are unused).
+struct StepConstraint {
+  std::array<int, 12> index;
+  std::array<double, 12> coefficient;
+};
 
 /// A smooth objective E(x) with exact gradient and sparse Hessian.
 ///
@@ -40,6 +50,20 @@ class Objective {
     return 1.0;
   }
   virtual void accept() {}
+  /// Orthonormal basis (num_dofs by k, k >= 0) of the motions that leave E
+  /// invariant at the current dofs to first order (rigid motions). With
+  /// NewtonOptions::remove_rigid_motions their components are removed from
+  /// each Newton step. Default: none.
+  virtual Eigen::MatrixXd rigid_modes() { return {}; }
+  /// Constraints for a step d from x that would drive parts of the objective
+  /// deep into a region the Hessian does not model (for example two strands
+  /// into each other's contact barrier); see NewtonOptions::constrain_steps.
+  /// Default: none.
+  virtual std::vector<StepConstraint> step_constraints(const VecX& x, const VecX& d) {
+    (void)x;
+    (void)d;
+    return {};
+  }
 };
 
 /// Outcome of a minimisation.
@@ -51,6 +75,20 @@ enum class SolverStatus {
 };
 std::string to_string(SolverStatus status);  ///< "converged-stable", "converged-unstable", "max-iterations", "stalled"
 
+/// Which Hessian the Newton directions use (the stability test at
+/// convergence always uses the exact one).
+enum class HessianMode {
+  /// The exact Hessian in every iteration (paper Section 6).
+  Exact,
+  /// The objective's projected Hessian (Objective::assemble_hessian with
+  /// exact = false: per-element positive semidefinite projections of the
+  /// terms that are strongly indefinite far from equilibrium) while
+  /// ||g|| > hybrid_switch · gradient_tolerance, the exact Hessian below.
+  /// Quadratic convergence near the equilibrium is that of exact Newton.
+  Hybrid,
+};
+std::string to_string(HessianMode mode);  ///< "exact", "hybrid"
+
 struct NewtonOptions {
   double gradient_tolerance = 1e-8;  ///< [energy/length] stop when ||g||₂ <= this (and H is PSD)
   int max_iterations = 1000;         ///< [1] Newton iterations
@@ -60,19 +98,60 @@ struct NewtonOptions {
   double lambda_min = 1.0;
   double shift_epsilon = 1e-4;      ///< [1] ε of the paper
   double shift_growth = 10.0;       ///< [1] factor applied to the shift after a failed factorisation
+  /// Start each iteration's shift search one factor shift_growth below the
+  /// previous iteration's shift instead of at ε·λ_min (same shift up to that
+  /// factor, far fewer failed factorisations). The search always starts at
+  /// ε·λ_min when the gradient is below tolerance (stability test).
+  bool shift_warm_start = true;
   int max_shift_attempts = 40;      ///< [1]
+  HessianMode hessian = HessianMode::Hybrid;  ///< see HessianMode
+  double hybrid_switch = 1e3;       ///< [1] Hybrid: exact Hessian once ||g|| <= hybrid_switch · gradient_tolerance
+  /// [1] Lazy (Shamanskii) steps: in Hybrid mode, while ||g|| is above the
+  /// hybrid switch, the factorisation of an earlier iterate's (projected)
+  /// Hessian is reused for up to this many further steps, as long as every
+  /// step is taken in full (t >= 1); a step that must backtrack, or a failed
+  /// line search, brings a fresh Hessian. Directions stay descent directions
+  /// (the reused matrix is positive definite). 0 disables it. The exact phase
+  /// below the switch and the stability test always factorise afresh.
+  int max_lazy_steps = 0;
+  /// Constrained steps (Hybrid mode, above the switch): when the Newton step
+  /// d = -H⁻¹g would drive pairs deep into a barrier that H does not see
+  /// (Objective::step_constraints), d is replaced by the minimiser of the
+  /// same quadratic model subject to those constraints, C d = 0:
+  /// d = d₀ - H⁻¹Cᵀ (C H⁻¹ Cᵀ)⁻¹ C d₀, repeated while new constraints appear
+  /// (at most max_constraint_rounds). Still a descent direction.
+  bool constrain_steps = false;
+  int max_constraint_rounds = 3;    ///< [1]
+  /// Remove the components along Objective::rigid_modes() from each Newton
+  /// step. A rigid rotation leaves E invariant, but its linearisation
+  /// x + ω×x stretches every edge to second order; with the tiny shift
+  /// ε·λ_min the Newton step can carry a large such component near an
+  /// equilibrium (where rotations are near-null modes of H), whose
+  /// second-order stretch then dominates the gradient and stalls convergence.
+  bool remove_rigid_motions = true;
   double armijo = 1e-4;             ///< [1] sufficient-decrease constant c: E(x + t d) <= E + c t g·d
   double backtrack = 0.5;           ///< [1] step reduction per backtracking trial
   double min_step = 1e-12;          ///< [1] smallest step fraction tried before declaring a stall
+  /// [1] Line-search expansion: when the full step lowers E by at least
+  /// expansion_ratio·|g·d| (a quadratic model predicts |g·d|/2), steps of
+  /// 2, 4, ... up to max_expansion times d are tried (within the
+  /// collision-free bound) while E keeps decreasing. 1 disables it.
+  double max_expansion = 16.0;
+  double expansion_ratio = 0.75;    ///< [1] see max_expansion
   /// Report converged-unstable at a saddle instead of leaving it along a
   /// direction of negative curvature.
   bool stop_at_critical_point = false;
   int max_saddle_escapes = 50;      ///< [1]
-  CholeskyMode cholesky = CholeskyMode::Simplicial;
+  CholeskyOptions cholesky;         ///< factorisation mode and ordering reuse (cholesky.hpp)
   /// Print one line per iteration to stderr (iteration, energy, ||g||, shift,
   /// collision-free bound, accepted step, pattern changes).
   bool verbose = false;
   void validate() const;
+
+  /// The paper's method as issue 6 describes it: exact Hessian in every
+  /// iteration, no rigid-motion removal (the shift alone suppresses rigid
+  /// motions), warm-started shift search.
+  static NewtonOptions paper();
 };
 
 /// Timings and counters of a minimisation.
@@ -92,6 +171,7 @@ struct NewtonReport {
   /// [energy/length²] most negative eigenvalue found at the last saddle test (0 if none).
   double smallest_eigenvalue = 0.0;
   int symbolic_factorizations = 0;
+  int orderings = 0;                    ///< fill-reducing orderings (AMD), <= symbolic_factorizations
   int numeric_factorizations = 0;
   int line_search_trials = 0;
   double time_assembly = 0.0;           ///< [s] gradient and Hessian
@@ -99,6 +179,12 @@ struct NewtonReport {
   double time_collision = 0.0;          ///< [s] collision-free step bounds
   double time_line_search = 0.0;        ///< [s] energy evaluations of trial points
   double time_eigen = 0.0;              ///< [s] negative-curvature directions
+  double time_symbolic = 0.0;           ///< [s] symbolic analyses (part of time_factorization)
+  int constrained_steps = 0;            ///< steps changed by constrain_steps
+  int step_constraints = 0;             ///< constraints imposed over all steps
+  int lazy_steps = 0;                   ///< steps that reused an earlier factorisation (max_lazy_steps)
+  int expansions = 0;                   ///< steps lengthened by the line-search expansion
+  int exact_iterations = 0;             ///< iterations whose direction used the exact Hessian
 };
 
 /// Minimises the objective from its current dofs; leaves it at the result.

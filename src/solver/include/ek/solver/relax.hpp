@@ -40,12 +40,6 @@ struct RelaxOptions {
   /// 1e-8 for its material and unit edges, scaled like the gradient.
   double tolerance = 0.0;
   int max_iterations = 2000;        ///< [1] Newton iterations (per phase)
-  /// Project each contact pair's barrier Hessian to positive semidefinite
-  /// (as IPC does): the edge-edge distance is not convex, and its negative
-  /// curvature times the barrier's large first derivative makes H strongly
-  /// indefinite right after contacts form. The convergence test is unchanged
-  /// (gradient norm, and H + ε λ_min I positive definite for the Hessian used).
-  bool project_contact_hessian = false;
   /// Prescribed link Lk: the full model with Θ fixed (FixedLink). Without it
   /// Θ is free and the twist relaxes to zero, so the centerline-only fast path
   /// is used unless full_model is set.
