@@ -99,6 +99,25 @@ TEST(Clustering, HandWorkedExampleInScipyFormat) {
   EXPECT_EQ(C(3, 0), 7.0);
 }
 
+TEST(Clustering, FromLinkageRoundTripsAndRejectsMalformedMatrices) {
+  Eigen::MatrixXd D(5, 5);
+  D << 0, 1, 4, 6, 9,  //
+      1, 0, 3, 7, 8,   //
+      4, 3, 0, 2, 5,   //
+      6, 7, 2, 0, 4,   //
+      9, 8, 5, 4, 0;
+  const Dendrogram d = complete_linkage(D);
+  const Dendrogram r = Dendrogram::from_linkage(d.linkage_matrix());
+  EXPECT_EQ(r.leaves, 5);
+  EXPECT_EQ(r.linkage_matrix(), d.linkage_matrix());
+  for (double cut : {0.5, 1.0, 2.5, 4.0, 10.0}) EXPECT_EQ(cut_dendrogram(r, cut), cut_dendrogram(d, cut)) << cut;
+  EXPECT_EQ(Dendrogram::from_linkage(Eigen::MatrixXd(0, 4)).leaves, 1);
+  Eigen::MatrixXd bad = d.linkage_matrix();
+  bad(0, 1) = 42;  // merges a cluster that does not exist yet
+  EXPECT_THROW(Dendrogram::from_linkage(bad), std::invalid_argument);
+  EXPECT_THROW(Dendrogram::from_linkage(Eigen::MatrixXd::Zero(2, 3)), std::invalid_argument);
+}
+
 TEST(Clustering, MatchesNaiveCompleteLinkage) {
   for (std::uint64_t seed = 1; seed <= 6; ++seed) {
     const int N = 5 + static_cast<int>(seed) * 7;

@@ -74,6 +74,34 @@ TEST(Pipeline, ExploreKnotStoresRunsEquilibriaAndClusters) {
   EXPECT_LT((e.similarity - e.similarity.transpose()).cwiseAbs().maxCoeff(), 1e-12);
   for (int i = 0; i < stable; ++i) EXPECT_DOUBLE_EQ(e.similarity(i, i), 1.0);
   EXPECT_EQ(e.linkage.rows(), stable - 1);
+
+  // clusters_at_cut: a partition, sorted by energy, lowest-energy representative,
+  // members of one cluster within the cut of each other (complete linkage)
+  for (double cut : {0.0, 0.05, 0.3, 2.0}) {
+    std::vector<int> rank;
+    const auto clusters = clusters_at_cut(e, cut, &rank);
+    ASSERT_EQ(rank.size(), static_cast<size_t>(stable));
+    const int ec = e.attribute_column("energy");
+    size_t total = 0;
+    for (size_t c = 0; c < clusters.size(); ++c) {
+      const auto& cl = clusters[c];
+      total += cl.members.size();
+      if (c > 0) {
+        EXPECT_LE(clusters[c - 1].energy_min, cl.energy_min);
+      }
+      EXPECT_EQ(e.attributes(cl.representative, ec), cl.energy_min);
+      for (int i : cl.members) {
+        EXPECT_EQ(rank[static_cast<size_t>(i)], static_cast<int>(c));
+        EXPECT_GE(e.attributes(i, ec), cl.energy_min);
+        EXPECT_LE(e.attributes(i, ec), cl.energy_max);
+        for (int j : cl.members) EXPECT_LE(1.0 - e.similarity(i, j), cut + 1e-12);
+      }
+    }
+    EXPECT_EQ(total, static_cast<size_t>(stable));
+    if (cut >= 2.0) {
+      EXPECT_EQ(clusters.size(), 1u);  // distances are at most 2
+    }
+  }
 }
 
 TEST(Pipeline, AdaptiveSamplingStopsAndRecordsScores) {

@@ -128,6 +128,19 @@ Dendrogram complete_linkage_from_similarity(const Eigen::MatrixXd& similarity) {
   return complete_linkage(D);
 }
 
+Dendrogram Dendrogram::from_linkage(const Eigen::MatrixXd& linkage) {
+  require(linkage.rows() == 0 || linkage.cols() == 4, "Dendrogram::from_linkage: expected 4 columns");
+  Dendrogram d;
+  d.leaves = static_cast<int>(linkage.rows()) + 1;
+  for (Eigen::Index k = 0; k < linkage.rows(); ++k) {
+    Merge m{static_cast<int>(linkage(k, 0)), static_cast<int>(linkage(k, 1)), linkage(k, 2),
+            static_cast<int>(linkage(k, 3))};
+    require(m.a >= 0 && m.b > m.a && m.b < d.leaves + static_cast<int>(k), "Dendrogram::from_linkage: bad merge");
+    d.merges.push_back(m);
+  }
+  return d;
+}
+
 Eigen::MatrixXd Dendrogram::linkage_matrix() const {
   Eigen::MatrixXd Z(static_cast<Eigen::Index>(merges.size()), 4);
   for (size_t k = 0; k < merges.size(); ++k) {

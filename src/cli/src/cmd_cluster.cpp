@@ -5,9 +5,8 @@
 
 #include "args.hpp"
 #include "commands.hpp"
-#include "ek/analysis/clustering.hpp"
 #include "ek/core/errors.hpp"
-#include "ek/dataset/dataset_file.hpp"
+#include "ek/dataset/pipeline.hpp"
 #include "output.hpp"
 
 namespace ek::cli {
@@ -27,34 +26,8 @@ int cmd_cluster(int argc, char** argv) {
   DatasetReader reader(file);
   const KnotEntry e = reader.read(name);
   const int m = static_cast<int>(e.equilibria.size());
-  std::vector<int> labels(static_cast<size_t>(m), 0);
-  if (m > 1) {
-    Dendrogram d;
-    d.leaves = m;
-    for (Eigen::Index k = 0; k < e.linkage.rows(); ++k)
-      d.merges.push_back({static_cast<int>(e.linkage(k, 0)), static_cast<int>(e.linkage(k, 1)), e.linkage(k, 2),
-                          static_cast<int>(e.linkage(k, 3))});
-    labels = cut_dendrogram(d, *cut);
-  }
-  const int energy_col = e.attribute_column("energy");
-  const int k = m == 0 ? 0 : 1 + *std::max_element(labels.begin(), labels.end());
-  struct Cluster {
-    std::vector<int> members;
-    int representative = -1;
-    double emin = 0, emax = 0;
-  };
-  std::vector<Cluster> clusters(static_cast<size_t>(k));
-  for (int i = 0; i < m; ++i) {
-    Cluster& c = clusters[static_cast<size_t>(labels[static_cast<size_t>(i)])];
-    const double E = e.attributes(i, energy_col);
-    if (c.members.empty() || E < c.emin) {
-      c.emin = E;
-      c.representative = i;
-    }
-    if (c.members.empty() || E > c.emax) c.emax = E;
-    c.members.push_back(i);
-  }
-  std::sort(clusters.begin(), clusters.end(), [](const Cluster& a, const Cluster& b) { return a.emin < b.emin; });
+  const std::vector<StateCluster> clusters = clusters_at_cut(e, *cut);
+  const int k = static_cast<int>(clusters.size());
   if (json) {
     Json j;
     j["name"] = name;
@@ -65,8 +38,8 @@ int cmd_cluster(int argc, char** argv) {
       Json cj;
       cj["size"] = c.members.size();
       cj["representative"] = c.representative;
-      cj["energy_min"] = number(c.emin);
-      cj["energy_max"] = number(c.emax);
+      cj["energy_min"] = number(c.energy_min);
+      cj["energy_max"] = number(c.energy_max);
       cj["members"] = c.members;
       j["clusters"].push_back(cj);
     }
@@ -76,7 +49,7 @@ int cmd_cluster(int argc, char** argv) {
   std::cout << name << ": " << m << " equilibria in " << k << " clusters at cut " << *cut << " (sorted by energy)\n";
   for (size_t c = 0; c < clusters.size(); ++c)
     std::cout << "  cluster " << c << ": " << clusters[c].members.size() << " members, energy "
-              << fmt(clusters[c].emin, 6) << " .. " << fmt(clusters[c].emax, 6) << ", representative "
+              << fmt(clusters[c].energy_min, 6) << " .. " << fmt(clusters[c].energy_max, 6) << ", representative "
               << clusters[c].representative << "\n";
   return 0;
 }

@@ -153,6 +153,33 @@ double importance_score(const Eigen::MatrixXd& sim, int earlier, const std::vect
   return score;
 }
 
+std::vector<StateCluster> clusters_at_cut(const KnotEntry& e, double cut, std::vector<int>* rank) {
+  const int m = static_cast<int>(e.equilibria.size());
+  if (rank) rank->assign(static_cast<size_t>(m), -1);
+  if (m == 0) return {};
+  std::vector<int> labels(static_cast<size_t>(m), 0);
+  if (m > 1) labels = cut_dendrogram(Dendrogram::from_linkage(e.linkage), cut);
+  const int ec = e.attribute_column("energy");
+  std::vector<StateCluster> out(static_cast<size_t>(*std::max_element(labels.begin(), labels.end()) + 1));
+  for (int i = 0; i < m; ++i) {
+    StateCluster& c = out[static_cast<size_t>(labels[static_cast<size_t>(i)])];
+    const double E = e.attributes(i, ec);
+    if (c.members.empty() || E < c.energy_min) {
+      c.energy_min = E;
+      c.representative = i;
+    }
+    if (c.members.empty() || E > c.energy_max) c.energy_max = E;
+    c.members.push_back(i);
+  }
+  std::sort(out.begin(), out.end(), [](const StateCluster& a, const StateCluster& b) {
+    return a.energy_min < b.energy_min;
+  });
+  if (rank)
+    for (size_t c = 0; c < out.size(); ++c)
+      for (int i : out[c].members) (*rank)[static_cast<size_t>(i)] = static_cast<int>(c);
+  return out;
+}
+
 void cluster_entry(KnotEntry& e, const SimilarityOptions& options) {
   const int m = static_cast<int>(e.equilibria.size());
   if (m == 0) {

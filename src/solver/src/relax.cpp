@@ -57,10 +57,9 @@ class KnotObjective : public Objective {
     const Points& x = rod_.positions();
     A.begin(num_dofs());
     A.segment(0, rod_.hessian_structure());
-    static const int proj = std::getenv("EK_PROJ") ? std::atoi(std::getenv("EK_PROJ")) : 3;  // SCRATCH
-    rod_.add_hessian(A, EnergyTerm::All, !exact && (proj & 1));
+    rod_.add_hessian(A, EnergyTerm::All, !exact);
     A.segment(1, contact_.hessian_structure());
-    contact_.add_hessian(x, A, !exact && (proj & 2));
+    contact_.add_hessian(x, A, !exact);
     A.segment(2, slab_ ? 1 : 0);
     if (slab_) slab_->add_hessian(x, A);
     A.end();
@@ -73,12 +72,6 @@ class KnotObjective : public Objective {
     const Eigen::Index m = rod_.positions().size();
     const Points X = as_points(x.head(m)), D = as_points(dx.head(m));
     double t = contact_.max_step(X, D);
-    if (std::getenv("EK_CCDLOG") && t < 1.0) {  // SCRATCH
-      const StepReport r = contact_.max_step_report(X, D);
-      double dmax = 0; for (Eigen::Index i = 0; i < D.rows(); ++i) dmax = std::max(dmax, D.row(i).norm());
-      const double da = (D.row(r.edge_a).norm() + D.row(broad_end(r.edge_a)).norm()) / 2, db = (D.row(r.edge_b).norm() + D.row(broad_end(r.edge_b)).norm()) / 2;
-      std::fprintf(stderr, "ccd t %.3e pair (%d,%d) d0 %.4f floor %.4f |D|max %.3f |D|a %.3f |D|b %.3f cand %d\n", r.t, r.edge_a, r.edge_b, r.start_distance, r.floor, dmax, da, db, r.candidates);
-    }
     if (slab_) t = std::min(t, slab_->max_step(X, D));
     if (rod_.model() != TwistModel::TwistFree) {
       // keep every tangent within max_rotation of its source: |s·de| <= sin(α)|e|
@@ -94,7 +87,7 @@ class KnotObjective : public Objective {
     return t;
   }
   std::vector<StepConstraint> step_constraints(const VecX& x, const VecX& d) override {
-    static const double rho = std::getenv("EK_BLOCK") ? std::atof(std::getenv("EK_BLOCK")) : 0.5;  // SCRATCH
+    constexpr double rho = 0.5;  // a pair is blocking when the step would halve its distance (below d̂)
     const Eigen::Index m = rod_.positions().size();
     const Points X = as_points(x.head(m)), D = as_points(d.head(m));
     std::vector<StepConstraint> out;
@@ -112,7 +105,6 @@ class KnotObjective : public Objective {
     return out;
   }
   void accept() override { rod_.update_reference_frames(); }
-  int broad_end(int e) const { return (e + 1) % rod_.num_vertices(); }
 
  private:
   ElasticRod& rod_;
@@ -192,8 +184,6 @@ RelaxResult relax(const Points& curve, const RelaxOptions& options) {
   co.dhat = options.dhat > 0.0 ? options.dhat : 2.0 * mat.radius;
   co.stiffness =
       options.contact_stiffness > 0.0 ? options.contact_stiffness : 1e3 * (mat.young / 2000.0) * r_scale * r_scale * r_scale;
-  if (std::getenv("EK_SKIN")) co.broad_phase_skin = std::atof(std::getenv("EK_SKIN"));  // SCRATCH
-  co.hessian_margin = std::getenv("EK_MARGIN") ? std::atof(std::getenv("EK_MARGIN")) * co.dhat : 0.0;  // SCRATCH
   const double tol = options.tolerance > 0.0 ? options.tolerance : 1e-8 * (EI / kReferenceBendingStiffness) / (edge * edge);
 
   TwistModel model = TwistModel::TwistFree;

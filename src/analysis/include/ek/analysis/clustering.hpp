@@ -37,6 +37,9 @@ struct Dendrogram {
 
   /// (N-1) by 4 array [a, b, height, size] (SciPy linkage format).
   Eigen::MatrixXd linkage_matrix() const;
+  /// The dendrogram of a stored (N-1) by 4 linkage matrix (N = rows + 1).
+  /// Throws std::invalid_argument for a malformed matrix.
+  static Dendrogram from_linkage(const Eigen::MatrixXd& linkage);
   /// Leaves in the left-to-right order of the drawn dendrogram (a before b at
   /// every merge), e.g. to reorder a similarity matrix for display.
   std::vector<int> leaf_order() const;

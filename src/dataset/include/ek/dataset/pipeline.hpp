@@ -118,6 +118,20 @@ using RunCallback = std::function<void(const RunRecord&)>;
 KnotEntry explore_knot(const KnotRecord& knot, const ExploreOptions& options, const std::string& journal_path = "",
                        const RunCallback& on_run = {});
 
+/// One distinct equilibrium: a cluster of a knot's stored equilibria at a
+/// cut, represented by its lowest-energy member.
+struct StateCluster {
+  std::vector<int> members;   ///< equilibrium indices (rows of KnotEntry::equilibria)
+  int representative = -1;    ///< the member of lowest energy
+  double energy_min = 0.0;    ///< [energy]
+  double energy_max = 0.0;    ///< [energy]
+};
+
+/// The clusters of the entry's equilibria at `cut` (complete linkage on
+/// 1 - similarity, from the stored linkage), sorted by increasing energy.
+/// `rank` (optional) receives each equilibrium's cluster position in that order.
+std::vector<StateCluster> clusters_at_cut(const KnotEntry& entry, double cut, std::vector<int>* rank = nullptr);
+
 /// Recomputes the similarity matrix and the complete-linkage dendrogram of
 /// the stored equilibria (used after merging and by explore_knot).
 void cluster_entry(KnotEntry& entry, const SimilarityOptions& options);
