@@ -4,6 +4,7 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <functional>
 #include <iostream>
 #include <random>
 
@@ -368,6 +369,118 @@ TEST(ElasticRod, RelaxTwistMinimisesTwistingEnergy) {
       const double expected = 0.5 * rod.material().twisting_stiffness() * std::pow(2 * M_PI * Tw, 2) /
                               rod.rest_voronoi_lengths().sum();
       EXPECT_NEAR(rod.energy(EnergyTerm::Twist), expected, 1e-10 * expected);
+    }
+  }
+}
+
+namespace {
+
+/// The full symmetric matrix of one add_hessian() pass into A (A's pattern
+/// is kept between calls, so a replay can be detected by the caller).
+Eigen::MatrixXd assembled_hessian(const ElasticRod& rod, EnergyTerm term, bool project_stretch, SparseAssembler& A,
+                                  bool* pattern_changed = nullptr) {
+  A.begin(rod.num_dofs());
+  A.segment(0, rod.hessian_structure());
+  rod.add_hessian(A, term, project_stretch);
+  const bool changed = A.end();
+  if (pattern_changed) *pattern_changed = changed;
+  return Eigen::MatrixXd(A.matrix()).selfadjointView<Eigen::Upper>();
+}
+
+/// A rod on a smooth random curve whose rest length of edge j is
+/// factor(j) times its current length (factor > 1: compressed edge).
+ElasticRod rod_with_strains(TwistModel model, std::uint64_t seed, const std::function<double(int)>& factor,
+                            int n = 20) {
+  const Points P = rodtest::smooth_random_curve(n, seed, 2.0);
+  VecX rest(n);
+  for (int j = 0; j < n; ++j) rest(j) = factor(j) * (P.row((j + 1) % n) - P.row(j)).norm();
+  RodMaterial mat;
+  mat.radius = 0.3;
+  ElasticRod rod(P, rest, mat, model);
+  if (model != TwistModel::TwistFree) {
+    std::mt19937_64 rng(seed + 7);
+    std::normal_distribution<double> N(0.0, 0.5);
+    VecX d = rod.dofs();
+    for (int j = 0; j < n; ++j) d(3 * n + j) = N(rng);  // some twist, so the twist blocks are not zero
+    rod.set_dofs(d);
+  }
+  return rod;
+}
+
+}  // namespace
+
+TEST(ElasticRod, ProjectedStretchHessianEqualsExactWhenAllEdgesAreStretched) {
+  for (TwistModel m : kModels) {
+    // every rest length 0.9 or 0.97 times the edge: all edges stretched
+    ElasticRod rod = rod_with_strains(m, 41, [](int j) { return j % 2 ? 0.9 : 0.97; });
+    const Points& x = rod.positions();
+    for (int j = 0; j < rod.num_vertices(); ++j)
+      ASSERT_GT((x.row((j + 1) % rod.num_vertices()) - x.row(j)).norm(), rod.rest_edge_lengths()(j));
+    for (EnergyTerm term : kTerms) {
+      SparseAssembler A;
+      const Eigen::MatrixXd H = assembled_hessian(rod, term, false, A);
+      bool changed = true;
+      const Eigen::MatrixXd P = assembled_hessian(rod, term, true, A, &changed);
+      EXPECT_FALSE(changed) << name(m) << " " << name(term) << ": projection must replay the same pattern";
+      if (term != EnergyTerm::Twist || m != TwistModel::TwistFree) {
+        ASSERT_GT(H.norm(), 0.0);
+      }
+      EXPECT_LE((P - H).norm(), 1e-15 * H.norm()) << name(m) << " " << name(term);
+      EXPECT_LT((H - Eigen::MatrixXd(rod.hessian(term))).norm(), 1e-12 * (1 + H.norm()));
+    }
+  }
+}
+
+TEST(ElasticRod, ProjectedStretchHessianChangesOnlyCompressedStretchBlocks) {
+  for (TwistModel m : kModels) {
+    // every third edge compressed by 12%, the others stretched by 10%
+    ElasticRod rod = rod_with_strains(m, 43, [](int j) { return j % 3 == 0 ? 1.12 : 0.9; });
+    const int n = rod.num_vertices();
+    const double EA = rod.material().stretching_stiffness();
+    const Points& x = rod.positions();
+    // expected difference: Σ over compressed edges j of [K, −K; −K, K] at
+    // vertices (j, j+1), K = projected − exact edge kernel
+    Eigen::MatrixXd D = Eigen::MatrixXd::Zero(rod.num_dofs(), rod.num_dofs());
+    int compressed = 0;
+    for (int j = 0; j < n; ++j) {
+      const int j1 = (j + 1) % n;
+      const Vec3 e = x.row(j1) - x.row(j);
+      const double l = rod.rest_edge_lengths()(j);
+      const Mat3 K = rod::stretch_hessian_projected(e, l, EA) - rod::stretch_hessian(e, l, EA);
+      if (e.norm() < l) {
+        ++compressed;
+        ASSERT_GT(K.norm(), 1e-3 * EA / l);
+      } else {
+        ASSERT_EQ(K.norm(), 0.0);
+      }
+      D.block<3, 3>(3 * j, 3 * j) += K;
+      D.block<3, 3>(3 * j1, 3 * j1) += K;
+      D.block<3, 3>(3 * j, 3 * j1) -= K;
+      D.block<3, 3>(3 * j1, 3 * j) -= K;
+    }
+    ASSERT_EQ(compressed, (n + 2) / 3);
+    SparseAssembler A;
+    for (EnergyTerm term : kTerms) {
+      const Eigen::MatrixXd H = assembled_hessian(rod, term, false, A);
+      bool changed = true;
+      const Eigen::MatrixXd P = assembled_hessian(rod, term, true, A, &changed);
+      EXPECT_FALSE(changed) << name(m) << " " << name(term);
+      const bool has_stretch = term == EnergyTerm::Stretch || term == EnergyTerm::All;
+      const Eigen::MatrixXd expected = has_stretch ? D : Eigen::MatrixXd::Zero(D.rows(), D.cols());
+      EXPECT_LT((P - H - expected).norm(), 1e-12 * (1 + H.norm())) << name(m) << " " << name(term);
+      if (has_stretch) {
+        // the change only removes negative curvature: P − H is PSD and non-zero
+        EXPECT_GT((P - H).norm(), 1e-3 * EA);
+        const double dmin = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(P - H).eigenvalues().minCoeff();
+        EXPECT_GE(dmin, -1e-12 * D.norm()) << name(m) << " " << name(term);
+      }
+      if (term == EnergyTerm::Stretch) {
+        // the exact stretching Hessian is indefinite here, the projected one is not
+        const double hmin = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(H).eigenvalues().minCoeff();
+        const double pmin = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(P).eigenvalues().minCoeff();
+        EXPECT_LT(hmin, -1e-3 * EA) << name(m);
+        EXPECT_GE(pmin, -1e-12 * P.norm()) << name(m);
+      }
     }
   }
 }

@@ -1,6 +1,7 @@
 // Finite-difference and known-answer tests of the local rod kernels.
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
 #include <cmath>
 #include <random>
 
@@ -240,4 +241,59 @@ TEST(RodKernels, EdgeToVertexMaps) {
   M.block<3, 3>(3, 3) = -Mat3::Identity();
   M.block<3, 3>(3, 6) = Mat3::Identity();
   EXPECT_LT((to_vertices(S) - M.transpose() * S * M).norm(), 1e-13 * S.norm());
+}
+
+TEST(RodKernels, ProjectedStretchHessianIsTheNearestPsdMatrix) {
+  // stretch_hessian() has eigenvalues EA/l̄ along ê and EA/l̄ (1 − l̄/|e|)
+  // (twice) across; the projection clamps the transverse ones at 0.
+  std::mt19937_64 rng(21);
+  int compressed = 0, stretched = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    const Vec3 e = random_vec(rng);
+    if (e.norm() < 0.2) continue;
+    // strain −40% .. +40% (|e| = l̄ (1 + strain)), both signs
+    const double strain = std::uniform_real_distribution<double>(-0.4, 0.4)(rng);
+    const double l = e.norm() / (1.0 + strain), EA = 2.3;
+    const double scale = EA / l;
+    const Mat3 H = stretch_hessian(e, l, EA);
+    const Mat3 P = stretch_hessian_projected(e, l, EA);
+    EXPECT_LT((P - P.transpose()).norm(), 1e-14 * scale);
+    const Vec3 t = e.normalized();
+    // along ê: EA/l̄ for both; ê is an eigenvector
+    EXPECT_NEAR(t.dot(P * t), scale, 1e-12 * scale);
+    EXPECT_LT((P * t - scale * t).norm(), 1e-12 * scale);
+    // across: two unit vectors orthogonal to ê and to each other
+    const Vec3 u = (std::fabs(t.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY()).cross(t).normalized();
+    const Vec3 w = t.cross(u);
+    const double across_exact = scale * (1.0 - l / e.norm());
+    EXPECT_NEAR(u.dot(H * u), across_exact, 1e-12 * scale);  // the exact kernel's transverse eigenvalue
+    const Eigen::SelfAdjointEigenSolver<Mat3> eig(P);
+    const Vec3 lam = eig.eigenvalues();  // ascending
+    if (e.norm() >= l) {
+      ++stretched;
+      EXPECT_LT((P - H).norm(), 1e-14 * scale) << "stretched edge: unchanged";
+      EXPECT_NEAR(u.dot(P * u), across_exact, 1e-12 * scale);
+    } else {
+      ++compressed;
+      ASSERT_LT(across_exact, -1e-3 * scale);  // the exact Hessian really is indefinite
+      EXPECT_GE(lam(0), -1e-12 * scale);        // PSD
+      EXPECT_NEAR(lam(0), 0.0, 1e-12 * scale);
+      EXPECT_NEAR(lam(1), 0.0, 1e-12 * scale);
+      EXPECT_NEAR(lam(2), scale, 1e-12 * scale);
+      EXPECT_LT((P * u).norm(), 1e-12 * scale);
+      EXPECT_LT((P * w).norm(), 1e-12 * scale);
+      // the projection is H with its negative eigenvalues clamped: H = V Λ Vᵀ, P = V max(Λ, 0) Vᵀ
+      const Eigen::SelfAdjointEigenSolver<Mat3> eh(H);
+      const Mat3 clamped =
+          eh.eigenvectors() * eh.eigenvalues().cwiseMax(0.0).asDiagonal() * eh.eigenvectors().transpose();
+      EXPECT_LT((P - clamped).norm(), 1e-12 * scale);
+      // and it differs from H exactly by the clamped part −EA/l̄ (1 − l̄/|e|)(I − ê êᵀ)
+      EXPECT_LT((P - H + across_exact * (Mat3::Identity() - t * t.transpose())).norm(), 1e-12 * scale);
+    }
+  }
+  EXPECT_GE(compressed, 10);
+  EXPECT_GE(stretched, 10);
+  // exactly at rest length: the transverse eigenvalues are 0 either way
+  const Vec3 e(0.3, -0.4, 1.2);
+  EXPECT_LT((stretch_hessian_projected(e, e.norm(), 5.0) - stretch_hessian(e, e.norm(), 5.0)).norm(), 1e-13);
 }

@@ -1,6 +1,8 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <cstdint>
+#include <vector>
 #include <random>
 
 #include "ek/core/sparse_assembler.hpp"
@@ -58,4 +60,180 @@ TEST(Cholesky, RejectsNonFinite) {
   auto H = tridiagonal(5, 3.0);
   H.valuePtr()[0] = std::nan("");
   EXPECT_THROW(chol.factorize(H, 0.0, 1), std::invalid_argument);
+}
+
+namespace {
+
+using Triplets = std::vector<Eigen::Triplet<double, int>>;
+
+/// Random symmetric sparse matrix (full storage): a banded "rod" part plus
+/// `extra` random off-diagonal entries (the "contacts"), values N(0, 1).
+Eigen::MatrixXd random_symmetric(int n, int extra, std::mt19937_64& rng) {
+  std::normal_distribution<double> N;
+  std::uniform_int_distribution<int> U(0, n - 1);
+  Eigen::MatrixXd S = Eigen::MatrixXd::Zero(n, n);
+  for (int i = 0; i < n; ++i) {
+    S(i, i) = N(rng);
+    for (int k = 1; k <= 3 && i + k < n; ++k) S(i, i + k) = S(i + k, i) = N(rng);
+  }
+  for (int k = 0; k < extra; ++k) {
+    const int i = U(rng), j = U(rng);
+    if (i != j) S(i, j) = S(j, i) = N(rng);
+  }
+  return S;
+}
+
+double smallest_eigenvalue(const Eigen::MatrixXd& S) {
+  return Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(S, Eigen::EigenvaluesOnly).eigenvalues().minCoeff();
+}
+
+/// S + (margin − λ_min(S)) I: symmetric positive definite with λ_min = margin.
+Eigen::MatrixXd make_spd(const Eigen::MatrixXd& S, double margin) {
+  return S + (margin - smallest_eigenvalue(S)) * Eigen::MatrixXd::Identity(S.rows(), S.cols());
+}
+
+/// Upper triangle of a dense symmetric matrix (its non-zeros), compressed.
+CholeskySolver::Matrix upper_of(const Eigen::MatrixXd& S) {
+  Triplets t;
+  for (int j = 0; j < S.cols(); ++j)
+    for (int i = 0; i <= j; ++i)
+      if (S(i, j) != 0.0) t.emplace_back(i, j, S(i, j));
+  CholeskySolver::Matrix U(S.rows(), S.cols());
+  U.setFromTriplets(t.begin(), t.end());
+  U.makeCompressed();
+  return U;
+}
+
+/// ||x − x_ref|| / ||x_ref|| with x_ref from a dense LLT of (S + shift I).
+double error_against_dense(const CholeskySolver& chol, const Eigen::MatrixXd& S, double shift, const VecX& b) {
+  const Eigen::MatrixXd M = S + shift * Eigen::MatrixXd::Identity(S.rows(), S.cols());
+  const Eigen::LLT<Eigen::MatrixXd> llt(M);
+  EXPECT_EQ(llt.info(), Eigen::Success);
+  const VecX ref = llt.solve(b);
+  return (chol.solve(b) - ref).norm() / ref.norm();
+}
+
+const char* name(CholeskyMode m) { return m == CholeskyMode::Simplicial ? "simplicial" : "supernodal"; }
+
+}  // namespace
+
+TEST(Cholesky, RandomSparseSpdMatchesDenseLlt) {
+  std::mt19937_64 rng(3);
+  std::normal_distribution<double> N;
+  for (CholeskyMode mode : {CholeskyMode::Simplicial, CholeskyMode::Supernodal})
+    for (int trial = 0; trial < 6; ++trial) {
+      const int n = 40 + 37 * trial;
+      const Eigen::MatrixXd S = make_spd(random_symmetric(n, 2 * n, rng), 0.5);
+      const CholeskySolver::Matrix U = upper_of(S);
+      CholeskyOptions o;
+      o.mode = mode;
+      CholeskySolver chol(o);
+      EXPECT_EQ(chol.factor_nonzeros(), 0);
+      ASSERT_TRUE(chol.factorize(U, 0.0, 1)) << name(mode) << " n = " << n;
+      // L holds at least the (permuted) lower triangle of H
+      EXPECT_GE(chol.factor_nonzeros(), U.nonZeros()) << name(mode);
+      for (int k = 0; k < 3; ++k) {
+        VecX b(n);
+        for (int i = 0; i < n; ++i) b(i) = N(rng);
+        EXPECT_LT(error_against_dense(chol, S, 0.0, b), 1e-10) << name(mode) << " n = " << n;
+      }
+      // a shift is applied to the same pattern without a new analysis
+      ASSERT_TRUE(chol.factorize(U, 2.5, 1));
+      EXPECT_LT(error_against_dense(chol, S, 2.5, VecX::Ones(n)), 1e-10) << name(mode);
+      EXPECT_EQ(chol.symbolic_count(), 1);
+      EXPECT_EQ(chol.ordering_count(), 1);
+      EXPECT_EQ(chol.numeric_count(), 2);
+      EXPECT_THROW(chol.solve(VecX::Ones(n + 1)), std::invalid_argument);
+    }
+}
+
+TEST(Cholesky, ReusedOrderingSolvesChangingPatterns) {
+  // A fixed "rod" band plus contact entries that change from one pattern to
+  // the next (as the contact set does in a Newton solve); every pattern gets
+  // a new version. The kept ordering must give the same solutions as a fresh
+  // dense factorisation, and AMD is rerun exactly when the fill of the kept
+  // ordering exceeds (1 + reorder_fill_growth) times that of the last AMD.
+  for (CholeskyMode mode : {CholeskyMode::Simplicial, CholeskyMode::Supernodal})
+    for (bool reuse : {true, false}) {
+      std::mt19937_64 rng(11);
+      CholeskyOptions o;
+      o.mode = mode;
+      o.reuse_ordering = reuse;
+      CholeskySolver chol(o);
+      const int n = 150;
+      const Eigen::MatrixXd band = random_symmetric(n, 0, rng);
+      long long fill_at_ordering = 0;
+      std::uint64_t version = 0;
+      int reorders_from_growth = 0;
+      for (int step = 0; step < 16; ++step) {
+        // a few contact entries, or (steps 7 and 12) many: much more fill
+        const int extra = step == 7 || step == 12 ? 400 : 6;
+        Eigen::MatrixXd S = band + random_symmetric(n, extra, rng);
+        S = make_spd(S, 0.3);
+        const int orderings_before = chol.ordering_count();
+        ASSERT_TRUE(chol.factorize(upper_of(S), 0.0, ++version)) << name(mode) << " step " << step;
+        const bool reordered = chol.ordering_count() > orderings_before;
+        EXPECT_LE(chol.ordering_count(), orderings_before + 1);
+        // with reuse, a new ordering after the first costs a second analysis
+        // (the kept ordering was analysed first and found to fill too much)
+        if (reordered && step > 0 && reuse) ++reorders_from_growth;
+        EXPECT_EQ(chol.symbolic_count(), static_cast<int>(version) + reorders_from_growth) << name(mode);
+        if (reordered) {
+          fill_at_ordering = chol.factor_nonzeros();
+        } else {
+          EXPECT_TRUE(reuse);
+          EXPECT_LE(static_cast<double>(chol.factor_nonzeros()),
+                    (1.0 + o.reorder_fill_growth) * static_cast<double>(fill_at_ordering))
+              << name(mode) << " step " << step;
+        }
+        EXPECT_GT(chol.factor_nonzeros(), 0);
+        EXPECT_LE(chol.ordering_count(), chol.symbolic_count());
+        VecX b = VecX::LinSpaced(n, -1.0, 2.0);
+        EXPECT_LT(error_against_dense(chol, S, 0.0, b), 1e-10) << name(mode) << " step " << step;
+        // a second factorisation of the same version reuses everything
+        ASSERT_TRUE(chol.factorize(upper_of(S), 0.1, version));
+        EXPECT_LT(error_against_dense(chol, S, 0.1, b), 1e-10) << name(mode) << " step " << step;
+      }
+      if (reuse) {
+        EXPECT_LT(chol.ordering_count(), chol.symbolic_count()) << name(mode);
+        EXPECT_GE(reorders_from_growth, 1) << name(mode);  // the dense steps needed a new ordering
+      } else {
+        EXPECT_EQ(chol.ordering_count(), chol.symbolic_count()) << name(mode);
+      }
+      // a new size always gets a fresh ordering
+      const int orderings = chol.ordering_count();
+      const Eigen::MatrixXd T = make_spd(random_symmetric(n + 10, 20, rng), 0.3);
+      ASSERT_TRUE(chol.factorize(upper_of(T), 0.0, ++version));
+      EXPECT_EQ(chol.ordering_count(), orderings + 1);
+      EXPECT_LT(error_against_dense(chol, T, 0.0, VecX::Ones(n + 10)), 1e-10) << name(mode);
+    }
+}
+
+TEST(Cholesky, IndefiniteFailsAndLargeEnoughShiftSucceeds) {
+  std::mt19937_64 rng(17);
+  for (CholeskyMode mode : {CholeskyMode::Simplicial, CholeskyMode::Supernodal}) {
+    const int n = 120;
+    const Eigen::MatrixXd S = random_symmetric(n, 150, rng);
+    const double lmin = smallest_eigenvalue(S);
+    ASSERT_LT(lmin, -0.5);
+    const CholeskySolver::Matrix U = upper_of(S);
+    CholeskyOptions o;
+    o.mode = mode;
+    CholeskySolver chol(o);
+    EXPECT_FALSE(chol.factorize(U, 0.0, 1)) << name(mode);
+    EXPECT_THROW(chol.solve(VecX::Ones(n)), std::invalid_argument);
+    EXPECT_GT(chol.factor_nonzeros(), 0);  // the symbolic factor exists even when the numeric one failed
+    // just below −λ_min: still indefinite; just above: positive definite
+    EXPECT_FALSE(chol.factorize(U, -lmin - 0.01, 1)) << name(mode);
+    const double shift = -lmin + 0.01;
+    ASSERT_TRUE(chol.factorize(U, shift, 1)) << name(mode);
+    EXPECT_LT(error_against_dense(chol, S, shift, VecX::LinSpaced(n, 1.0, 3.0)), 1e-10) << name(mode);
+    // a failure after a success invalidates the factorisation
+    EXPECT_FALSE(chol.factorize(U, 0.0, 1));
+    EXPECT_THROW(chol.solve(VecX::Ones(n)), std::invalid_argument);
+    ASSERT_TRUE(chol.factorize(U, 1.0 - lmin, 1));
+    EXPECT_LT(error_against_dense(chol, S, 1.0 - lmin, VecX::Ones(n)), 1e-10) << name(mode);
+    EXPECT_EQ(chol.symbolic_count(), 1);
+    EXPECT_EQ(chol.numeric_count(), 5);
+  }
 }

@@ -2,6 +2,8 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <random>
+#include <vector>
 
 #include "ek/core/sparse_assembler.hpp"
 #include "ek/solver/eigen_analysis.hpp"
@@ -59,4 +61,54 @@ TEST(EigenAnalysis, RigidModesAreExcluded) {
   EXPECT_NEAR(without.values(0), 0.0, 1e-8);
   // graph Laplacian of a cycle: second eigenvalue 2 - 2 cos(2π/n), per coordinate
   EXPECT_NEAR(with.values(0), 2.0 - 2.0 * std::cos(2.0 * M_PI / n), 1e-8);
+}
+
+namespace {
+
+/// ‖(I − Q Qᵀ) v‖ / ‖v‖: how far v is from the span of the orthonormal Q.
+double outside_span(const Eigen::MatrixXd& Q, const VecX& v) { return (v - Q * (Q.transpose() * v)).norm() / v.norm(); }
+
+/// The rigid motions of the points (translations e_a, rotations e_a × (p − c)).
+std::vector<VecX> rigid_motions(const Points& P, int dofs) {
+  const int n = static_cast<int>(P.rows());
+  const Vec3 c = P.colwise().mean().transpose();
+  std::vector<VecX> out;
+  for (int a = 0; a < 3; ++a) {
+    VecX t = VecX::Zero(dofs), r = VecX::Zero(dofs);
+    for (int i = 0; i < n; ++i) {
+      t(3 * i + a) = 1.0;
+      r.segment<3>(3 * i) = Vec3::Unit(a).cross(Vec3(P.row(i).transpose()) - c);
+    }
+    out.push_back(t);
+    out.push_back(r);
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST(EigenAnalysis, RigidModesAreOrthonormalAndDropDegenerateRotations) {
+  // A generic cloud: 6 orthonormal modes spanning every rigid motion; the
+  // θ dofs (beyond 3n) are untouched without theta_begin.
+  std::mt19937_64 rng(9);
+  std::normal_distribution<double> N;
+  Points P(30, 3);
+  for (Eigen::Index i = 0; i < P.size(); ++i) P.data()[i] = 5.0 + N(rng);  // off the origin
+  const Eigen::MatrixXd Q = rigid_modes(P, 100);
+  ASSERT_EQ(Q.cols(), 6);
+  EXPECT_LT((Q.transpose() * Q - Eigen::MatrixXd::Identity(6, 6)).norm(), 1e-12);
+  EXPECT_EQ(Q.bottomRows(10).norm(), 0.0);
+  for (const VecX& v : rigid_motions(P, 100)) EXPECT_LT(outside_span(Q, v), 1e-12);
+  // Collinear points along a skew direction: the rotation about the line
+  // moves nothing, so only 5 modes remain, still orthonormal and spanning.
+  const Vec3 u = Vec3(1.0, 2.0, -0.5).normalized();
+  Points L(25, 3);
+  for (int i = 0; i < 25; ++i) L.row(i) = (Vec3(0.3, -1.0, 2.0) + 0.7 * i * u).transpose();
+  const Eigen::MatrixXd QL = rigid_modes(L, 75);
+  ASSERT_EQ(QL.cols(), 5);
+  EXPECT_LT((QL.transpose() * QL - Eigen::MatrixXd::Identity(5, 5)).norm(), 1e-12);
+  for (const VecX& v : rigid_motions(L, 75)) {
+    ASSERT_GT(v.norm(), 1e-3);
+    EXPECT_LT(outside_span(QL, v), 1e-10);
+  }
 }

@@ -1,7 +1,13 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <functional>
+#include <random>
+#include <vector>
 
+#include "ek/solver/eigen_analysis.hpp"
 #include "ek/solver/newton.hpp"
 
 using namespace ek;
@@ -118,4 +124,302 @@ TEST(Newton, RejectsBadOptionsAndInfeasibleStart) {
   NewtonOptions o;
   o.lambda_min = 0.0;
   EXPECT_THROW(minimize(f, o), std::invalid_argument);
+}
+
+namespace {
+
+/// f(x) = Σ_i (x_i² − 1)² + c Σ_i (x_i − x_{i+1})²: separated wells at ±1
+/// (the coupling shifts them), indefinite for |x_i| < 1/√3. With exact =
+/// false the Hessian's well curvature 12x² − 4 is clamped at 0 (a per-element
+/// PSD projection, as KnotObjective does for compressed edges).
+class ProjectableWells : public Objective {
+ public:
+  explicit ProjectableWells(int n, double c = 0.2) : x_(VecX::Zero(n)), c_(c) {}
+  int num_dofs() const override { return static_cast<int>(x_.size()); }
+  VecX dofs() const override { return x_; }
+  void set_dofs(const VecX& x) override { x_ = x; }
+  double energy() override {
+    double e = 0.0;
+    for (Eigen::Index i = 0; i < x_.size(); ++i) e += std::pow(x_(i) * x_(i) - 1.0, 2);
+    for (Eigen::Index i = 0; i + 1 < x_.size(); ++i) e += c_ * std::pow(x_(i) - x_(i + 1), 2);
+    return e;
+  }
+  VecX gradient() override {
+    VecX g(x_.size());
+    for (Eigen::Index i = 0; i < x_.size(); ++i) g(i) = 4.0 * x_(i) * (x_(i) * x_(i) - 1.0);
+    for (Eigen::Index i = 0; i + 1 < x_.size(); ++i) {
+      g(i) += 2.0 * c_ * (x_(i) - x_(i + 1));
+      g(i + 1) -= 2.0 * c_ * (x_(i) - x_(i + 1));
+    }
+    return g;
+  }
+  void assemble_hessian(SparseAssembler& A, bool exact) override {
+    ++(exact ? exact_hessians : projected_hessians);
+    A.begin(num_dofs());
+    A.segment(0, 1);
+    for (int i = 0; i < num_dofs(); ++i) {
+      const double w = 12.0 * x_(i) * x_(i) - 4.0;
+      A.add(i, i, exact ? w : std::max(w, 0.0));
+    }
+    for (int i = 0; i + 1 < num_dofs(); ++i) {
+      A.add(i, i, 2.0 * c_);
+      A.add(i + 1, i + 1, 2.0 * c_);
+      A.add(i, i + 1, -2.0 * c_);
+    }
+    A.end();
+  }
+  int exact_hessians = 0, projected_hessians = 0;
+
+ private:
+  VecX x_;
+  double c_;
+};
+
+/// m points in space joined pairwise by springs of rest lengths r_ij (those
+/// of a reference shape): E = Σ_{i<j} ½ (|p_i − p_j| − r_ij)². Invariant
+/// under rigid motions (6 zero modes at the minimum E = 0, the reference shape
+/// up to a rigid motion or reflection). exact = false clamps the transverse
+/// curvature (1 − r/l) of compressed springs at 0, like the rod's stretching.
+class SpringFrame : public Objective {
+ public:
+  SpringFrame(const Points& reference, bool with_rigid_modes)
+      : m_(static_cast<int>(reference.rows())), rest_(m_, m_), x_(as_vector(reference)), rigid_(with_rigid_modes) {
+    for (int i = 0; i < m_; ++i)
+      for (int j = 0; j < m_; ++j) rest_(i, j) = (reference.row(i) - reference.row(j)).norm();
+  }
+  int num_dofs() const override { return 3 * m_; }
+  VecX dofs() const override { return x_; }
+  void set_dofs(const VecX& x) override { x_ = x; }
+  Vec3 p(int i) const { return x_.segment<3>(3 * i); }
+  double energy() override {
+    double e = 0.0;
+    for (int i = 0; i < m_; ++i)
+      for (int j = i + 1; j < m_; ++j) e += 0.5 * std::pow((p(i) - p(j)).norm() - rest_(i, j), 2);
+    return e;
+  }
+  VecX gradient() override {
+    VecX g = VecX::Zero(3 * m_);
+    for (int i = 0; i < m_; ++i)
+      for (int j = i + 1; j < m_; ++j) {
+        const Vec3 u = p(i) - p(j);
+        const double l = u.norm();
+        const Vec3 f = (l - rest_(i, j)) * u / l;
+        g.segment<3>(3 * i) += f;
+        g.segment<3>(3 * j) -= f;
+      }
+    return g;
+  }
+  void assemble_hessian(SparseAssembler& A, bool exact) override {
+    ++(exact ? exact_hessians : projected_hessians);
+    A.begin(num_dofs());
+    A.segment(0, 1);
+    for (int i = 0; i < m_; ++i)
+      for (int j = i + 1; j < m_; ++j) {
+        const Vec3 u = p(i) - p(j);
+        const double l = u.norm();
+        const Vec3 t = u / l;
+        double across = 1.0 - rest_(i, j) / l;
+        if (!exact) across = std::max(across, 0.0);
+        const Mat3 K = t * t.transpose() + across * (Mat3::Identity() - t * t.transpose());
+        Eigen::Matrix<double, 6, 6> L;
+        L << K, -K, -K, K;
+        const std::array<int, 6> idx = {3 * i, 3 * i + 1, 3 * i + 2, 3 * j, 3 * j + 1, 3 * j + 2};
+        A.add_local(idx, L);
+      }
+    A.end();
+  }
+  Eigen::MatrixXd rigid_modes() override {
+    if (!rigid_) return {};
+    ++rigid_calls;
+    return ek::rigid_modes(as_points(x_), num_dofs());
+  }
+  /// Records every accepted step Δ from the previous iterate x_k: the largest
+  /// (‖QᵀΔ‖ − 1e-14 ‖x_k‖)/‖Δ‖ over the steps, Q the rigid modes at x_k.
+  void accept() override {
+    const VecX step = x_ - previous_;
+    if (step.norm() > 0.0) {
+      const Eigen::MatrixXd Q = ek::rigid_modes(as_points(previous_), num_dofs());
+      // (a step of size ~ε|x| carries the round-off of x_{k+1} − x_k)
+      const double roundoff = 1e-14 * previous_.norm();
+      rigid_fraction = std::max(rigid_fraction, std::max(0.0, (Q.transpose() * step).norm() - roundoff) / step.norm());
+    }
+    previous_ = x_;
+  }
+  void start_tracking() { previous_ = x_; }
+  double rigid_fraction = 0.0;
+  /// Largest |r_ij − |p_i − p_j|| (0 at a minimum).
+  double shape_error() const {
+    double e = 0.0;
+    for (int i = 0; i < m_; ++i)
+      for (int j = i + 1; j < m_; ++j) e = std::max(e, std::fabs((p(i) - p(j)).norm() - rest_(i, j)));
+    return e;
+  }
+  Vec3 centroid() const { return as_points(x_).colwise().mean().transpose(); }
+  int exact_hessians = 0, projected_hessians = 0, rigid_calls = 0;
+
+ private:
+  int m_;
+  Eigen::MatrixXd rest_;
+  VecX x_;
+  bool rigid_;
+  VecX previous_;
+};
+
+Points spring_reference() {
+  // an irregular rigid cluster of 7 points
+  Points P(7, 3);
+  P << 0, 0, 0, 1.2, 0.1, -0.2, 0.3, 1.1, 0.4, -0.4, 0.5, 1.3, 1.0, 1.2, 0.9, -0.9, -0.6, 0.2, 0.5, -0.8, 1.0;
+  return P;
+}
+
+/// The reference moved rigidly and perturbed (N(0, sigma) per coordinate).
+Points spring_start(double sigma, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> N(0.0, sigma);
+  const double a = 0.7;
+  Mat3 R;
+  R << std::cos(a), -std::sin(a), 0, std::sin(a), std::cos(a), 0, 0, 0, 1;
+  Points P = (spring_reference() * R.transpose()).rowwise() + Vec3(2.0, -1.0, 0.5).transpose();
+  for (Eigen::Index i = 0; i < P.size(); ++i) P.data()[i] += N(rng);
+  return P;
+}
+
+}  // namespace
+
+TEST(Newton, HybridAndExactHessiansReachTheSameMinimum) {
+  VecX x0(12);
+  for (int i = 0; i < 12; ++i) x0(i) = 0.45 + 0.03 * i * (i % 2 ? 1 : -1);  // in the indefinite band
+  NewtonOptions exact;
+  exact.hessian = HessianMode::Exact;
+  NewtonOptions hybrid;  // the default
+  ASSERT_EQ(hybrid.hessian, HessianMode::Hybrid);
+  ProjectableWells fe(12), fh(12);
+  fe.set_dofs(x0);
+  fh.set_dofs(x0);
+  const NewtonReport re = minimize(fe, exact), rh = minimize(fh, hybrid);
+  for (const NewtonReport* r : {&re, &rh}) {
+    EXPECT_EQ(r->status, SolverStatus::ConvergedStable);
+    EXPECT_LE(r->gradient_norm, 1e-8);
+    EXPECT_TRUE(r->hessian_psd);
+  }
+  // the minimum is non-degenerate (H ≥ 8 − 8c there): |x − x*| <= |g| / λ_min
+  EXPECT_LT((fe.dofs() - fh.dofs()).lpNorm<Eigen::Infinity>(), 1e-8);
+  EXPECT_NEAR(re.energy, rh.energy, 1e-14);
+  for (int i = 0; i < 12; ++i) EXPECT_NEAR(fe.dofs()(i), 1.0, 0.05);
+  // Exact: every Hessian exact; Hybrid: projected far from the minimum, exact near it
+  EXPECT_EQ(fe.projected_hessians, 0);
+  EXPECT_EQ(re.exact_iterations, re.iterations - re.saddle_escapes);
+  EXPECT_GT(fh.projected_hessians, 0);
+  EXPECT_GT(fh.exact_hessians, 0);  // the stability test at the end is exact
+  EXPECT_LT(rh.exact_iterations, rh.iterations);
+  EXPECT_EQ(to_string(HessianMode::Exact), "exact");
+  EXPECT_EQ(to_string(HessianMode::Hybrid), "hybrid");
+}
+
+TEST(Newton, HybridAndExactHessiansRecoverTheSpringShape) {
+  // Compressed and stretched springs: the exact Hessian is indefinite at the start.
+  for (std::uint64_t seed : {1u, 2u, 3u}) {
+    const Points start = spring_start(0.2, seed);
+    double E_start = 0.0;
+    for (HessianMode mode : {HessianMode::Exact, HessianMode::Hybrid}) {
+      SpringFrame f(spring_reference(), true);
+      f.set_dofs(as_vector(start));
+      E_start = f.energy();
+      NewtonOptions o;
+      o.hessian = mode;
+      const NewtonReport r = minimize(f, o);
+      EXPECT_EQ(r.status, SolverStatus::ConvergedStable) << to_string(mode) << " seed " << seed;
+      EXPECT_LE(r.gradient_norm, o.gradient_tolerance);
+      EXPECT_LT(f.shape_error(), 1e-8) << to_string(mode) << " seed " << seed;  // E = 0: the reference shape
+      EXPECT_LT(r.energy, 1e-16);
+      if (mode == HessianMode::Hybrid) {
+        EXPECT_GT(f.projected_hessians, 0);
+      } else {
+        EXPECT_EQ(f.projected_hessians, 0);
+      }
+    }
+    ASSERT_GT(E_start, 1e-2);
+  }
+}
+
+TEST(Newton, RigidMotionRemovalMakesStepsOrthogonalToRigidModes) {
+  for (std::uint64_t seed : {4u, 5u, 6u}) {
+    const Points start = spring_start(0.15, seed);
+    SpringFrame f(spring_reference(), true);
+    f.set_dofs(as_vector(start));
+    f.start_tracking();
+    const Vec3 c0 = f.centroid();
+    NewtonOptions o;
+    ASSERT_TRUE(o.remove_rigid_motions);  // the default
+    const NewtonReport r = minimize(f, o);
+    EXPECT_EQ(r.status, SolverStatus::ConvergedStable) << seed;
+    EXPECT_LT(f.shape_error(), 1e-8) << seed;
+    EXPECT_GT(f.rigid_calls, 0);
+    EXPECT_EQ(r.saddle_escapes, 0);
+    // every accepted step is orthogonal to the rigid modes where it started
+    EXPECT_LT(f.rigid_fraction, 1e-10) << seed;
+    EXPECT_LT((f.centroid() - c0).norm(), 1e-12) << seed;
+    // without the removal: the same shape, but steps with rigid components
+    // (the shifted Newton step turns, since rotations are not null modes of H
+    // away from the minimum)
+    SpringFrame g(spring_reference(), true);
+    g.set_dofs(as_vector(start));
+    g.start_tracking();
+    NewtonOptions keep = o;
+    keep.remove_rigid_motions = false;
+    const NewtonReport rk = minimize(g, keep);
+    EXPECT_EQ(rk.status, SolverStatus::ConvergedStable) << seed;
+    EXPECT_LT(g.shape_error(), 1e-8) << seed;
+    EXPECT_EQ(g.rigid_calls, 0);
+    EXPECT_GT(g.rigid_fraction, 1e-6) << seed;
+  }
+}
+
+TEST(Newton, LazyStepsConvergeToTheSamePoint) {
+  VecX x0(20);
+  for (int i = 0; i < 20; ++i) x0(i) = (i % 3 == 0 ? -1.0 : 1.0) * (2.5 + 0.1 * i);  // far out on the walls
+  ProjectableWells f0(20), fl(20);
+  f0.set_dofs(x0);
+  fl.set_dofs(x0);
+  NewtonOptions o;
+  o.gradient_tolerance = 1e-10;
+  const NewtonReport r0 = minimize(f0, o);
+  NewtonOptions lazy = o;
+  lazy.max_lazy_steps = 3;
+  const NewtonReport rl = minimize(fl, lazy);
+  EXPECT_EQ(r0.lazy_steps, 0);
+  EXPECT_EQ(rl.status, SolverStatus::ConvergedStable);
+  EXPECT_LE(rl.gradient_norm, o.gradient_tolerance);
+  EXPECT_GT(rl.lazy_steps, 0);  // the reuse really happened
+  // fewer Hessians than iterations: lazy steps factorise nothing
+  EXPECT_LT(fl.exact_hessians + fl.projected_hessians, rl.iterations + 1);
+  EXPECT_LT((fl.dofs() - f0.dofs()).lpNorm<Eigen::Infinity>(), 1e-9);
+  // the same with rigid motions to remove and springs
+  const Points start = spring_start(0.2, 8);
+  SpringFrame s0(spring_reference(), true), sl(spring_reference(), true);
+  s0.set_dofs(as_vector(start));
+  sl.set_dofs(as_vector(start));
+  const NewtonReport q0 = minimize(s0, NewtonOptions{});
+  NewtonOptions lazy_springs;
+  lazy_springs.max_lazy_steps = 2;
+  const NewtonReport ql = minimize(sl, lazy_springs);
+  EXPECT_EQ(q0.status, SolverStatus::ConvergedStable);
+  EXPECT_EQ(ql.status, SolverStatus::ConvergedStable);
+  EXPECT_LT(sl.shape_error(), 1e-8);
+}
+
+TEST(Newton, NewOptionsAreValidated) {
+  ProjectableWells f(3);
+  for (auto mutate : std::vector<std::function<void(NewtonOptions&)>>{
+           [](NewtonOptions& o) { o.hybrid_switch = 0.5; }, [](NewtonOptions& o) { o.max_lazy_steps = -1; },
+           [](NewtonOptions& o) { o.max_expansion = 0.5; }, [](NewtonOptions& o) { o.expansion_ratio = 0.0; },
+           [](NewtonOptions& o) { o.max_shift_attempts = 0; }}) {
+    NewtonOptions o;
+    mutate(o);
+    EXPECT_THROW(minimize(f, o), std::invalid_argument);
+  }
+  const NewtonOptions paper = NewtonOptions::paper();
+  EXPECT_EQ(paper.hessian, HessianMode::Exact);
+  EXPECT_FALSE(paper.remove_rigid_motions);
+  EXPECT_NO_THROW(paper.validate());
 }

@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "ek/core/errors.hpp"
 #include "ek/embedding/embedding.hpp"
@@ -155,4 +156,49 @@ TEST(Relax, RigidModesAreZeroModesOfTheTwistedRing) {
   const Eigen::MatrixXd Q = rigid_modes(rod.positions(), rod.num_dofs(), 3 * 60);
   ASSERT_EQ(Q.cols(), 7);
   for (int k = 0; k < Q.cols(); ++k) EXPECT_LT((H * Q.col(k)).norm(), 1e-9 * H.norm()) << "mode " << k;
+}
+
+TEST(Relax, DefaultAndPaperNewtonOptionsReachStableEquilibriaOfTheSameKnot) {
+  // The hybrid default (projected Hessians far from equilibrium, rigid-mode
+  // removal) and the paper's exact Newton (NewtonOptions::paper()) both end
+  // converged-stable without changing the knot; the paper's iterations all
+  // use the exact Hessian. (They may stop in different nearby minima of a
+  // flat landscape, so the energies are not compared.)
+  struct Case {
+    const char* name;
+    Points curve;
+  };
+  const std::vector<Case> cases = {
+      {"4_1-smooth", read_curve(fixtures::peer_dir() + "/4_1-smooth.obj")},
+      {"trefoil", fixtures::torus_knot(48, 2, 3, 4.0, 1.6)},
+  };
+  for (const Case& c : cases) {
+    const AlexanderPolynomial input = alexander(c.curve);
+    ASSERT_NE(input, alexander(unit_ring(12)));  // a real knot
+    const double ell = edge_lengths(c.curve).mean();
+    const double tol = 1e-8 / (ell * ell);  // RelaxOptions::tolerance's default for the paper's material
+    RelaxOptions start;
+    start.max_iterations = 0;  // the input's energy
+    const double E0 = relax(c.curve, start).energy.total;
+    RelaxOptions paper;
+    paper.newton = NewtonOptions::paper();
+    RelaxOptions defaults;
+    std::vector<RelaxResult> results;
+    for (const RelaxOptions* o : {&paper, &defaults}) {
+      const RelaxResult r = relax(c.curve, *o);
+      const char* which = o == &paper ? "paper" : "default";
+      EXPECT_EQ(r.status(), "converged-stable") << c.name << " " << which;
+      EXPECT_TRUE(r.alexander_preserved) << c.name << " " << which;
+      EXPECT_EQ(r.result_alexander, input) << c.name << " " << which;
+      EXPECT_LE(r.report.gradient_norm, tol) << c.name << " " << which;
+      EXPECT_LT(r.energy.total, E0) << c.name << " " << which;
+      EXPECT_GT(r.min_distance, 0.0) << c.name << " " << which;
+      results.push_back(r);
+    }
+    const NewtonReport& rp = results[0].report;
+    const NewtonReport& rd = results[1].report;
+    EXPECT_EQ(rp.exact_iterations, rp.iterations - rp.saddle_escapes) << c.name;
+    EXPECT_LT(rd.exact_iterations, rd.iterations) << c.name;  // the hybrid default projected some
+    EXPECT_EQ(results[0].result_alexander, results[1].result_alexander) << c.name;
+  }
 }

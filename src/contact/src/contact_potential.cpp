@@ -61,7 +61,8 @@ void ContactPotential::update(const Points& x) {
     for (int i = 0; i < n_ && reuse; ++i) reuse = (x.row(i) - x_ref_.row(i)).squaredNorm() < limit;
   }
   if (!reuse) {
-    verlet_ = broad_.static_pairs(x, 0.5 * (dhat + skin));
+    // pairs within d̂ + hessian_margin now, and (with the skin) until a vertex has moved skin/2
+    verlet_ = broad_.static_pairs(x, 0.5 * (dhat + options_.hessian_margin + skin));
     x_ref_ = x;
     verlet_valid_ = skin > 0.0;
     ++broad_phase_runs_;
