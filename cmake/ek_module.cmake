@@ -38,13 +38,13 @@ function(ek_add_module NAME)
   set_property(GLOBAL PROPERTY EK_MODULE_DEPS_${NAME} "${ARG_DEPS}")
 endfunction()
 
-# ek_add_gtest(NAME SOURCES ... LIBS ... [LABEL label] [TIMEOUT seconds])
+# ek_add_gtest(NAME SOURCES ... LIBS ... [LABEL label] [TIMEOUT seconds] [FIXTURE name])
 # One GoogleTest executable; each TEST becomes a CTest entry with the label:
 # unit (default), parsers (also built with sanitizers), stress (short, in
 # `make test`), stress-long (`make stress` only), paper (claims of the paper).
 # (gtest_discover_tests cannot pass a list of labels, hence one label.)
 function(ek_add_gtest NAME)
-  cmake_parse_arguments(ARG "" "TIMEOUT;LABEL" "SOURCES;LIBS" ${ARGN})
+  cmake_parse_arguments(ARG "" "TIMEOUT;LABEL;FIXTURE" "SOURCES;LIBS" ${ARGN})
   add_executable(${NAME} ${ARG_SOURCES})
   target_link_libraries(${NAME} PRIVATE ${ARG_LIBS} ek_testing GTest::gtest GTest::gtest_main ek_warnings)
   if(NOT ARG_LABEL)
@@ -53,7 +53,11 @@ function(ek_add_gtest NAME)
   if(NOT ARG_TIMEOUT)
     set(ARG_TIMEOUT 600)
   endif()
+  set(fixture_properties "")
+  if(ARG_FIXTURE)
+    set(fixture_properties FIXTURES_REQUIRED ${ARG_FIXTURE})
+  endif()
   gtest_discover_tests(${NAME}
-    PROPERTIES LABELS ${ARG_LABEL} TIMEOUT ${ARG_TIMEOUT}
+    PROPERTIES LABELS ${ARG_LABEL} TIMEOUT ${ARG_TIMEOUT} ${fixture_properties}
     DISCOVERY_TIMEOUT 60)
 endfunction()

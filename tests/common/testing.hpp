@@ -1,10 +1,13 @@
 #pragma once
 // Shared test helpers: data locations, seeded random curves, finite differences.
+#include <gtest/gtest.h>
+
 #include <cstdint>
 #include <functional>
 #include <random>
 #include <string>
 
+#include "ek/core/errors.hpp"
 #include "ek/geometry/types.hpp"
 
 namespace ek::fixtures {
@@ -27,6 +30,17 @@ Points rigid_copy(const Points& P, const Mat3& R, const Vec3& t, int shift);
 
 /// A random rotation matrix from a seed.
 Mat3 random_rotation(std::uint64_t seed);
+
+/// Expects f() to throw InputError whose message contains `needle`.
+template <class F>
+void expect_input_error(F f, const std::string& needle) {
+  try {
+    f();
+    ADD_FAILURE() << "expected InputError containing '" << needle << "'";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
+  }
+}
 
 /// Central finite-difference derivative of f along the coordinates of x:
 /// returns g with g_i ≈ (f(x + h e_i) - f(x - h e_i)) / 2h.

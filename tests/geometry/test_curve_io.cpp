@@ -11,19 +11,7 @@
 
 using namespace ek;
 
-namespace {
-
-template <class F>
-void expect_input_error(F f, const std::string& needle) {
-  try {
-    f();
-    FAIL() << "expected InputError containing '" << needle << "'";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
-  }
-}
-
-}  // namespace
+using ek::fixtures::expect_input_error;
 
 TEST(CurveIO, ReadsPeerFilesAsTheyAre) {
   const std::string dir = fixtures::peer_dir();

@@ -1,24 +1,12 @@
 #include <gtest/gtest.h>
 
 #include "ek/core/errors.hpp"
+#include "testing.hpp"
 #include "ek/knots/codes.hpp"
 
 using namespace ek;
 
-namespace {
-
-// Expects InputError whose message contains `needle`.
-template <class F>
-void expect_input_error(F f, const std::string& needle) {
-  try {
-    f();
-    FAIL() << "expected InputError containing '" << needle << "'";
-  } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
-  }
-}
-
-}  // namespace
+using ek::fixtures::expect_input_error;
 
 TEST(DTCode, ParsesTableSpelling) {
   auto dt = parse_dt("[4; 6; 8; 2]");
