@@ -49,9 +49,10 @@ int cmd_relax(int argc, char** argv) {
   std::string file, out;
   std::optional<double> link, planar;
   bool release = false, json = false, eigen = false, full = false, stop_at_saddle = false;
+  std::string method = "default";
   RelaxOptions opt;
   ArgParser args("relax", "FILE [-o OUT] [--link LK] [--planar H [--release]] [--tol T] [--max-iter N] [--radius R] "
-                          "[--young E] [--poisson NU] [--full-model] [--eigen] [--json]");
+                          "[--young E] [--poisson NU] [--full-model] [--method M] [--eigen] [--json]");
   args.positional("FILE", &file, "closed curve (.obj or .txt); its edge lengths are the rest lengths");
   args.option("-o,--output", &out, "write the equilibrium here (.obj or .txt), atomically");
   args.option("--link", &link, "prescribe the link Lk = Tw + Wr (full model with Theta fixed); default: Theta free");
@@ -66,9 +67,21 @@ int cmd_relax(int argc, char** argv) {
   args.flag("--full-model", &full, "use the full model (positions, theta, Theta) even when Theta is free");
   args.flag("--eigen", &eigen, "also report the smallest non-rigid eigenvalue of the Hessian");
   args.flag("--stop-at-saddle", &stop_at_saddle, "report converged-unstable at a saddle instead of leaving it");
+  args.option("--method", &method,
+              "Newton directions: default (hybrid: projected Hessian far from equilibrium, exact near it), "
+              "exact (exact Hessian every iteration) or paper (NewtonOptions::paper())");
   args.flag("--verbose", &opt.newton.verbose, "print one line per Newton iteration on stderr");
   args.flag("--json", &json, "print one JSON object");
   if (!args.parse(argc, argv)) return 0;
+  if (method == "exact") {
+    opt.newton.hessian = HessianMode::Exact;
+  } else if (method == "paper") {
+    const bool verbose = opt.newton.verbose;
+    opt.newton = NewtonOptions::paper();
+    opt.newton.verbose = verbose;
+  } else if (method != "default") {
+    throw InputError("--method must be default, exact or paper, not '" + method + "'");
+  }
   if (!out.empty()) check_writable(out);
   if (release && !planar) throw InputError("--release needs --planar H");
   opt.link = link;

@@ -136,7 +136,10 @@ struct NewtonOptions {
   /// expansion_ratio·|g·d| (a quadratic model predicts |g·d|/2), steps of
   /// 2, 4, ... up to max_expansion times d are tried (within the
   /// collision-free bound) while E keeps decreasing. 1 disables it.
-  double max_expansion = 16.0;
+  /// Default 1: expanded steps cut the run time per equilibrium but carry
+  /// samples across basins, so fewer distinct equilibria are found (measured
+  /// on 8_1, 40 lattice samples: 2 clusters with 16, 4 without).
+  double max_expansion = 1.0;
   double expansion_ratio = 0.75;    ///< [1] see max_expansion
   /// Report converged-unstable at a saddle instead of leaving it along a
   /// direction of negative curvature.

@@ -1,0 +1,54 @@
+// `knots relax`: the command-line contract of the solver (README, issue 6).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "cli_runner.hpp"
+
+using ek::clitest::run;
+using ek::clitest::temp_dir;
+
+namespace {
+std::string trefoil(const std::string& dir) {
+  const std::string f = dir + "/coil.obj";
+  const auto r = run("embed 3_1 --from braid -n 120 -o " + f);
+  EXPECT_EQ(r.status, 0) << r.err;
+  return f;
+}
+}  // namespace
+
+TEST(RelaxCli, RelaxesKeepsTheKnotAndWritesTheEquilibrium) {
+  const std::string dir = temp_dir("relax_cli_ok");
+  const std::string in = trefoil(dir), out = dir + "/eq.obj";
+  for (const char* method : {"default", "exact"}) {
+    const auto r = run("relax " + in + " -o " + out + " --method " + std::string(method) + " --json");
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto j = r.json();
+    EXPECT_EQ(j.at("status"), "converged-stable") << method;
+    EXPECT_TRUE(j.at("alexander_preserved").get<bool>()) << method;
+    EXPECT_EQ(j.at("alexander"), (std::vector<int>{1, -1, 1})) << method;  // trefoil
+    EXPECT_LE(j.at("gradient_norm").get<double>(), 1e-7) << method;
+    EXPECT_NEAR(j.at("link").get<double>(), j.at("twist").get<double>() + j.at("writhe").get<double>(), 1e-9);
+    std::ifstream f(out);
+    EXPECT_TRUE(f.good()) << method;
+  }
+  // the relaxed curve is an equilibrium: relaxing it again takes (almost) no work
+  const auto again = run("relax " + out + " --json");
+  ASSERT_EQ(again.status, 0) << again.err;
+  EXPECT_LE(again.json().at("iterations").get<int>(), 5);
+}
+
+TEST(RelaxCli, BadInputIsOneMessageAndStatusTwo) {
+  const std::string dir = temp_dir("relax_cli_bad");
+  const std::string in = trefoil(dir);
+  const std::vector<std::string> cases = {in + " --method newton", in + " --release", dir + "/missing.obj",
+                                          in + " -o /nonexistent-dir/x.obj", in + " --radius -1"};
+  for (const auto& args : cases) {
+    const auto r = run("relax " + args);
+    EXPECT_EQ(r.status, 2) << args << ": " << r.err;
+    EXPECT_FALSE(r.err.empty()) << args;
+  }
+}
