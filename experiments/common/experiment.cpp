@@ -1,0 +1,114 @@
+#include "experiment.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+
+#include "ek/core/atomic_file.hpp"
+#include "ek/core/errors.hpp"
+
+namespace ek::exp {
+
+namespace fs = std::filesystem;
+
+double elapsed_seconds() {
+  static const auto t0 = std::chrono::steady_clock::now();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+Args parse_args(int argc, char** argv, const std::string& name, const std::string& description) {
+  elapsed_seconds();
+  Args a;
+  auto fail = [&](const std::string& why) {
+    std::cerr << name << ": error: " << why << std::endl;
+    std::exit(2);
+  };
+  for (int i = 1; i < argc; ++i) {
+    const std::string s = argv[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= argc) fail("option " + s + " needs a value");
+      return argv[++i];
+    };
+    if (s == "--help" || s == "-h") {
+      std::cout << "usage: " << name << " --scale ci|default|paper --out DIR [--jobs J]\n" << description << "\n";
+      std::exit(0);
+    } else if (s == "--scale") {
+      a.scale_name = value();
+      if (a.scale_name == "ci") a.scale = Scale::CI;
+      else if (a.scale_name == "default") a.scale = Scale::Default;
+      else if (a.scale_name == "paper") a.scale = Scale::Paper;
+      else fail("--scale '" + a.scale_name + "': expected ci, default or paper");
+    } else if (s == "--out") {
+      a.out = value();
+    } else if (s == "--jobs") {
+      const std::string v = value();
+      char* end = nullptr;
+      const long j = std::strtol(v.c_str(), &end, 10);
+      if (*end != '\0' || j < 1 || j > 256) fail("--jobs '" + v + "': expected an integer in 1..256");
+      a.jobs = static_cast<int>(j);
+    } else {
+      fail("unknown argument '" + s + "' (see --help)");
+    }
+  }
+  if (a.out.empty()) fail("missing --out DIR");
+  std::error_code ec;
+  fs::create_directories(a.out, ec);
+  if (ec) fail("cannot create '" + a.out + "': " + ec.message());
+  a.results = fs::path(a.out).parent_path().string();
+  if (a.results.empty()) a.results = ".";
+  return a;
+}
+
+int run_experiment(int argc, char** argv, const std::string& name, const std::string& description,
+                   const std::function<void(const Args&)>& body) {
+  const Args a = parse_args(argc, argv, name, description);
+  try {
+    body(a);
+  } catch (const InputError& e) {
+    std::cerr << name << ": error: " << e.what() << std::endl;
+    return 2;
+  }
+  return 0;
+}
+
+void announce(const Args& a, const std::string& name, const std::string& what, double expected) {
+  std::string t;
+  if (expected < 120) t = std::to_string(static_cast<int>(std::ceil(expected))) + " s";
+  else if (expected < 7200) t = std::to_string(static_cast<int>(std::ceil(expected / 60))) + " min";
+  else t = std::to_string(static_cast<int>(std::ceil(expected / 3600))) + " h";
+  std::cout << "experiment " << name << " at scale " << a.scale_name << ": " << what << "; expected run time about "
+            << t << " on " << a.jobs << " jobs" << std::endl;
+}
+
+void write_text(const std::string& path, const std::string& text) {
+  AtomicFile f(path);
+  f.stream() << text;
+  f.commit();
+}
+
+void write_json(const std::string& path, const nlohmann::ordered_json& j) { write_text(path, j.dump(2) + "\n"); }
+
+Csv::Csv(std::string path, std::vector<std::string> header) : path_(std::move(path)), columns_(header.size()) {
+  row(header);
+}
+
+Csv& Csv::row(const std::vector<std::string>& cells) {
+  require(cells.size() == columns_, "Csv::row: wrong number of cells");
+  for (size_t k = 0; k < cells.size(); ++k) text_ += (k ? "," : "") + cells[k];
+  text_ += "\n";
+  return *this;
+}
+
+void Csv::commit() { write_text(path_, text_); }
+
+std::string Csv::num(double x, int digits) {
+  if (!std::isfinite(x)) return "nan";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*g", digits, x);
+  return buf;
+}
+
+}  // namespace ek::exp

@@ -1,0 +1,68 @@
+#pragma once
+// Shared plumbing of the paper experiments: the SCALE knob, output folders,
+// crash-safe CSV/JSON results, and the run-time estimate printed before a run.
+// Experiments are thin programs over the library; figure scripts read only
+// what they write.
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "ek/core/errors.hpp"
+
+namespace ek::exp {
+
+/// How much of the paper's computation an experiment repeats.
+///  - ci:      fits the CI budget together with every other test (minutes)
+///  - default: what `make figures` runs (all experiments together <= 2 h on 2 cores)
+///  - paper:   the paper's scale (all 2,977 knots, adaptive sampling up to 500)
+enum class Scale { CI, Default, Paper };
+
+struct Args {
+  Scale scale = Scale::Default;
+  std::string scale_name = "default";
+  std::string out;        ///< output folder of this experiment
+  std::string results;    ///< results root (parent of the experiments' folders)
+  int jobs = 2;           ///< parallel relaxations
+};
+
+/// Parses `--scale ci|default|paper --out DIR [--jobs J]` (and --help);
+/// creates DIR. Bad arguments: one line on stderr, exit status 2.
+Args parse_args(int argc, char** argv, const std::string& name, const std::string& description);
+
+/// Pick a value by scale.
+template <class T>
+T by_scale(const Args& a, T ci, T def, T paper) {
+  return a.scale == Scale::CI ? ci : a.scale == Scale::Default ? def : paper;
+}
+
+/// Prints "experiment NAME at scale S: WHAT; expected run time about T on J jobs".
+void announce(const Args& a, const std::string& name, const std::string& what, double expected_seconds);
+
+/// Writes text atomically (temporary file + rename).
+void write_text(const std::string& path, const std::string& text);
+/// Writes a JSON document (pretty) atomically.
+void write_json(const std::string& path, const nlohmann::ordered_json& j);
+
+/// A CSV table written atomically on commit().
+class Csv {
+ public:
+  Csv(std::string path, std::vector<std::string> header);
+  Csv& row(const std::vector<std::string>& cells);
+  void commit();
+  static std::string num(double x, int digits = 12);
+
+ private:
+  std::string path_, text_;
+  size_t columns_;
+};
+
+/// Wall-clock seconds since the first call.
+double elapsed_seconds();
+
+/// The main of an experiment: parses the arguments, runs `body`, and turns
+/// bad input (InputError) into one line on stderr and exit status 2.
+int run_experiment(int argc, char** argv, const std::string& name, const std::string& description,
+                   const std::function<void(const Args&)>& body);
+
+}  // namespace ek::exp

@@ -1,0 +1,35 @@
+#pragma once
+// The experiments' parameters per scale, in one place (README "Reproducing
+// the paper" lists them). Times are estimates from measured per-relaxation
+// costs on the reference machine (2 cores).
+#include <string>
+#include <vector>
+
+#include "ek/dataset/pipeline.hpp"
+#include "experiment.hpp"
+
+namespace ek::exp {
+
+/// [s] measured median wall time of one relaxation at n = 400 on one core,
+/// used for the run-time estimates printed before a run.
+inline constexpr double kSecondsPerRelaxation = 1.5;
+
+/// The cut (distance 1 - similarity) at which equilibria count as the same
+/// state: used for every knot (clusters, distinct equilibria) and as the
+/// novelty distance δ of adaptive sampling.
+inline constexpr double kClusterCut = 0.05;
+
+/// An equilibrium is approximately planar when its 3D-ness (shortest over
+/// longest edge of the oriented bounding box) is below this.
+inline constexpr double kPlanarThreedim = 0.1;
+
+/// Options of the data-set runs shared by the experiments.
+inline ExploreOptions base_options(const Args& a) {
+  ExploreOptions o;
+  o.jobs = a.jobs;
+  o.novelty_distance = kClusterCut;
+  o.seed = 1;
+  return o;
+}
+
+}  // namespace ek::exp

@@ -1,0 +1,88 @@
+// exp_multistability: the distinct equilibria of 4_1 (paper Fig. 2) and 8_1
+// (Fig. 8), and the clustering of 7_7 (Fig. 6). Each knot is sampled and
+// relaxed, its equilibria clustered by complete linkage on 1 - similarity and
+// cut at kClusterCut (the same cut for every knot); a cluster is one
+// distinct equilibrium, represented by its lowest-energy member.
+//   ci: 40 samples each; default: 150 (4_1, 8_1) and 80 (7_7); paper: 500.
+// Writes multistability.h5 (a data set), clusters_<knot>.csv and summary.json.
+#include <algorithm>
+#include <iostream>
+
+#include "ek/analysis/clustering.hpp"
+#include "ek/analysis/mds.hpp"
+#include "ek/dataset/run.hpp"
+#include "experiment.hpp"
+#include "scales.hpp"
+
+using namespace ek;
+using namespace ek::exp;
+
+int main(int argc, char** argv) {
+  return run_experiment(argc, argv, "exp_multistability", "Distinct equilibria of 4_1, 8_1 and 7_7.", [](const Args& a) {
+    const std::vector<std::string> names = {"4_1", "7_7", "8_1"};
+    const int many = by_scale(a, 40, 150, 500), some = by_scale(a, 40, 80, 500);
+    announce(a, "exp_multistability", "4_1 and 8_1 with " + std::to_string(many) + " samples, 7_7 with " +
+                                          std::to_string(some),
+             (2.0 * many + some) * kSecondsPerRelaxation / a.jobs);
+    const std::string file = a.out + "/multistability.h5";
+    for (const auto& name : names) {
+      DatasetRunOptions ro;
+      ro.explore = base_options(a);
+      ro.explore.samples = name == "7_7" ? some : many;
+      ro.knots = {&KnotTable::global().at(name)};
+      ro.output = a.out + "/" + name + ".h5";
+      run_dataset(ro);
+    }
+    merge_datasets({a.out + "/4_1.h5", a.out + "/7_7.h5", a.out + "/8_1.h5"}, file);
+    for (const auto& name : names) std::remove((a.out + "/" + name + ".h5").c_str());
+    DatasetReader reader(file);
+    nlohmann::ordered_json j;
+    j["scale"] = a.scale_name;
+    j["cut"] = kClusterCut;
+    j["planar_threshold"] = kPlanarThreedim;
+    for (const auto& name : names) {
+      const KnotEntry e = reader.read(name);
+      std::vector<int> rank_of;
+      const auto clusters = clusters_at_cut(e, kClusterCut, &rank_of);
+      const int tc = e.attribute_column("total_curvature"), td = e.attribute_column("threedim"),
+                sp = e.attribute_column("sphericity");
+      Csv csv(a.out + "/clusters_" + name + ".csv",
+              {"rank", "size", "energy", "representative", "total_curvature", "threedim", "sphericity"});
+      int three_d = 0;
+      for (size_t c = 0; c < clusters.size(); ++c) {
+        const int r = clusters[c].representative;
+        if (e.attributes(r, td) >= kPlanarThreedim) ++three_d;
+        csv.row({std::to_string(c), std::to_string(clusters[c].members.size()), Csv::num(clusters[c].energy_min),
+                 std::to_string(r), Csv::num(e.attributes(r, tc)), Csv::num(e.attributes(r, td)),
+                 Csv::num(e.attributes(r, sp))});
+      }
+      csv.commit();
+      // Members (for figures: every equilibrium's cluster rank) and, for the
+      // Fig. 6 knot, the 2D multidimensional scaling and the dendrogram order.
+      Csv members(a.out + "/members_" + name + ".csv", {"equilibrium", "cluster_rank", "energy"});
+      for (size_t i = 0; i < rank_of.size(); ++i)
+        members.row({std::to_string(i), std::to_string(rank_of[i]),
+                     Csv::num(e.attributes(static_cast<Eigen::Index>(i), e.attribute_column("energy")))});
+      members.commit();
+      if (name == "7_7" && e.equilibria.size() > 2) {
+        const MdsResult mds = classical_mds_from_similarity(e.similarity);
+        const std::vector<int> order = Dendrogram::from_linkage(e.linkage).leaf_order();
+        Csv out(a.out + "/mds_" + name + ".csv", {"equilibrium", "x", "y", "cluster_rank", "leaf_position"});
+        std::vector<int> position(order.size());
+        for (size_t p = 0; p < order.size(); ++p) position[static_cast<size_t>(order[p])] = static_cast<int>(p);
+        for (size_t i = 0; i < e.equilibria.size(); ++i)
+          out.row({std::to_string(i), Csv::num(mds.coordinates(static_cast<Eigen::Index>(i), 0)),
+                   Csv::num(mds.coordinates(static_cast<Eigen::Index>(i), 1)), std::to_string(rank_of[i]),
+                   std::to_string(position[i])});
+        out.commit();
+      }
+      j[name] = {{"samples", e.runs.size()},
+                 {"equilibria", e.equilibria.size()},
+                 {"distinct", clusters.size()},
+                 {"distinctly_3d", three_d}};
+      std::cout << "exp_multistability: " << name << ": " << e.equilibria.size() << " equilibria, "
+                << clusters.size() << " distinct at cut " << kClusterCut << " (" << three_d << " 3D)" << std::endl;
+    }
+    write_json(a.out + "/summary.json", j);
+  });
+}

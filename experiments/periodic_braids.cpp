@@ -1,0 +1,212 @@
+// exp_periodic_braids: periodic braids (paper Section 8.4, Fig. 16).
+// (σ1 σ2⁻¹)^p on 3 strands (p = 2, 4, 5, 7, 8; p = 2 is 4_1, 4 is 8_18, 5 is
+// 10_123) and (σ1 σ2⁻¹ σ3)^p on 4 strands (p = 3, 5, 7; p = 3 is 9_40), the
+// values of p whose closure is a knot. Each starts as the multi-covered
+// circle of its braid with wire length ∝ p (n = 100·p unit edges, every scale)
+// and the data set's thickness (r = 0.2), and is relaxed.
+// Measured per member: the Alexander polynomial (against the table where the
+// knot is tabulated); p-fold rotational symmetry about a principal axis:
+//   error = mean over vertices of the distance from the rotated vertex to the
+//   curve, divided by the radius of gyration (the axis: the direction within
+//   0.1 rad of a principal axis, on a 0.01 rad grid, with the smallest error);
+//   control_error = the same for a (p+1)-fold rotation about that axis (what
+//   a state without the p-fold symmetry scores);
+// and the crossings seen along that axis, split into the two halves by
+// height: each half's angles against a regular p-gon (largest deviation, in
+// degrees) and the rotation between the two p-gons (expected 0 for odd p and
+// π/p for even p).
+// Writes periodic.csv, curves/<family>_p<p>.obj and summary.json.
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+
+#include "ek/analysis/attributes.hpp"
+#include "ek/embedding/embedding.hpp"
+#include "ek/geometry/curve_io.hpp"
+#include "ek/geometry/segment_distance.hpp"
+#include "ek/knots/alexander.hpp"
+#include "ek/solver/relax.hpp"
+#include "experiment.hpp"
+#include "scales.hpp"
+
+using namespace ek;
+using namespace ek::exp;
+
+namespace {
+
+double symmetry_error(const Points& P, const Vec3& c, const Vec3& axis, int p) {
+  const Eigen::AngleAxisd R(2.0 * M_PI / p, axis);
+  const int n = static_cast<int>(P.rows());
+  double rg = 0.0;
+  for (int i = 0; i < n; ++i) rg += (P.row(i).transpose() - c).squaredNorm();
+  rg = std::sqrt(rg / n);
+  double sum = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const Vec3 q = c + R * (P.row(i).transpose() - c);
+    double best = 1e300;
+    for (int j = 0; j < n; ++j)
+      best = std::min(best, point_segment_distance_squared(q, P.row(j).transpose(), P.row((j + 1) % n).transpose()));
+    sum += std::sqrt(best);
+  }
+  return sum / n / rg;
+}
+
+double wrap(double a, double period) {  // to [-period/2, period/2)
+  a = std::fmod(a, period);
+  if (a < -period / 2) a += period;
+  if (a >= period / 2) a -= period;
+  return a;
+}
+
+struct Gon {
+  int count = 0;
+  double phase = 0.0;      // [rad] of the p-gon
+  double max_error = 0.0;  // [deg] largest deviation of a crossing from the nearest p-gon vertex
+};
+
+Gon fit_gon(const std::vector<double>& angles, int p) {
+  Gon g;
+  g.count = static_cast<int>(angles.size());
+  if (angles.empty()) return g;
+  double cs = 0.0, sn = 0.0;
+  for (double a : angles) {
+    cs += std::cos(p * a);
+    sn += std::sin(p * a);
+  }
+  g.phase = std::atan2(sn, cs) / p;
+  for (double a : angles)
+    g.max_error = std::max(g.max_error, std::fabs(wrap(a - g.phase, 2.0 * M_PI / p)) * 180.0 / M_PI);
+  return g;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return run_experiment(argc, argv, "exp_periodic_braids", "Periodic braids of Fig. 16.", [](const Args& a) {
+    struct Member {
+      std::string family;
+      int strands, p;
+      std::vector<int> period;
+      std::string table_name;
+    };
+    std::vector<Member> members;
+    for (int p : {2, 4, 5, 7, 8})
+      members.push_back({"s1s2i", 3, p, {1, -2}, p == 2 ? "4_1" : p == 4 ? "8_18" : p == 5 ? "10_123" : ""});
+    for (int p : {3, 5, 7}) members.push_back({"s1s2is3", 4, p, {1, -2, 3}, p == 3 ? "9_40" : ""});
+    const int per_p = 100;  // every scale: the same wire per period (n = 100·p unit edges)
+    double total_edges = 0;
+    for (const auto& m : members) total_edges += per_p * m.p;
+    announce(a, "exp_periodic_braids", std::to_string(members.size()) + " periodic braids, n = " +
+                                           std::to_string(per_p) + "·p",
+             total_edges / 400.0 * 4.0 * kSecondsPerRelaxation);
+    std::filesystem::create_directories(a.out + "/curves");
+    Csv csv(a.out + "/periodic.csv",
+            {"family", "strands", "p", "vertices", "knot", "status", "energy", "alexander_matches_table",
+             "symmetry_error", "top_crossings", "bottom_crossings", "top_polygon_error_deg",
+             "bottom_polygon_error_deg", "relative_rotation_deg", "expected_rotation_deg", "curve"});
+    nlohmann::ordered_json j;
+    j["scale"] = a.scale_name;
+    j["members"] = nlohmann::ordered_json::array();
+    for (const auto& m : members) {
+      BraidWord w;
+      w.strands = m.strands;
+      for (int k = 0; k < m.p; ++k) w.letters.insert(w.letters.end(), m.period.begin(), m.period.end());
+      require(closure_components(w) == 1, "periodic braid closure is not a knot");
+      const int n = per_p * m.p;
+      EmbeddingOptions eo;
+      eo.vertices = n;
+      const double R = n / (2.0 * M_PI * m.strands);  // coil radius in edge lengths
+      eo.strand_spacing = 1.0 / R;  // strands one edge length apart (the multi-covered circle of Fig. 13)
+      const Embedding emb = embed_braid(w, eo);
+      const RelaxResult r = relax(emb.points);
+      const Points& P = r.positions;
+      std::string alex_ok = "-";
+      if (!m.table_name.empty())
+        alex_ok = (alexander(P) == alexander(*KnotTable::global().at(m.table_name).pd)) ? "1" : "0";
+      // principal axes
+      const Vec3 c = P.colwise().mean().transpose();
+      Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+      for (int i = 0; i < n; ++i) cov += (P.row(i).transpose() - c) * (P.row(i) - c.transpose());
+      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(cov);
+      double best = 1e300;
+      Vec3 axis = Vec3::UnitZ();
+      // the axis: each principal axis, refined over tilts of up to ±0.1 rad
+      // (principal axes of a nearly axisymmetric inertia are ill-conditioned)
+      for (int k = 0; k < 3; ++k) {
+        const Vec3 e0 = es.eigenvectors().col(k), e1 = e0.unitOrthogonal(), e2 = e0.cross(e1);
+        for (int i = -10; i <= 10; ++i)
+          for (int q = -10; q <= 10; ++q) {
+            const Vec3 ax = (e0 + 0.01 * i * e1 + 0.01 * q * e2).normalized();
+            const double err = symmetry_error(P, c, ax, m.p);
+            if (err < best) {
+              best = err;
+              axis = ax;
+            }
+          }
+      }
+      // crossings seen along the axis, split by height
+      Vec3 view = (axis + 1e-7 * Vec3(0.3, 0.7, 0.1)).normalized();
+      bool generic = false;
+      auto crossings = projection_crossings(P, view, &generic);
+      for (int attempt = 1; !generic && attempt < 10; ++attempt) {
+        view = (axis + 1e-5 * attempt * Vec3(0.3, -0.7, 0.2)).normalized();
+        crossings = projection_crossings(P, view, &generic);
+      }
+      // The two p-gons: the crossings split at the median height along the
+      // axis (a 3D state: one p-gon at each end) or, when that fits worse, at
+      // the median distance from the axis (a flat coil: inner and outer ring).
+      const Vec3 u = axis.unitOrthogonal(), v = axis.cross(u);
+      auto split = [&](bool by_height) {
+        std::vector<double> key;
+        for (const auto& x : crossings) {
+          const Vec3 mid = 0.5 * (x.over + x.under) - c;
+          key.push_back(by_height ? mid.dot(axis) : (mid - mid.dot(axis) * axis).norm());
+        }
+        std::vector<double> sorted = key;
+        std::sort(sorted.begin(), sorted.end());
+        const double median = sorted.empty() ? 0.0 : sorted[sorted.size() / 2];
+        std::vector<double> hi, lo;
+        for (size_t q = 0; q < crossings.size(); ++q) {
+          const Vec3 mid = 0.5 * (crossings[q].over + crossings[q].under) - c;
+          (key[q] >= median ? hi : lo).push_back(std::atan2(mid.dot(v), mid.dot(u)));
+        }
+        return std::make_pair(fit_gon(hi, m.p), fit_gon(lo, m.p));
+      };
+      auto [gt, gb] = split(true);
+      const auto [rt, rb] = split(false);
+      const bool by_radius = std::max(rt.max_error, rb.max_error) < std::max(gt.max_error, gb.max_error);
+      if (by_radius) {
+        gt = rt;
+        gb = rb;
+      }
+      const double rot = std::fabs(wrap(gt.phase - gb.phase, 2.0 * M_PI / m.p)) * 180.0 / M_PI;
+      const double expected = (m.p % 2 == 1) ? 0.0 : 180.0 / m.p;
+      const std::string curve = "curves/" + m.family + "_p" + std::to_string(m.p) + ".obj";
+      write_curve(a.out + "/" + curve, P);
+      csv.row({m.family, std::to_string(m.strands), std::to_string(m.p), std::to_string(n),
+               m.table_name.empty() ? "-" : m.table_name, r.status(), Csv::num(r.energy.total), alex_ok,
+               Csv::num(best), std::to_string(gt.count), std::to_string(gb.count), Csv::num(gt.max_error),
+               Csv::num(gb.max_error), Csv::num(rot), Csv::num(expected), curve});
+      j["members"].push_back({{"family", m.family},
+                              {"p", m.p},
+                              {"knot", m.table_name},
+                              {"status", r.status()},
+                              {"alexander_preserved", r.alexander_preserved},
+                              {"alexander_matches_table", alex_ok},
+                              {"threedim", threedim(P)},
+                              {"symmetry_error", best},
+                              {"control_error", symmetry_error(P, c, axis, m.p + 1)},
+                              {"crossings", crossings.size()},
+                              {"polygon_split", by_radius ? "radius" : "height"},
+                              {"polygon_error_deg", std::max(gt.max_error, gb.max_error)},
+                              {"relative_rotation_deg", rot},
+                              {"expected_rotation_deg", expected}});
+      std::cout << "exp_periodic_braids: " << m.family << " p=" << m.p << " " << r.status() << " symmetry error "
+                << best << ", crossings " << gt.count << "+" << gb.count << ", rotation " << rot << " deg (expected "
+                << expected << ")" << std::endl;
+    }
+    csv.commit();
+    write_json(a.out + "/summary.json", j);
+  });
+}

@@ -1,0 +1,64 @@
+// Paper Section 8.2, Fig. 9: Milnor's bound on the data set (ci scale: every
+// knot with 3..7 crossings, 12 samples each). Recomputed here from the data
+// set itself, not from the experiment's summary.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "ek/dataset/dataset_file.hpp"
+#include "results.hpp"
+
+using namespace ek;
+
+namespace {
+const std::string kDataset = paper::results("dataset") + "/dataset.h5";
+}
+
+// Milnor 1950: every closed curve of bridge index br has total curvature > 2π·br.
+// Tolerance: none (a violation is a bug); the curvature is Σ turning angles.
+TEST(PaperMilnor, EveryEquilibriumIsAboveTheBound) {
+  DatasetReader r(kDataset);
+  int checked = 0, violations = 0;
+  double closest = 1e9;
+  for (const auto& name : r.knot_names()) {
+    const KnotEntry e = r.read(name);
+    const int tc = e.equilibria.empty() ? 0 : e.attribute_column("total_curvature");
+    for (Eigen::Index i = 0; i < e.attributes.rows(); ++i) {
+      const double ratio = e.attributes(i, tc) / (2 * M_PI * e.bridge_index);
+      closest = std::min(closest, ratio);
+      if (!(ratio > 1.0)) ++violations;
+      ++checked;
+    }
+  }
+  std::cout << "[ measured ] " << checked << " equilibria, " << violations << " below Milnor's bound, smallest ratio "
+            << closest << std::endl;
+  EXPECT_GT(checked, 0);
+  EXPECT_EQ(violations, 0) << "smallest total curvature / (2 pi bridge index) = " << closest;
+}
+
+// BB knots (bridge index = braid index) reach the bound in a multi-covered
+// circle: smallest ratio within 3% of 1 (tolerance from the issue; the paper's
+// "approximately", footnote 3: wire thickness), with 3D-ness below 0.1.
+TEST(PaperMilnor, BBKnotsReachTheBoundAsMultiCoveredCircles) {
+  const auto rows = paper::csv(paper::results("milnor") + "/milnor.csv");
+  int bb = 0;
+  for (const auto& row : rows) {
+    if (row.at("bb") != "1") continue;
+    ++bb;
+    const double ratio = std::stod(row.at("ratio")), threedim = std::stod(row.at("threedim_at_min"));
+    std::cout << "[ measured ] " << row.at("knot") << ": ratio " << ratio << ", 3D-ness " << threedim << std::endl;
+    EXPECT_NEAR(ratio, 1.0, 0.03) << row.at("knot");
+    EXPECT_LT(threedim, 0.1) << row.at("knot");
+  }
+  EXPECT_GT(bb, 0) << "no BB knot in the data set";
+}
+
+// The knots farthest from the bound are 2-bridge knots: the top decile by
+// smallest ratio is all 2-bridge (issue 9 asks for the measured share).
+TEST(PaperMilnor, FarthestKnotsAreTwoBridge) {
+  const auto s = paper::summary("milnor");
+  const double share = s.at("top_decile_two_bridge_share").get<double>();
+  std::cout << "[ measured ] top decile (" << s.at("top_decile_size") << " knots) 2-bridge share " << share
+            << std::endl;
+  EXPECT_DOUBLE_EQ(share, 1.0);
+}

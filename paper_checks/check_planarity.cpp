@@ -1,0 +1,25 @@
+// Paper Section 8.2: "a significant majority of the observed elastic
+// equilibria are approximately planar". Planar: 3D-ness < 0.1 (the threshold
+// is ours, stated in README). Check: the share exceeds one half.
+#include <gtest/gtest.h>
+
+#include "ek/dataset/dataset_file.hpp"
+#include "results.hpp"
+
+using namespace ek;
+
+TEST(PaperPlanarity, MajorityOfEquilibriaIsPlanar) {
+  DatasetReader r(paper::results("dataset") + "/dataset.h5");
+  long total = 0, planar = 0;
+  for (const auto& name : r.knot_names()) {
+    const KnotEntry e = r.read(name);
+    if (e.equilibria.empty()) continue;
+    const int td = e.attribute_column("threedim");
+    for (Eigen::Index i = 0; i < e.attributes.rows(); ++i) planar += e.attributes(i, td) < 0.1;
+    total += e.attributes.rows();
+  }
+  const double share = total ? static_cast<double>(planar) / total : 0.0;
+  std::cout << "[ measured ] " << planar << " of " << total << " equilibria planar: share " << share << std::endl;
+  EXPECT_GT(share, 0.5);  // tolerance: the claim itself ("a significant majority")
+  EXPECT_NEAR(paper::summary("planarity").at("planar_share").get<double>(), share, 1e-12);
+}

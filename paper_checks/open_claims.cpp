@@ -1,0 +1,99 @@
+// Claims of the paper that this implementation does not reproduce (label
+// `paper-open`; not part of `make test`, run by `make paper-open`). Each test
+// asserts the claim as the paper states it and prints the measured value; the
+// README's claim table and the issues' notes give the evidence. A test here
+// that starts passing is moved to its check_<experiment>.cpp.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "results.hpp"
+
+namespace {
+std::string label(const nlohmann::json& m) {
+  return m.at("family").get<std::string>() + " p=" + std::to_string(m.at("p").get<int>());
+}
+}  // namespace
+
+// Fig. 16 shows a 3D state for every p. Measured: the BB members (8_18 and
+// 10_123 are BB knots, whose lowest-curvature states are multi-covered
+// circles, Fig. 9) and the longer members stay flat coils, stable.
+// Tolerance: 3D-ness >= 0.1 (the planarity threshold of Section 8.2).
+TEST(PaperOpenPeriodicBraids, EveryMemberDeploysTo3D) {
+  const auto s = ek::paper::summary("periodic_braids");
+  ASSERT_EQ(s.at("members").size(), 8u);
+  for (const auto& m : s.at("members")) {
+    std::cout << "[ measured ] " << label(m) << ": 3D-ness " << m.at("threedim") << std::endl;
+    EXPECT_GE(m.at("threedim").get<double>(), 0.1) << label(m);
+  }
+}
+
+// "The crossing patterns form two regular p-gons ... for odd p these align,
+// for even p they are rotated by π/p." Tolerance (issue 10): 5 degrees for
+// each crossing's deviation from its p-gon and for the relative rotation.
+TEST(PaperOpenPeriodicBraids, CrossingsFormTwoRegularPolygons) {
+  const auto s = ek::paper::summary("periodic_braids");
+  ASSERT_EQ(s.at("members").size(), 8u);
+  for (const auto& m : s.at("members")) {
+    const double rot = m.at("relative_rotation_deg").get<double>(), exp = m.at("expected_rotation_deg").get<double>();
+    std::cout << "[ measured ] " << label(m) << ": " << m.at("crossings") << " crossings along the axis (split by "
+              << m.at("polygon_split").get<std::string>() << "), largest p-gon deviation " << m.at("polygon_error_deg")
+              << " deg, rotation " << rot << " deg (expected " << exp << ")" << std::endl;
+    EXPECT_LE(m.at("polygon_error_deg").get<double>(), 5.0) << label(m);
+    EXPECT_LE(std::fabs(rot - exp), 5.0) << label(m);
+  }
+}
+
+// Section 8.3: the knot relaxes under the planarity slab "into a minimal-energy
+// multi-covered-circle state" before release. Measured: 12a_1019's coil is
+// still creeping after 10000 Newton iterations under the slab (the released
+// state is reached and checked in check_jumping_knots.cpp).
+TEST(PaperOpenJumpingKnots, FlatCoilIsAnEquilibriumUnderTheSlab) {
+  for (const auto& r : ek::paper::csv(ek::paper::results("jumping_knots") + "/jumping.csv")) {
+    std::cout << "[ measured ] " << r.at("knot") << ": flat stage " << r.at("flat_status") << ", E = "
+              << r.at("flat_energy") << std::endl;
+    EXPECT_EQ(r.at("flat_status"), "converged-stable") << r.at("knot");
+  }
+}
+
+// Fig. 2: 4_1 shows at least six distinct equilibria; Fig. 8: 8_1 at least
+// eight, of which few (here at most a quarter) are distinctly 3D. Distinct:
+// clusters at the documented cut 0.05 of 1 - similarity.
+TEST(PaperOpenMultistability, FigureEightHasAtLeastSixEquilibria) {
+  const auto s = ek::paper::summary("multistability");
+  const int distinct = s.at("4_1").at("distinct").get<int>();
+  std::cout << "[ measured ] 4_1: " << distinct << " distinct equilibria from " << s.at("4_1").at("samples")
+            << " samples at cut " << s.at("cut") << std::endl;
+  EXPECT_GE(distinct, 6);
+}
+
+TEST(PaperOpenMultistability, EightOneHasAtLeastEightMostlyPlanarEquilibria) {
+  const auto s = ek::paper::summary("multistability");
+  const int distinct = s.at("8_1").at("distinct").get<int>();
+  const int three_d = s.at("8_1").at("distinctly_3d").get<int>();
+  std::cout << "[ measured ] 8_1: " << distinct << " distinct equilibria, " << three_d << " distinctly 3D (3D-ness >= "
+            << s.at("planar_threshold") << ")" << std::endl;
+  EXPECT_GE(distinct, 8);
+  EXPECT_LE(4 * three_d, distinct);
+}
+
+// Section 7.4: adaptive sampling saves 70% of the simulations of a fixed
+// budget (issue 9: check at least 60%) and finds every low-energy state
+// (every cluster of the full budget within 20% of the knot's minimum energy).
+TEST(PaperOpenAdaptive, SavesAtLeastSixtyPercent) {
+  const auto s = ek::paper::summary("adaptive");
+  const double saved = s.at("saved_share").get<double>();
+  std::cout << "[ measured ] saved " << saved << " of " << s.at("fixed_simulations") << " simulations (budget "
+            << s.at("budget") << ", " << s.at("adaptive") << "), median " << s.at("median_samples")
+            << " samples per knot" << std::endl;
+  EXPECT_GE(saved, 0.6);
+}
+
+TEST(PaperOpenAdaptive, FindsEveryLowEnergyCluster) {
+  const auto s = ek::paper::summary("adaptive");
+  const int total = s.at("low_energy_clusters").get<int>(), found = s.at("low_energy_clusters_found").get<int>();
+  std::cout << "[ measured ] " << found << " of " << total << " clusters within 20% of the minimum energy found"
+            << std::endl;
+  EXPECT_GT(total, 0);
+  EXPECT_EQ(found, total) << s.at("missed").dump();
+}
