@@ -181,3 +181,21 @@ TEST(Pipeline, AdaptiveRunIsAPrefixOfTheFixedRunAndReplayAgrees) {
   ASSERT_EQ(replay.score_history.size(), a.score_history.size());
   for (size_t b = 0; b < a.score_history.size(); ++b) EXPECT_DOUBLE_EQ(replay.score_history[b], a.score_history[b]);
 }
+
+// Section 7.1 "Symmetries": mirror images count as the same state exactly for
+// amphicheiral knots (KnotInfo symmetry type); reversal always (a wire has no
+// orientation).
+TEST(Pipeline, MirrorComparisonsForAmphicheiralKnotsOnly) {
+  const ExploreOptions o;
+  EXPECT_TRUE(o.similarity.reversal);
+  EXPECT_FALSE(o.similarity.mirror);
+  for (const auto& [name, mirror] : std::vector<std::pair<std::string, bool>>{
+           {"3_1", false}, {"4_1", true}, {"6_3", true}, {"5_2", false}, {"8_17", true}, {"9_32", false}}) {
+    const KnotRecord& k = KnotTable::global().at(name);
+    EXPECT_EQ(options_for_knot(o, k).similarity.mirror, mirror) << name << " (" << k.symmetry_type << ")";
+    EXPECT_TRUE(options_for_knot(o, k).similarity.reversal) << name;
+  }
+  ExploreOptions off;
+  off.mirror_amphicheiral = false;
+  EXPECT_FALSE(options_for_knot(off, KnotTable::global().at("4_1")).similarity.mirror);
+}

@@ -217,7 +217,15 @@ double AdaptiveScorer::add_batch(const std::vector<std::pair<const Points*, doub
   return S;
 }
 
-AdaptiveReplay replay_adaptive(const KnotEntry& fixed, const ExploreOptions& o) {
+ExploreOptions options_for_knot(const ExploreOptions& options, const KnotRecord& knot) {
+  ExploreOptions o = options;
+  if (o.mirror_amphicheiral && knot.symmetry_type.find("amphicheiral") != std::string::npos) o.similarity.mirror = true;
+  return o;
+}
+
+AdaptiveReplay replay_adaptive(const KnotEntry& fixed, const ExploreOptions& options) {
+  const KnotRecord* knot = KnotTable::global().find(fixed.name);
+  const ExploreOptions o = knot ? options_for_knot(options, *knot) : options;
   const int available = static_cast<int>(fixed.runs.size());
   const int energy_col = fixed.equilibria.empty() ? -1 : fixed.attribute_column("energy");
   AdaptiveScorer scorer(o);
@@ -248,8 +256,9 @@ AdaptiveReplay replay_adaptive(const KnotEntry& fixed, const ExploreOptions& o) 
   return out;
 }
 
-KnotEntry explore_knot(const KnotRecord& knot, const ExploreOptions& o, const std::string& journal_path,
+KnotEntry explore_knot(const KnotRecord& knot, const ExploreOptions& options, const std::string& journal_path,
                        const RunCallback& on_run) {
+  const ExploreOptions o = options_for_knot(options, knot);
   o.validate();
   KnotEntry entry;
   entry.name = knot.name;

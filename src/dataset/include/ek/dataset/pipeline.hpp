@@ -53,6 +53,12 @@ struct ExploreOptions {
   double score_threshold = 0.1;    ///< [1] continue while S > this
   double novelty_distance = 0.1;   ///< [1] δ in 1 - similarity
   SimilarityOptions similarity;    ///< comparisons (orientation reversal on by default)
+  /// Compare with mirror images too (similarity.mirror) for the knots whose
+  /// unoriented type equals its mirror image: KnotInfo symmetry type
+  /// positive, negative or fully amphicheiral (paper Section 7.1,
+  /// "Symmetries": mirror images are states of equal energy, the same state
+  /// when the knot type allows it). Off: similarity.mirror as given.
+  bool mirror_amphicheiral = true;
   bool stiffness = true;           ///< compute the stiffness attribute (smallest non-rigid Hessian eigenvalue)
   std::uint64_t seed = 1;          ///< run seed; each knot's walk seed is derived from it and the name
   int jobs = 1;                    ///< [1] relaxations in parallel
@@ -73,6 +79,10 @@ std::uint64_t sample_seed(std::uint64_t knot_seed, int sample);
 
 /// Names of the attribute columns stored per equilibrium.
 const std::vector<std::string>& dataset_attribute_names();
+
+/// The options used for one knot: `options` with similarity.mirror set when
+/// mirror_amphicheiral and the knot is amphicheiral (see ExploreOptions).
+ExploreOptions options_for_knot(const ExploreOptions& options, const KnotRecord& knot);
 
 /// Importance score S of a batch (see the file comment): `batch_similarity`
 /// is the batch's stable equilibria (rows) against every stable equilibrium
