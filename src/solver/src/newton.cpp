@@ -51,6 +51,7 @@ void NewtonOptions::validate() const {
   require(backtrack > 0.0 && backtrack < 1.0, "NewtonOptions: backtrack must be in (0, 1)");
   require(min_step > 0.0 && min_step < 1.0, "NewtonOptions: min_step must be in (0, 1)");
   require(hybrid_switch >= 1.0 && std::isfinite(hybrid_switch), "NewtonOptions: hybrid_switch must be >= 1");
+  require(exact_after_full_steps >= 0, "NewtonOptions: exact_after_full_steps must be >= 0");
   require(max_shift_attempts >= 1, "NewtonOptions: max_shift_attempts must be >= 1");
   require(max_lazy_steps >= 0, "NewtonOptions: max_lazy_steps must be >= 0");
   require(max_expansion >= 1.0 && expansion_ratio > 0.0, "NewtonOptions: max_expansion must be >= 1, expansion_ratio > 0");
@@ -105,6 +106,13 @@ NewtonReport minimize(Objective& f, const NewtonOptions& o) {
     return std::numeric_limits<double>::infinity();
   };
 
+  // Hybrid mode: after exact_after_full_steps consecutive full projected steps the iterate is
+  // in a region where the quadratic model is good, and the exact Hessian
+  // takes over (projected directions converge only linearly when the
+  // projection removed real curvature, e.g. of compressed edges); it hands
+  // back to the projected Hessian when an exact step must backtrack.
+  bool exact_region = false;
+  int full_projected_steps = 0;
   bool have_factor = false;  // the factorisation of an earlier iterate's Hessian may be reused
   bool lazy_allowed = false;
   int lazy_run = 0;
@@ -117,7 +125,8 @@ NewtonReport minimize(Objective& f, const NewtonOptions& o) {
     report.gradient_norm = gnorm;
     require(std::isfinite(gnorm), "minimize: the gradient is not finite");
     const bool converged = gnorm <= o.gradient_tolerance;
-    const bool exact = o.hessian == HessianMode::Exact || gnorm <= o.hybrid_switch * o.gradient_tolerance;
+    const bool exact =
+        o.hessian == HessianMode::Exact || exact_region || gnorm <= o.hybrid_switch * o.gradient_tolerance;
     const bool lazy = !exact && have_factor && lazy_allowed && lazy_run < o.max_lazy_steps;
 
     if (lazy) {
@@ -320,6 +329,15 @@ NewtonReport minimize(Objective& f, const NewtonOptions& o) {
         continue;
       }
       return finish(SolverStatus::Stalled);
+    }
+    if (o.hessian == HessianMode::Hybrid) {
+      if (!exact) {
+        full_projected_steps = t >= 1.0 ? full_projected_steps + 1 : 0;
+        exact_region = o.exact_after_full_steps > 0 && full_projected_steps >= o.exact_after_full_steps;
+      } else if (exact_region && t < 1.0) {
+        exact_region = false;
+        full_projected_steps = 0;
+      }
     }
     // Reuse the factorisation for the next step only after a full (or expanded) step.
     lazy_allowed = t >= 1.0;

@@ -83,7 +83,10 @@ enum class HessianMode {
   /// The objective's projected Hessian (Objective::assemble_hessian with
   /// exact = false: per-element positive semidefinite projections of the
   /// terms that are strongly indefinite far from equilibrium) while
-  /// ||g|| > hybrid_switch · gradient_tolerance, the exact Hessian below.
+  /// ||g|| > hybrid_switch · gradient_tolerance, the exact Hessian below,
+  /// and also after two consecutive full (t = 1) projected steps until an
+  /// exact step must backtrack (projected directions converge only
+  /// linearly where the projection removed real curvature).
   /// Quadratic convergence near the equilibrium is that of exact Newton.
   Hybrid,
 };
@@ -106,6 +109,9 @@ struct NewtonOptions {
   int max_shift_attempts = 40;      ///< [1]
   HessianMode hessian = HessianMode::Hybrid;  ///< see HessianMode
   double hybrid_switch = 1e3;       ///< [1] Hybrid: exact Hessian once ||g|| <= hybrid_switch · gradient_tolerance
+  /// [1] Hybrid: exact Hessian after this many consecutive full (t = 1)
+  /// projected steps, until an exact step backtracks; 0 disables.
+  int exact_after_full_steps = 2;
   /// [1] Lazy (Shamanskii) steps: in Hybrid mode, while ||g|| is above the
   /// hybrid switch, the factorisation of an earlier iterate's (projected)
   /// Hessian is reused for up to this many further steps, as long as every
