@@ -54,6 +54,8 @@ stress: build
 # Microbenchmarks pinned to one core (Google Benchmark, median of 5), then the
 # macro benchmarks; one summary table at the end.
 BENCH_CORE ?= 0
+# exp_time_vs_error: ci (n <= 800) or default (n <= 3200)
+BENCH_SCALE ?= default
 bench: build
 	@mkdir -p results/bench
 	@for b in $(BUILD)/bench/bench_*; do \
@@ -64,6 +66,8 @@ bench: build
 	done
 	@if [ -x $(BUILD)/experiments/exp_bench_solver ]; then \
 	  taskset -c $(BENCH_CORE) $(BUILD)/experiments/exp_bench_solver --out results/bench; fi
+	taskset -c $(BENCH_CORE) $(BUILD)/experiments/exp_time_vs_error --scale $(BENCH_SCALE) --out results/bench/time_vs_error
+	MPLBACKEND=Agg $(PYTHON) figures/time_vs_error.py --results results/bench/time_vs_error --out figures/out
 	@$(PYTHON) scripts/bench_summary.py results/bench
 
 # ---- paper experiments and figures -------------------------------------------

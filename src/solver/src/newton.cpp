@@ -110,7 +110,8 @@ NewtonReport minimize(Objective& f, const NewtonOptions& o) {
   // in a region where the quadratic model is good, and the exact Hessian
   // takes over (projected directions converge only linearly when the
   // projection removed real curvature, e.g. of compressed edges); it hands
-  // back to the projected Hessian when an exact step must backtrack.
+  // back to the projected Hessian when an exact step must backtrack or the
+  // exact Hessian needed a shift above 10⁶·ε·λ_min (indefinite).
   bool exact_region = false;
   int full_projected_steps = 0;
   bool have_factor = false;  // the factorisation of an earlier iterate's Hessian may be reused
@@ -334,7 +335,8 @@ NewtonReport minimize(Objective& f, const NewtonOptions& o) {
       if (!exact) {
         full_projected_steps = t >= 1.0 ? full_projected_steps + 1 : 0;
         exact_region = o.exact_after_full_steps > 0 && full_projected_steps >= o.exact_after_full_steps;
-      } else if (exact_region && t < 1.0) {
+      } else if (exact_region && (t < 1.0 || shift > 1e6 * base_shift)) {
+        // backtracked, or the exact Hessian is indefinite (a large shift: tiny steps)
         exact_region = false;
         full_projected_steps = 0;
       }

@@ -85,8 +85,8 @@ enum class HessianMode {
   /// terms that are strongly indefinite far from equilibrium) while
   /// ||g|| > hybrid_switch · gradient_tolerance, the exact Hessian below,
   /// and also after two consecutive full (t = 1) projected steps until an
-  /// exact step must backtrack (projected directions converge only
-  /// linearly where the projection removed real curvature).
+  /// exact step must backtrack or is indefinite (projected directions
+  /// converge only linearly where the projection removed real curvature).
   /// Quadratic convergence near the equilibrium is that of exact Newton.
   Hybrid,
 };
@@ -110,7 +110,8 @@ struct NewtonOptions {
   HessianMode hessian = HessianMode::Hybrid;  ///< see HessianMode
   double hybrid_switch = 1e3;       ///< [1] Hybrid: exact Hessian once ||g|| <= hybrid_switch · gradient_tolerance
   /// [1] Hybrid: exact Hessian after this many consecutive full (t = 1)
-  /// projected steps, until an exact step backtracks; 0 disables.
+  /// projected steps, until an exact step backtracks or needs a shift above
+  /// 10⁶·ε·λ_min (indefinite); 0 disables.
   int exact_after_full_steps = 2;
   /// [1] Lazy (Shamanskii) steps: in Hybrid mode, while ||g|| is above the
   /// hybrid switch, the factorisation of an earlier iterate's (projected)

@@ -1,0 +1,202 @@
+// exp_time_vs_error: run time against error (issue 11), one core.
+//
+//  1. k-covered circles (k = 1, 2, 3), wire length L = 100, n = 50 .. 3200:
+//     the discrete bending energy against the exact 2π²k²·EI/L. k = 1 is
+//     solved (relax() from an ellipse with semi-axes 1.2 R and R/1.2, the
+//     circle's length, to the circle); k = 2, 3 self-intersect, so their
+//     energy is evaluated on the exact k-covered regular polygon (an
+//     equilibrium of the rod energy alone).
+//  2. Michell's instability (Appendix C): a circle with prescribed link Lk
+//     is stable below Lk_c = √3·(1 + ν) (GJ = EI/(1 + ν) for a circular
+//     section). Bisection on Lk (relax() with stop_at_critical_point: stable
+//     or unstable) to 1e-4, for n = 50 .. 3200 (ci: up to 800).
+//  3. Knots: a fixed lattice sample of 4_1, 8_19 and 12a_1019 (n = 400) is
+//     relaxed; its equilibrium is resampled to n = 100 .. 1600 (same length
+//     400, same wire) and relaxed again. Reference: Richardson extrapolation
+//     of the three finest energies (observed order p). And at n = 400 the
+//     gradient tolerance is swept from 1e-4 to 1e-10 (reference 1e-12).
+// Writes circles.csv, michell.csv, knots.csv, tolerance.csv, summary.json.
+#include <chrono>
+#include <cmath>
+#include <iostream>
+
+#include "ek/geometry/resample.hpp"
+#include "ek/knots/table.hpp"
+#include "ek/lattice/lattice_polygon.hpp"
+#include "ek/lattice/sampling.hpp"
+#include "ek/rod/elastic_rod.hpp"
+#include "ek/solver/relax.hpp"
+#include "experiment.hpp"
+#include "scales.hpp"
+
+using namespace ek;
+using namespace ek::exp;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+Points covered_circle(int n, int k, double radius, double squash = 1.0) {
+  Points P(n, 3);
+  for (int i = 0; i < n; ++i) {
+    const double a = 2.0 * M_PI * k * i / n;
+    P.row(i) << radius * squash * std::cos(a), radius / squash * std::sin(a), 0.0;
+  }
+  return P;
+}
+
+double total_length(const Points& P) {
+  double L = 0.0;
+  for (Eigen::Index i = 0; i < P.rows(); ++i) L += (P.row((i + 1) % P.rows()) - P.row(i)).norm();
+  return L;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  return run_experiment(argc, argv, "exp_time_vs_error", "Run time against error.", [](const Args& a) {
+    const std::vector<int> ns = a.scale == Scale::CI ? std::vector<int>{50, 100, 200, 400, 800}
+                                                     : std::vector<int>{50, 100, 200, 400, 800, 1600, 3200};
+    announce(a, "exp_time_vs_error", "circles, Michell's instability, knots at n = 100..1600, tolerance sweep",
+             a.scale == Scale::CI ? 120.0 : 900.0);
+    const RodMaterial mat;
+    const double EI = mat.bending_stiffness();
+    nlohmann::ordered_json j;
+    j["scale"] = a.scale_name;
+
+    // 1. k-covered circles
+    {
+      const double L = 100.0;
+      Csv csv(a.out + "/circles.csv", {"k", "n", "energy", "exact", "relative_error", "seconds", "how"});
+      for (int k : {1, 2, 3})
+        for (int n : ns) {
+          const double R = L / (2.0 * M_PI * k), exact = 2.0 * M_PI * M_PI * k * k * EI / L;
+          double E = 0.0, secs = 0.0;
+          if (k == 1) {
+            // an ellipse with the circle's rest lengths relaxes to the circle
+            const Points circle = covered_circle(n, 1, R);
+            RelaxOptions ro;
+            ro.rest_lengths = VecX::Constant(n, L / n);
+            ro.check_topology = false;  // the unknot
+            Points start = covered_circle(n, 1, R, 1.2);
+            start *= L / total_length(start);
+            const auto t0 = Clock::now();
+            const RelaxResult r = relax(start, ro);
+            secs = seconds_since(t0);
+            if (!r.converged())
+              std::cout << "exp_time_vs_error: circle n = " << n << " ended " << r.status() << " after "
+                        << r.report.iterations << " iterations, |g| " << r.report.gradient_norm << std::endl;
+            E = r.energy.bend;
+            (void)circle;
+          } else {
+            const Points P = covered_circle(n, k, R);
+            const auto t0 = Clock::now();
+            const ElasticRod rod(P, mat, TwistModel::TwistFree);
+            E = rod.energy(EnergyTerm::Bend);
+            secs = seconds_since(t0);
+          }
+          csv.row({std::to_string(k), std::to_string(n), Csv::num(E), Csv::num(exact),
+                   Csv::num(std::fabs(E - exact) / exact), Csv::num(secs), k == 1 ? "relax" : "evaluate"});
+        }
+      csv.commit();
+    }
+
+    // 2. Michell's instability
+    {
+      const double L = 100.0, exact = std::sqrt(3.0) * (1.0 + mat.poisson);
+      Csv csv(a.out + "/michell.csv", {"n", "critical_link", "exact", "relative_error", "seconds", "solves"});
+      nlohmann::ordered_json mj = nlohmann::ordered_json::array();
+      for (int n : ns) {
+        const Points circle = covered_circle(n, 1, L / (2.0 * M_PI));
+        auto stable = [&](double lk) {
+          RelaxOptions ro;
+          ro.link = lk;
+          ro.check_topology = false;
+          ro.stop_at_critical_point = true;
+          ro.max_iterations = 200;
+          const RelaxResult r = relax(circle, ro);
+          return r.stable();
+        };
+        double lo = 0.5 * exact, hi = 1.5 * exact;
+        int solves = 0;
+        const auto t0 = Clock::now();
+        require(stable(lo) && !stable(hi), "Michell bracket failed at n = " + std::to_string(n));
+        solves += 2;
+        while (hi - lo > 1e-4 * exact) {
+          const double mid = 0.5 * (lo + hi);
+          (stable(mid) ? lo : hi) = mid;
+          ++solves;
+        }
+        const double secs = seconds_since(t0), lc = 0.5 * (lo + hi);
+        csv.row({std::to_string(n), Csv::num(lc), Csv::num(exact), Csv::num(std::fabs(lc - exact) / exact),
+                 Csv::num(secs / solves), std::to_string(solves)});
+        mj.push_back({{"n", n}, {"critical_link", lc}, {"relative_error", std::fabs(lc - exact) / exact}});
+        std::cout << "exp_time_vs_error: Michell n = " << n << ": Lk_c = " << lc << " (exact " << exact << ")"
+                  << std::endl;
+      }
+      csv.commit();
+      j["michell"] = mj;
+    }
+
+    // 3. knots: resolution sweep and tolerance sweep
+    {
+      Csv kc(a.out + "/knots.csv", {"knot", "n", "energy", "reference", "relative_error", "seconds", "iterations",
+                                    "status", "observed_order"});
+      Csv tc(a.out + "/tolerance.csv",
+             {"knot", "tolerance", "energy", "reference", "relative_error", "seconds", "iterations", "status"});
+      const std::vector<int> kn = a.scale == Scale::CI ? std::vector<int>{100, 200, 400, 800}
+                                                       : std::vector<int>{100, 200, 400, 800, 1600};
+      for (const std::string name : {"4_1", "8_19", "12a_1019"}) {
+        SampleOptions so;
+        so.vertices = 400;
+        so.seed = 7;
+        const Points sample = to_points(sample_knot(KnotTable::global().at(name), so).samples.front());
+        const RelaxResult base = relax(sample);
+        require(base.stable(), name + ": the n = 400 sample did not converge");
+        std::vector<double> E, T;
+        std::vector<int> it;
+        std::vector<std::string> st;
+        for (int n : kn) {
+          const Points P = resample_arclength(base.positions, n);
+          RelaxOptions ro;
+          ro.rest_lengths = VecX::Constant(n, 400.0 / n);
+          const auto t0 = Clock::now();
+          const RelaxResult r = relax(P, ro);
+          T.push_back(seconds_since(t0));
+          E.push_back(r.energy.total);
+          it.push_back(r.report.iterations);
+          st.push_back(r.status());
+        }
+        const size_t m = E.size();
+        const double d1 = E[m - 2] - E[m - 3], d2 = E[m - 1] - E[m - 2];
+        const double p = std::log(std::fabs(d1 / d2)) / std::log(2.0);
+        const double ref = E[m - 1] + d2 / (std::pow(2.0, p) - 1.0);
+        for (size_t q = 0; q < m; ++q)
+          kc.row({name, std::to_string(kn[q]), Csv::num(E[q]), Csv::num(ref), Csv::num(std::fabs(E[q] - ref) / ref),
+                  Csv::num(T[q]), std::to_string(it[q]), st[q], Csv::num(p)});
+        std::cout << "exp_time_vs_error: " << name << " observed order " << p << ", reference energy " << ref
+                  << std::endl;
+        // tolerance sweep at n = 400 from the lattice sample
+        auto solve = [&](double tol) {
+          RelaxOptions ro;
+          ro.tolerance = tol;
+          ro.max_iterations = 5000;
+          const auto t0 = Clock::now();
+          RelaxResult r = relax(sample, ro);
+          return std::make_pair(r, seconds_since(t0));
+        };
+        const auto reference = solve(1e-12);
+        for (double tol : {1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10}) {
+          const auto [r, secs] = solve(tol);
+          const double er = std::fabs(r.energy.total - reference.first.energy.total) / reference.first.energy.total;
+          tc.row({name, Csv::num(tol), Csv::num(r.energy.total), Csv::num(reference.first.energy.total), Csv::num(er),
+                  Csv::num(secs), std::to_string(r.report.iterations), r.status()});
+        }
+      }
+      kc.commit();
+      tc.commit();
+    }
+    write_json(a.out + "/summary.json", j);
+  });
+}
