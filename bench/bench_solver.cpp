@@ -1,0 +1,104 @@
+// Microbenchmarks of the solver's factorisations (issue 11): the Hessian of a
+// relaxed trefoil (rod + contact, n = 400, the default material) factorised
+// by CholeskySolver (CHOLMOD) with a new symbolic analysis every time (the
+// contact set changed) against a numeric factorisation that reuses it (the
+// contact set unchanged: what the solver skips).
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+
+#include "ek/contact/contact_potential.hpp"
+#include "ek/core/sparse_assembler.hpp"
+#include "ek/rod/elastic_rod.hpp"
+#include "ek/solver/cholesky.hpp"
+#include "ek/solver/relax.hpp"
+
+using namespace ek;
+
+namespace {
+
+// The (2,3) torus knot with n = 400 edges of length ~1 (its edge lengths are
+// the rest lengths), relaxed once.
+struct Trefoil {
+  Points start, relaxed;
+};
+
+const Trefoil& relaxed_trefoil() {
+  static const Trefoil K = [] {
+    const int n = 400;
+    Points T(n, 3);
+    for (int i = 0; i < n; ++i) {
+      const double t = 2.0 * M_PI * i / n;
+      T.row(i) << (2.0 + std::cos(3 * t)) * std::cos(2 * t), (2.0 + std::cos(3 * t)) * std::sin(2 * t),
+          std::sin(3 * t);
+    }
+    double L = 0.0;
+    for (int i = 0; i < n; ++i) L += (T.row((i + 1) % n) - T.row(i)).norm();
+    T *= n / L;
+    return Trefoil{T, relax(T).positions};
+  }();
+  return K;
+}
+
+struct Hessian {
+  SparseAssembler A;
+  Hessian() {
+    const Points& P = relaxed_trefoil().relaxed;
+    const Points& S = relaxed_trefoil().start;
+    VecX rest(S.rows());
+    for (Eigen::Index i = 0; i < S.rows(); ++i) rest(i) = (S.row((i + 1) % S.rows()) - S.row(i)).norm();
+    const RodMaterial mat;
+    const ElasticRod rod(P, rest, mat, TwistModel::TwistFree);
+    ContactOptions co;
+    co.dhat = 2.0 * mat.radius;
+    co.stiffness = 1e3;
+    ContactPotential contact(CurveTopology::single(static_cast<int>(P.rows())), co);
+    contact.update(P);
+    A.begin(rod.num_dofs());
+    A.segment(0, rod.hessian_structure());
+    rod.add_hessian(A);
+    A.segment(1, contact.hessian_structure());
+    contact.add_hessian(P, A);
+    A.end();
+  }
+};
+
+const Hessian& hessian() {
+  static const Hessian h;
+  return h;
+}
+
+void BM_FactorizeSymbolicAndNumeric(benchmark::State& state) {
+  const auto& H = hessian().A.matrix();
+  CholeskyOptions o;
+  o.mode = state.range(0) ? CholeskyMode::Supernodal : CholeskyMode::Simplicial;
+  o.reuse_ordering = false;
+  CholeskySolver chol(o);
+  std::uint64_t version = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(chol.factorize(H, 1e-6, ++version));
+  state.counters["nnz_L"] = static_cast<double>(chol.factor_nonzeros());
+}
+
+void BM_FactorizeNumericOnly(benchmark::State& state) {
+  const auto& H = hessian().A.matrix();
+  CholeskyOptions o;
+  o.mode = state.range(0) ? CholeskyMode::Supernodal : CholeskyMode::Simplicial;
+  CholeskySolver chol(o);
+  if (!chol.factorize(H, 1e-6, 1)) state.SkipWithError("not positive definite");
+  for (auto _ : state) benchmark::DoNotOptimize(chol.factorize(H, 1e-6, 1));
+}
+
+void BM_Solve(benchmark::State& state) {
+  const auto& H = hessian().A.matrix();
+  CholeskySolver chol;
+  if (!chol.factorize(H, 1e-6, 1)) state.SkipWithError("not positive definite");
+  const VecX b = VecX::Ones(H.rows());
+  for (auto _ : state) benchmark::DoNotOptimize(chol.solve(b));
+}
+
+}  // namespace
+
+BENCHMARK(BM_FactorizeSymbolicAndNumeric)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_FactorizeNumericOnly)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Solve)->Unit(benchmark::kMicrosecond);
+BENCHMARK_MAIN();
