@@ -1,6 +1,9 @@
 // exp_time_vs_error: run time against error (issue 11), one core.
 //
-//  1. k-covered circles (k = 1, 2, 3), wire length L = 100, n = 50 .. 3200:
+//  Unit edges throughout: the contact barrier acts between non-adjacent edges
+//  closer than d̂ = 2r = 0.4, so edges shorter than d̂ would put neighbours
+//  along the wire inside it (the model needs ℓ > d̂).
+//  1. k-covered circles (k = 1, 2, 3), unit edges (L = n), n = 50 .. 3200:
 //     the discrete bending energy against the exact 2π²k²·EI/L. k = 1 is
 //     solved (relax() from an ellipse with semi-axes 1.2 R and R/1.2, the
 //     circle's length, to the circle); k = 2, 3 self-intersect, so their
@@ -9,10 +12,10 @@
 //  2. Michell's instability (Appendix C): a circle with prescribed link Lk
 //     is stable below Lk_c = √3·(1 + ν) (GJ = EI/(1 + ν) for a circular
 //     section). Bisection on Lk (relax() with stop_at_critical_point: stable
-//     or unstable) to 1e-4, for n = 50 .. 3200 (ci: up to 800).
+//     or unstable) to 1e-6 relative, for n = 50 .. 3200 (ci: up to 800), L = n.
 //  3. Knots: a fixed lattice sample of 4_1, 8_19 and 12a_1019 (n = 400) is
-//     relaxed; its equilibrium is resampled to n = 100 .. 1600 (same length
-//     400, same wire) and relaxed again. Reference: Richardson extrapolation
+//     relaxed; its equilibrium is resampled to n = 100 .. 800 (same length
+//     400, same wire; n = 1600 would make edges of 0.25 < d̂) and relaxed again. Reference: Richardson extrapolation
 //     of the three finest energies (observed order p). And at n = 400 the
 //     gradient tolerance is swept from 1e-4 to 1e-10 (reference 1e-12).
 // Writes circles.csv, michell.csv, knots.csv, tolerance.csv, summary.json.
@@ -58,7 +61,7 @@ int main(int argc, char** argv) {
   return run_experiment(argc, argv, "exp_time_vs_error", "Run time against error.", [](const Args& a) {
     const std::vector<int> ns = a.scale == Scale::CI ? std::vector<int>{50, 100, 200, 400, 800}
                                                      : std::vector<int>{50, 100, 200, 400, 800, 1600, 3200};
-    announce(a, "exp_time_vs_error", "circles, Michell's instability, knots at n = 100..1600, tolerance sweep",
+    announce(a, "exp_time_vs_error", "circles, Michell's instability, knots at n = 100..800, tolerance sweep",
              a.scale == Scale::CI ? 120.0 : 900.0);
     const RodMaterial mat;
     const double EI = mat.bending_stiffness();
@@ -67,10 +70,10 @@ int main(int argc, char** argv) {
 
     // 1. k-covered circles
     {
-      const double L = 100.0;
       Csv csv(a.out + "/circles.csv", {"k", "n", "energy", "exact", "relative_error", "seconds", "how"});
       for (int k : {1, 2, 3})
         for (int n : ns) {
+          const double L = n;
           const double R = L / (2.0 * M_PI * k), exact = 2.0 * M_PI * M_PI * k * k * EI / L;
           double E = 0.0, secs = 0.0;
           if (k == 1) {
@@ -104,26 +107,31 @@ int main(int argc, char** argv) {
 
     // 2. Michell's instability
     {
-      const double L = 100.0, exact = std::sqrt(3.0) * (1.0 + mat.poisson);
+      const double exact = std::sqrt(3.0) * (1.0 + mat.poisson);
       Csv csv(a.out + "/michell.csv", {"n", "critical_link", "exact", "relative_error", "seconds", "solves"});
       nlohmann::ordered_json mj = nlohmann::ordered_json::array();
       for (int n : ns) {
-        const Points circle = covered_circle(n, 1, L / (2.0 * M_PI));
+        const Points circle = covered_circle(n, 1, n / (2.0 * M_PI));  // unit edges
         auto stable = [&](double lk) {
           RelaxOptions ro;
           ro.link = lk;
           ro.check_topology = false;
           ro.stop_at_critical_point = true;
-          ro.max_iterations = 200;
+          ro.max_iterations = 1000;
           const RelaxResult r = relax(circle, ro);
+          if (!r.converged())
+            std::cout << "exp_time_vs_error: Michell n = " << n << ", Lk = " << lk << ": " << r.status() << std::endl;
           return r.stable();
         };
         double lo = 0.5 * exact, hi = 1.5 * exact;
         int solves = 0;
         const auto t0 = Clock::now();
-        require(stable(lo) && !stable(hi), "Michell bracket failed at n = " + std::to_string(n));
         solves += 2;
-        while (hi - lo > 1e-4 * exact) {
+        if (!stable(lo) || stable(hi)) {
+          std::cout << "exp_time_vs_error: Michell n = " << n << ": no bracket (see above); skipped" << std::endl;
+          continue;
+        }
+        while (hi - lo > 1e-6 * exact) {
           const double mid = 0.5 * (lo + hi);
           (stable(mid) ? lo : hi) = mid;
           ++solves;
@@ -145,8 +153,7 @@ int main(int argc, char** argv) {
                                     "status", "observed_order"});
       Csv tc(a.out + "/tolerance.csv",
              {"knot", "tolerance", "energy", "reference", "relative_error", "seconds", "iterations", "status"});
-      const std::vector<int> kn = a.scale == Scale::CI ? std::vector<int>{100, 200, 400, 800}
-                                                       : std::vector<int>{100, 200, 400, 800, 1600};
+      const std::vector<int> kn = {100, 200, 400, 800};
       for (const std::string name : {"4_1", "8_19", "12a_1019"}) {
         SampleOptions so;
         so.vertices = 400;

@@ -18,7 +18,8 @@ michell = read_csv(f"{a.results}/michell.csv")
 knots = read_csv(f"{a.results}/knots.csv")
 tol = read_csv(f"{a.results}/tolerance.csv")
 
-fig, axs = plt.subplots(1, 3, figsize=(13, 4))
+fig, axs = plt.subplots(1, 3, figsize=(15, 4.5))
+fig.subplots_adjust(wspace=0.35)
 ax = axs[0]
 for k in ("1", "2", "3"):
     rows = [r for r in circles if r["k"] == k]
