@@ -1,49 +1,24 @@
 // End-to-end test of `knots energy`: JSON keys and values on curves with
 // known answers, text output, bad input (exit status 2, one stderr line).
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
-#include <sstream>
 #include <string>
 #include <vector>
 
+#include "cli_runner.hpp"
 #include "ek/geometry/curve_io.hpp"
 #include "ek/rod/material.hpp"
 #include "testing.hpp"
 
 namespace {
 
-struct CliRun {
-  int status = -1;
-  std::string out, err;
-};
-
-CliRun knots(const std::string& args) {
-  static int counter = 0;
-  const std::string base = std::filesystem::temp_directory_path().string() + "/ek_rod_cli_" +
-                           std::to_string(::getpid()) + "_" + std::to_string(counter++);
-  const std::string cmd = std::string(EK_KNOTS_BIN) + " " + args + " >" + base + ".out 2>" + base + ".err";
-  const int raw = std::system(cmd.c_str());
-  CliRun r;
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  auto slurp = [](const std::string& p) {
-    std::ifstream in(p);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-  };
-  r.out = slurp(base + ".out");
-  r.err = slurp(base + ".err");
-  std::remove((base + ".out").c_str());
-  std::remove((base + ".err").c_str());
-  return r;
-}
+/// Runs `knots ARGS` (the shared runner of tests/cli).
+ek::clitest::Result knots(const std::string& args) { return ek::clitest::run(args); }
 
 /// A regular polygon with unit edges written to a temporary file.
 std::string unit_polygon_file(int n) {
@@ -60,7 +35,7 @@ TEST(RodCli, EnergyJsonOfRegularPolygon) {
   const int n = 100;
   const std::string file = unit_polygon_file(n);
   const ek::RodMaterial m;  // defaults r = 0.2, E = 2000, ν = 0.3
-  const CliRun r = knots("energy " + file + " --json");
+  const ek::clitest::Result r = knots("energy " + file + " --json");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   for (const char* key : {"energy", "energy_stretch", "energy_bend", "energy_twist", "gradient_norm", "twist",
@@ -86,7 +61,7 @@ TEST(RodCli, EnergyWithLinkMaterialAndRestLength) {
   m.radius = 0.3;
   m.young = 1000;
   m.poisson = 0.4;
-  const CliRun r = knots("energy " + file + " --radius 0.3 --young 1000 --poisson 0.4 --link 2 --json");
+  const ek::clitest::Result r = knots("energy " + file + " --radius 0.3 --young 1000 --poisson 0.4 --link 2 --json");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_NEAR(j["link"].get<double>(), 2.0, 1e-12);
@@ -107,7 +82,7 @@ TEST(RodCli, EnergyWithLinkMaterialAndRestLength) {
 
 TEST(RodCli, EnergyTextOutputAndBadInput) {
   const std::string file = unit_polygon_file(50);
-  const CliRun t = knots("energy " + file);
+  const ek::clitest::Result t = knots("energy " + file);
   ASSERT_EQ(t.status, 0) << t.err;
   EXPECT_NE(t.out.find("bending:"), std::string::npos);
   EXPECT_NE(t.out.find("link:"), std::string::npos);
@@ -115,7 +90,7 @@ TEST(RodCli, EnergyTextOutputAndBadInput) {
                                        "energy " + file + " --rest-length 0", "energy " + file + " --link abc",
                                        "energy /nonexistent/curve.txt", "energy"};
   for (const std::string& args : bad) {
-    const CliRun r = knots(args);
+    const ek::clitest::Result r = knots(args);
     EXPECT_EQ(r.status, 2) << args;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << ": " << r.err;
   }
