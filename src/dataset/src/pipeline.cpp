@@ -11,6 +11,7 @@
 #include "ek/analysis/attributes.hpp"
 #include "ek/analysis/clustering.hpp"
 #include "ek/core/errors.hpp"
+#include "ek/core/hash.hpp"
 #include "ek/core/paths.hpp"
 #include "ek/knots/alexander.hpp"
 #include "journal.hpp"
@@ -18,12 +19,6 @@
 namespace ek {
 namespace {
 
-std::uint64_t splitmix64(std::uint64_t x) {
-  x += 0x9E3779B97F4A7C15ULL;
-  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ULL;
-  x = (x ^ (x >> 27)) * 0x94D049BB133111EBULL;
-  return x ^ (x >> 31);
-}
 
 /// Canonical text of every option that changes results (the journal key).
 std::string options_text(const std::string& knot, const ExploreOptions& o) {

@@ -5,6 +5,7 @@
 #include <numeric>
 
 #include "ek/core/errors.hpp"
+#include "ek/core/hash.hpp"
 #include "ek/geometry/polyline.hpp"
 #include "ek/knots/diagram.hpp"
 
@@ -148,13 +149,7 @@ Projection project(const Points& P, const Vec3& dir, double tol, bool count_only
 }
 
 Vec3 direction_from_seed(std::uint64_t& state) {
-  auto next = [&state]() {
-    // splitmix64
-    std::uint64_t z = (state += 0x9E3779B97F4A7C15ULL);
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-    return static_cast<double>((z ^ (z >> 31)) >> 11) * (1.0 / 9007199254740992.0);
-  };
+  auto next = [&state]() { return splitmix64_uniform(state); };
   const double zc = 2.0 * next() - 1.0, phi = 2.0 * M_PI * next();
   const double r = std::sqrt(std::max(0.0, 1.0 - zc * zc));
   return {r * std::cos(phi), r * std::sin(phi), zc};

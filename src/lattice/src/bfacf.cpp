@@ -7,17 +7,12 @@
 #include <vector>
 
 #include "ek/core/errors.hpp"
+#include "ek/core/hash.hpp"
 
 namespace ek {
 
 namespace {
 
-std::uint64_t splitmix64(std::uint64_t x) {
-  x += 0x9E3779B97F4A7C15ull;
-  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
-  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
-  return x ^ (x >> 31);
-}
 
 // Unit directions are coded 0..5 as 2·axis + (negative ? 1 : 0); the
 // opposite of d is d ^ 1.

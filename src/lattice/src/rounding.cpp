@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "ek/core/errors.hpp"
+#include "ek/core/hash.hpp"
 #include "ek/geometry/curve_io.hpp"
 #include "ek/geometry/polyline.hpp"
 #include "ek/knots/alexander.hpp"
@@ -73,14 +74,7 @@ namespace {
 constexpr double kHalfDiagonal = 0.86602540378443865;  // √3/2
 constexpr double kMaxWalkSteps = 1e7;                  // larger cell walks are refused
 
-std::uint64_t splitmix64(std::uint64_t& state) {
-  std::uint64_t x = (state += 0x9E3779B97F4A7C15ull);
-  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ull;
-  x = (x ^ (x >> 27)) * 0x94D049BB133111EBull;
-  return x ^ (x >> 31);
-}
-
-double unit_uniform(std::uint64_t& state) { return static_cast<double>(splitmix64(state) >> 11) * 0x1.0p-53; }
+double unit_uniform(std::uint64_t& state) { return splitmix64_uniform(state); }
 
 // Uniform random rotation (Shoemake's unit quaternion).
 Mat3 random_rotation_matrix(std::uint64_t& state) {
