@@ -45,12 +45,6 @@ Points box_polygon(double a, double b, double c, int k) {
   return P;
 }
 
-Points mirror_x(const Points& P) {
-  Points Q = P;
-  Q.col(0) *= -1.0;
-  return Q;
-}
-
 }  // namespace
 
 TEST(Attributes, Circle) {
@@ -111,7 +105,7 @@ TEST(Attributes, Helix) {
   EXPECT_NEAR(g.diameter, best, 1e-6 * best);
   // a helix closed by its chord writhes; its mirror image has the opposite writhe
   EXPECT_GT(std::abs(g.writhe), 0.5);
-  EXPECT_NEAR(geometric_attributes(mirror_x(P)).writhe, -g.writhe, 1e-10);
+  EXPECT_NEAR(geometric_attributes(fixtures::mirror_x(P)).writhe, -g.writhe, 1e-10);
 }
 
 TEST(Attributes, BoxPolygonGivesItsAspectRatio) {

@@ -10,12 +10,6 @@ using namespace ek;
 
 namespace {
 
-Points mirror_x(const Points& P) {
-  Points Q = P;
-  Q.col(0) *= -1.0;
-  return Q;
-}
-
 Points add_noise(const Points& P, double sigma, std::uint64_t seed) {
   std::mt19937_64 rng(seed);
   std::normal_distribution<double> G(0.0, sigma);
@@ -61,7 +55,7 @@ TEST(Alignment, ReversalAndMirror) {
   EXPECT_GT(b.distance, 0.1);  // measured 0.35 (the curve's size is ~2)
   // mirror image of a chiral curve
   const Points T = fixtures::torus_knot(200, 2, 3);
-  const Points M = fixtures::rigid_copy(mirror_x(T), fixtures::random_rotation(3), Vec3(0, 2, 0), 17);
+  const Points M = fixtures::rigid_copy(fixtures::mirror_x(T), fixtures::random_rotation(3), Vec3(0, 2, 0), 17);
   AlignmentOptions m;
   m.mirror = true;
   const Alignment c = align_curves(T, M, m);

@@ -20,12 +20,6 @@ Points helix(int m, double R, double h, double dtheta) {
   return P;
 }
 
-Points mirror_x(const Points& P) {
-  Points Q = P;
-  Q.col(0) *= -1.0;
-  return Q;
-}
-
 }  // namespace
 
 TEST(Signature, CircleCurvatureIsExactAndTorsionZero) {
@@ -91,7 +85,7 @@ TEST(Signature, RigidMotionCyclicShiftScaleMirrorAndReversal) {
   EXPECT_LT((sc.curvature - s.curvature / c).norm(), 1e-12 * s.curvature.norm());
   EXPECT_LT((sc.torsion - s.torsion / (c * c)).norm(), 1e-12 * s.torsion.norm());
   // mirror image: K unchanged, T negated
-  const CurveSignature m = curve_signature(mirror_x(P));
+  const CurveSignature m = curve_signature(fixtures::mirror_x(P));
   const CurveSignature mm = mirrored(s);
   EXPECT_LT((m.curvature - mm.curvature).norm(), 1e-12 * s.curvature.norm());
   EXPECT_LT((m.torsion - mm.torsion).norm(), 1e-12 * s.torsion.norm());

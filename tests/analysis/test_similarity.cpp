@@ -12,12 +12,6 @@ using namespace ek;
 
 namespace {
 
-Points mirror_x(const Points& P) {
-  Points Q = P;
-  Q.col(0) *= -1.0;
-  return Q;
-}
-
 Points reverse_order(const Points& P) { return P.colwise().reverse(); }
 
 Points ellipse(int n, double a, double b) {
@@ -143,7 +137,7 @@ TEST(Similarity, MirrorOptionOnAChiralCurve) {
   // the trefoil torus knot is chiral: its mirror image is no rigid copy of it
   const int n = 300;
   const Points P = fixtures::torus_knot(n, 2, 3);
-  const Points M = fixtures::rigid_copy(mirror_x(P), fixtures::random_rotation(5), Vec3(1, 1, 1), 13);
+  const Points M = fixtures::rigid_copy(fixtures::mirror_x(P), fixtures::random_rotation(5), Vec3(1, 1, 1), 13);
   SimilarityOptions with;
   with.mirror = true;
   const SimilarityResult r = compare_curves(P, M, with);
@@ -153,7 +147,7 @@ TEST(Similarity, MirrorOptionOnAChiralCurve) {
   EXPECT_LT(r0.similarity, 0.75);  // measured 0.5: torsion anti-correlated (-1), only the curvature half remains
   EXPECT_FALSE(r0.mirrored);
   // mirrored and reversed at once needs both options
-  const Points MR = reverse_order(mirror_x(fixtures::random_fourier_curve(n, 5, 9)));
+  const Points MR = reverse_order(fixtures::mirror_x(fixtures::random_fourier_curve(n, 5, 9)));
   const Points G = fixtures::random_fourier_curve(n, 5, 9);
   SimilarityOptions both;
   both.mirror = both.reversal = true;

@@ -62,6 +62,12 @@ Points rigid_copy(const Points& P, const Mat3& R, const Vec3& t, int shift) {
   return Q;
 }
 
+Points mirror_x(const Points& P) {
+  Points Q = P;
+  Q.col(0) *= -1.0;
+  return Q;
+}
+
 Mat3 random_rotation(std::uint64_t seed) {
   std::mt19937_64 rng(seed);
   std::normal_distribution<double> N(0.0, 1.0);

@@ -31,6 +31,9 @@ Points rigid_copy(const Points& P, const Mat3& R, const Vec3& t, int shift);
 /// A random rotation matrix from a seed.
 Mat3 random_rotation(std::uint64_t seed);
 
+/// The mirror image in the plane x = 0 (x negated; chirality flips).
+Points mirror_x(const Points& P);
+
 /// Expects f() to throw InputError whose message contains `needle`.
 template <class F>
 void expect_input_error(F f, const std::string& needle) {
