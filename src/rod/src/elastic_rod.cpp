@@ -130,10 +130,14 @@ double ElasticRod::compute_reference_twist(int i) const {
 // ---------------------------------------------------------------------------
 // Energy, gradient, Hessian
 
+ElasticRod::Terms ElasticRod::selected_terms(EnergyTerm term) const {
+  const bool all = term == EnergyTerm::All;
+  return {all || term == EnergyTerm::Stretch, all || term == EnergyTerm::Bend,
+          (all || term == EnergyTerm::Twist) && has_theta()};
+}
+
 double ElasticRod::energy(EnergyTerm term) const {
-  const bool stretch = term == EnergyTerm::Stretch || term == EnergyTerm::All;
-  const bool bend = term == EnergyTerm::Bend || term == EnergyTerm::All;
-  const bool twist = (term == EnergyTerm::Twist || term == EnergyTerm::All) && has_theta();
+  const auto [stretch, bend, twist] = selected_terms(term);
   const double EA = material_.stretching_stiffness();
   const double EI = material_.bending_stiffness();
   const double GJ = material_.twisting_stiffness();
@@ -151,9 +155,7 @@ double ElasticRod::energy(EnergyTerm term) const {
 }
 
 VecX ElasticRod::gradient(EnergyTerm term) const {
-  const bool stretch = term == EnergyTerm::Stretch || term == EnergyTerm::All;
-  const bool bend = term == EnergyTerm::Bend || term == EnergyTerm::All;
-  const bool twist = (term == EnergyTerm::Twist || term == EnergyTerm::All) && has_theta();
+  const auto [stretch, bend, twist] = selected_terms(term);
   const double EA = material_.stretching_stiffness();
   const double EI = material_.bending_stiffness();
   const double GJ = material_.twisting_stiffness();
@@ -188,9 +190,7 @@ VecX ElasticRod::gradient(EnergyTerm term) const {
 void ElasticRod::add_hessian(SparseAssembler& A, EnergyTerm term) const { add_hessian(A, term, false); }
 
 void ElasticRod::add_hessian(SparseAssembler& A, EnergyTerm term, bool project_stretch) const {
-  const bool stretch = term == EnergyTerm::Stretch || term == EnergyTerm::All;
-  const bool bend = term == EnergyTerm::Bend || term == EnergyTerm::All;
-  const bool twist = (term == EnergyTerm::Twist || term == EnergyTerm::All) && has_theta();
+  const auto [stretch, bend, twist] = selected_terms(term);
   const double EA = material_.stretching_stiffness();
   const double EI = material_.bending_stiffness();
   const double GJ = material_.twisting_stiffness();

@@ -197,6 +197,10 @@ class ElasticRod {
   VecX m_;
 
   bool has_theta() const { return model_ != TwistModel::TwistFree; }
+  struct Terms {
+    bool stretch, bend, twist;  // twist only when the model has material angles
+  };
+  Terms selected_terms(EnergyTerm term) const;
   int theta_index(int j) const { return 3 * n_ + j; }
   int Theta_index() const { return 4 * n_; }
   void init(const Points& positions, const VecX& rest_edge_lengths);
