@@ -23,6 +23,7 @@
 #include <cmath>
 #include <iostream>
 
+#include "ek/geometry/polyline.hpp"
 #include "ek/geometry/resample.hpp"
 #include "ek/knots/table.hpp"
 #include "ek/lattice/lattice_polygon.hpp"
@@ -49,12 +50,6 @@ Points covered_circle(int n, int k, double radius, double squash = 1.0) {
   return P;
 }
 
-double total_length(const Points& P) {
-  double L = 0.0;
-  for (Eigen::Index i = 0; i < P.rows(); ++i) L += (P.row((i + 1) % P.rows()) - P.row(i)).norm();
-  return L;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -78,12 +73,11 @@ int main(int argc, char** argv) {
           double E = 0.0, secs = 0.0;
           if (k == 1) {
             // an ellipse with the circle's rest lengths relaxes to the circle
-            const Points circle = covered_circle(n, 1, R);
             RelaxOptions ro;
             ro.rest_lengths = VecX::Constant(n, L / n);
             ro.check_topology = false;  // the unknot
             Points start = covered_circle(n, 1, R, 1.2);
-            start *= L / total_length(start);
+            start *= L / curve_length(start);
             const auto t0 = Clock::now();
             const RelaxResult r = relax(start, ro);
             secs = seconds_since(t0);
@@ -91,7 +85,6 @@ int main(int argc, char** argv) {
               std::cout << "exp_time_vs_error: circle n = " << n << " ended " << r.status() << " after "
                         << r.report.iterations << " iterations, |g| " << r.report.gradient_norm << std::endl;
             E = r.energy.bend;
-            (void)circle;
           } else {
             const Points P = covered_circle(n, k, R);
             const auto t0 = Clock::now();
