@@ -80,10 +80,7 @@ int main(int argc, char** argv) {
       e.attributes.col(td).maxCoeff(&best);
       const double wr_target = e.attributes(best, wc);
       // 2. the multi-covered circle of the braid, n = 400
-      EmbeddingOptions emb;
-      emb.vertices = 400;
-      const double R = 400.0 / (2.0 * M_PI * k->braid->strands);
-      emb.strand_spacing = 1.0 / R;   // strands one edge length apart
+      EmbeddingOptions emb = multicovered_circle(400, k->braid->strands);
       emb.crossing_height = 0.35;     // ±0.35 edge lengths at crossings: inside the slab
       const Points coil = embed_braid(*k->braid, emb).points;
       // 3. flat under the slab with Lk = Wr_target, then released: two solves

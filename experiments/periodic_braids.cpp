@@ -114,10 +114,7 @@ int main(int argc, char** argv) {
       for (int k = 0; k < m.p; ++k) w.letters.insert(w.letters.end(), m.period.begin(), m.period.end());
       require(closure_components(w) == 1, "periodic braid closure is not a knot");
       const int n = per_p * m.p;
-      EmbeddingOptions eo;
-      eo.vertices = n;
-      const double R = n / (2.0 * M_PI * m.strands);  // coil radius in edge lengths
-      eo.strand_spacing = 1.0 / R;  // strands one edge length apart (the multi-covered circle of Fig. 13)
+      const EmbeddingOptions eo = multicovered_circle(n, m.strands);
       const Embedding emb = embed_braid(w, eo);
       const RelaxResult r = relax(emb.points);
       const Points& P = r.positions;

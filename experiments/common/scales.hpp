@@ -2,10 +2,12 @@
 // The experiments' parameters per scale, in one place (README "Reproducing
 // the paper" lists them). Times are estimates from measured per-relaxation
 // costs on the reference machine (2 cores).
+#include <cmath>
 #include <string>
 #include <vector>
 
 #include "ek/dataset/pipeline.hpp"
+#include "ek/embedding/embedding.hpp"
 #include "experiment.hpp"
 
 namespace ek::exp {
@@ -29,6 +31,16 @@ inline ExploreOptions base_options(const Args& a) {
   o.jobs = a.jobs;
   o.novelty_distance = kClusterCut;
   o.seed = 1;
+  return o;
+}
+
+/// The multi-covered circle of a braid (paper Fig. 13): n unit edges, the
+/// strands one edge length apart radially (the coil radius is n/(2π·strands)
+/// edge lengths; strand_spacing is in units of it).
+inline EmbeddingOptions multicovered_circle(int vertices, int strands) {
+  EmbeddingOptions o;
+  o.vertices = vertices;
+  o.strand_spacing = 1.0 / (vertices / (2.0 * M_PI * strands));
   return o;
 }
 
