@@ -65,7 +65,9 @@ bench: build
 	    --benchmark_out=results/bench/$$(basename $$b).json --benchmark_out_format=json || exit 1; \
 	done
 	@if [ -x $(BUILD)/experiments/exp_bench_solver ]; then \
-	  taskset -c $(BENCH_CORE) $(BUILD)/experiments/exp_bench_solver --out results/bench; fi
+	  taskset -c $(BENCH_CORE) $(BUILD)/experiments/exp_bench_solver --out results/bench && \
+	  taskset -c $(BENCH_CORE) $(BUILD)/experiments/exp_bench_solver --skips --count 3 \
+	    --knots 4_1,8_19,12a_1019 --out results/bench; fi
 	taskset -c $(BENCH_CORE) $(BUILD)/experiments/exp_time_vs_error --scale $(BENCH_SCALE) --out results/bench/time_vs_error
 	MPLBACKEND=Agg $(PYTHON) figures/time_vs_error.py --results results/bench/time_vs_error --out figures/out
 	@$(PYTHON) scripts/bench_summary.py results/bench

@@ -197,6 +197,63 @@ void BM_NoContact(benchmark::State& st) {
   st.counters["active"] = static_cast<double>(cp.num_active());
 }
 
+// The "off" side of two skips (issue 11): without the broad phase every pair
+// of non-adjacent edges is tested. BM_NoContactAllPairs: the distance test of
+// all pairs on the contact-free circle of BM_NoContact; BM_MaxStepAllPairs:
+// the collision-detection query of BM_MaxStep over all pairs instead of the
+// pairs the swept broad phase keeps (same per-pair CCD and parameters).
+template <class F>
+void for_all_pairs(F&& f) {
+  for (int a = 0; a < kN; ++a)
+    for (int b = a + 2; b < kN; ++b)
+      if (!(a == 0 && b == kN - 1)) f(a, (a + 1) % kN, b, (b + 1) % kN);
+}
+
+Vec3 at(const Points& x, int i) { return x.row(i).transpose(); }
+
+void BM_NoContactAllPairs(benchmark::State& st) {
+  Points x(kN, 3);
+  for (int i = 0; i < kN; ++i) {
+    const double s = 2.0 * M_PI * i / kN;
+    x.row(i) << kN / (2 * M_PI) * std::cos(s), kN / (2 * M_PI) * std::sin(s), 0;
+  }
+  const double dhat = ContactOptions{}.dhat;
+  int near = 0;
+  for (auto _ : st) {
+    near = 0;
+    for_all_pairs([&](int a0, int a1, int b0, int b1) {
+      near += edge_edge_closest(at(x, a0), at(x, a1), at(x, b0), at(x, b1)).distance_squared < dhat * dhat;
+    });
+    benchmark::DoNotOptimize(near);
+  }
+  st.counters["active"] = near;
+}
+
+void BM_MaxStepAllPairs(benchmark::State& st) {
+  const Points x = scene(static_cast<int>(st.range(0)));
+  const double size = st.range(1) / 10.0;
+  const Points dx = smooth_step(kN, size, 3);
+  const ContactOptions o;
+  CcdParams params;
+  params.separation = o.ccd_separation;
+  params.distance_cap = o.dhat;
+  params.tolerance = o.ccd_tolerance;
+  params.max_iterations = o.ccd_max_iterations;
+  double t = 1.0;
+  for (auto _ : st) {
+    t = 1.0;
+    for_all_pairs([&](int a0, int a1, int b0, int b1) {
+      t = edge_edge_ccd(at(x, a0), at(x, a1), at(x, b0), at(x, b1), at(dx, a0), at(dx, a1), at(dx, b0), at(dx, b1),
+                        t, params)
+              .t;
+    });
+    benchmark::DoNotOptimize(t);
+  }
+  char buf[96];
+  std::snprintf(buf, sizeof buf, "%s step %.1f t=%.3f", scene_name(static_cast<int>(st.range(0))), size, t);
+  st.SetLabel(buf);
+}
+
 }  // namespace
 
 BENCHMARK(BM_UpdateGradientHessian)->ArgsProduct({{0, 1, 2}, {1, 0}})->Unit(benchmark::kMicrosecond);
@@ -205,5 +262,7 @@ BENCHMARK(BM_Gradient)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Hessian)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_MaxStep)->Args({0, 1})->Args({0, 5})->Args({1, 1})->Args({1, 5})->Args({2, 1})->Args({2, 5})->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_NoContact)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_NoContactAllPairs)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_MaxStepAllPairs)->Args({0, 1})->Args({0, 5})->Unit(benchmark::kMicrosecond);
 
 BENCHMARK_MAIN();

@@ -10,7 +10,16 @@
 // issue's measurement: `taskset -c 1 build/experiments/exp_bench_solver`.
 //
 //   exp_bench_solver [--quick] [--count K] [--knots A,B,...] [--seed S] [--out DIR]
-//                    [--method default|projected|paper] [--max-iter N] [--verbose]
+//                    [--method default|projected|paper] [--max-iter N] [--verbose] [--skips]
+//
+// --skips (issue 11, "skip what a scene does not need", measured on and off):
+// every sample is relaxed three times, one after the other: as by default
+// (Θ free: the twist-free 3n-dof path; no eigen-analysis), with the full
+// 4n+1-dof model (RelaxOptions::full_model, the twist-free skip off), and
+// with the smallest non-rigid eigenvalue computed (the stiffness attribute
+// of the data set, RelaxOptions::smallest_eigenvalue: the eigen-analysis
+// skip off). Writes DIR/solver_skips.csv (one row per variant: runs,
+// converged-stable, total and median seconds, median iterations).
 //
 // --method projected: the hybrid Hessian without its exact region
 // (NewtonOptions::exact_after_full_steps = 0).
@@ -144,7 +153,7 @@ std::string statuses_text(const Summary& s) {
 int usage(const char* msg) {
   if (msg) std::cerr << "exp_bench_solver: " << msg << "\n";
   std::cerr << "usage: exp_bench_solver [--quick] [--count K] [--knots A,B,...] [--seed S] [--out DIR] "
-               "[--method default|projected|paper] [--max-iter N] [--verbose]\n";
+               "[--method default|projected|paper] [--max-iter N] [--verbose] [--skips]\n";
   return 2;
 }
 
@@ -156,7 +165,7 @@ int main(int argc, char** argv) {
   std::uint64_t seed = 20230806;
   std::string out = "results/bench", method = "default";
   int max_iter = -1;
-  bool verbose = false;
+  bool verbose = false, skips = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto value = [&]() -> std::string {
@@ -172,6 +181,7 @@ int main(int argc, char** argv) {
       else if (a == "--method") method = value();
       else if (a == "--max-iter") max_iter = std::stoi(value());
       else if (a == "--verbose") verbose = true;
+      else if (a == "--skips") skips = true;
       else if (a == "--help" || a == "-h") return usage(nullptr), 0;
       else return usage(("unknown argument " + a).c_str());
     } catch (const std::exception& e) {
@@ -191,12 +201,35 @@ int main(int argc, char** argv) {
   try {
     std::filesystem::create_directories(out);
     std::vector<Run> runs;
+    const std::vector<std::string> skip_variants = {"default", "full-model", "eigen"};
+    std::vector<std::vector<Run>> skip_runs(skip_variants.size());
     for (size_t k = 0; k < knots.size(); ++k) {
       ek::SampleOptions so;
       so.vertices = 400;
       so.count = count;
       so.seed = seed + k;  // one fixed walk per knot
       const ek::SampleBatch batch = ek::sample_knot(ek::KnotTable::global().at(knots[k]), so);
+      if (skips) {
+        for (int s = 0; s < count; ++s) {
+          const ek::Points P = ek::to_points(batch.samples[static_cast<size_t>(s)]);
+          for (size_t v = 0; v < skip_variants.size(); ++v) {
+            ek::RelaxOptions vo = options;
+            vo.full_model = v == 1;
+            vo.smallest_eigenvalue = v == 2;
+            Run run;
+            run.knot = knots[k];
+            run.sample = s;
+            const auto t0 = Clock::now();
+            run.result = ek::relax(P, vo);
+            run.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+            std::fprintf(stderr, "%-9s #%02d  %-11s %-18s %5d it  %7.3f s  E %.10g\n", knots[k].c_str(), s,
+                         skip_variants[v].c_str(), run.result.status().c_str(), run.result.report.iterations,
+                         run.seconds, run.result.energy.total);
+            skip_runs[v].push_back(std::move(run));
+          }
+        }
+        continue;
+      }
       for (int s = 0; s < count; ++s) {
         Run run;
         run.knot = knots[k];
@@ -212,6 +245,27 @@ int main(int argc, char** argv) {
       }
     }
 
+    if (skips) {
+      std::ostringstream csv;
+      csv << "variant,runs,converged_stable,total_seconds,median_seconds,median_iterations\n";
+      std::printf("solver skips (n = 400, %d samples each of %zu knots, one after the other)\n", count, knots.size());
+      std::printf("%-11s %5s %7s %9s %9s %7s\n", "variant", "runs", "stable", "total s", "median s", "med it");
+      bool all_stable = true;
+      for (size_t v = 0; v < skip_variants.size(); ++v) {
+        std::vector<const Run*> sel;
+        for (const Run& r : skip_runs[v]) sel.push_back(&r);
+        const Summary sm = summarize(skip_variants[v], sel);
+        const double total = sm.mean_seconds * sm.runs;
+        all_stable = all_stable && sm.stable == sm.runs;
+        std::printf("%-11s %5d %7d %9.3f %9.3f %7.0f\n", sm.name.c_str(), sm.runs, sm.stable, total,
+                    sm.median_seconds, sm.median_iterations);
+        csv << sm.name << "," << sm.runs << "," << sm.stable << "," << fmt(total, "%.6g") << ","
+            << fmt(sm.median_seconds, "%.6g") << "," << sm.median_iterations << "\n";
+      }
+      write_atomic(out + "/solver_skips.csv", csv.str());
+      std::printf("wrote %s/solver_skips.csv\n", out.c_str());
+      return all_stable ? 0 : 1;
+    }
     std::vector<Summary> table;
     std::vector<const Run*> all;
     for (const Run& r : runs) all.push_back(&r);

@@ -22,6 +22,29 @@ TARGETS = {
 
 UNIT = {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}
 
+# Issue 11, "skip what a scene does not need": each skip measured on and off.
+# (what is skipped, benchmark with the skip, benchmark without it); names are
+# Google Benchmark run names (median aggregates) or "solver_skips:VARIANT"
+# (total seconds of exp_bench_solver --skips over the same lattice samples).
+SKIPS = [
+    ("twist-free path (Θ free): rod energy+gradient+Hessian, 3n vs 4n+1 dofs",
+     "BM_EnergyGradientHessian/0", "BM_EnergyGradientHessian/1"),
+    ("twist-free path (Θ free): relaxations of the fixed samples (total)",
+     "solver_skips:default", "solver_skips:full-model"),
+    ("no contact work when no pair is near: broad phase vs all-pairs distances (circle, n=400)",
+     "BM_NoContact", "BM_NoContactAllPairs"),
+    ("collision detection only on broad-phase pairs (knot13, step 0.1)",
+     "BM_MaxStep/0/1", "BM_MaxStepAllPairs/0/1"),
+    ("collision detection only on broad-phase pairs (knot13, step 0.5)",
+     "BM_MaxStep/0/5", "BM_MaxStepAllPairs/0/5"),
+    ("broad phase reused while no vertex moved skin/2 (knot13)",
+     "BM_BroadPhase/0/0", "BM_BroadPhase/0/1"),  # second argument 1: skin 0 (fresh)
+    ("symbolic factorisation reused while the contact set is unchanged (simplicial)",
+     "BM_FactorizeNumericOnly/0", "BM_FactorizeSymbolicAndNumeric/0"),
+    ("eigen-analysis (stiffness attribute) only when asked: relaxations of the fixed samples (total)",
+     "solver_skips:default", "solver_skips:eigen"),
+]
+
 
 def fmt_seconds(s):
     if s < 1e-3:
@@ -29,6 +52,37 @@ def fmt_seconds(s):
     if s < 1.0:
         return f"{s * 1e3:9.2f} ms"
     return f"{s:9.3f} s "
+
+
+def skips_table(rows, folder):
+    """Prints the SKIPS table from the medians in rows and solver_skips.csv."""
+    times = {name: sec for _, name, sec, _ in rows}
+    path = os.path.join(folder, "solver_skips.csv")
+    if os.path.exists(path):
+        with open(path) as f:
+            for r in csv.DictReader(f):
+                times["solver_skips:" + r["variant"]] = float(r["total_seconds"])
+
+    def lookup(name):
+        # a run name may carry a label or repetitions suffix after the arguments
+        if name in times:
+            return times[name]
+        hits = [t for n, t in times.items() if n.startswith(name + "/") and not n[len(name) + 1:].isdigit()]
+        return hits[0] if len(hits) == 1 else None
+
+    lines = []
+    for what, on, off in SKIPS:
+        t_on, t_off = lookup(on), lookup(off)
+        if t_on is None or t_off is None:
+            continue
+        lines.append((what, t_on, t_off))
+    if not lines:
+        return
+    width = max(len(w) for w, _, _ in lines)
+    print(f"\nskips (issue 11): time with the skip (on) and without it (off), one core")
+    print(f"{'skip':<{width}}  {'on':>12}  {'off':>12}  {'speed-up':>8}")
+    for what, t_on, t_off in lines:
+        print(f"{what:<{width}}  {fmt_seconds(t_on):>12}  {fmt_seconds(t_off):>12}  {t_off / t_on:7.2f}x")
 
 
 def main(folder):
@@ -49,6 +103,7 @@ def main(folder):
         for exe, name, s, t in rows:
             ok = "" if t is None else ("yes" if s <= t else "NO")
             print(f"{exe:<16} {name:<{width}}  {fmt_seconds(s):>12}  {fmt_seconds(t) if t else '':>12}  {ok}")
+    skips_table(rows, folder)
     for path in sorted(glob.glob(os.path.join(folder, "*.csv"))):
         print(f"\n{os.path.basename(path)}")
         with open(path) as f:
