@@ -45,7 +45,7 @@ int main(int argc, char** argv) {
     const int samples = by_scale(a, 4, 6, 10);
     announce(a, "exp_jumping_knots",
              std::to_string(knots.size()) + " knots, " + std::to_string(samples) + " samples for the 3D target each",
-             knots.size() * (samples + 10.0) * kSecondsPerRelaxation / a.jobs);  // the flat stage costs ~10 relaxations
+             knots.size() * (samples + 2.0) * kSecondsPerRelaxation / a.jobs);  // flat stage + release
     std::filesystem::create_directories(a.out + "/curves");
     Csv csv(a.out + "/jumping.csv",
             {"knot", "strands", "target_threedim", "writhe_target", "link", "flat_status", "flat_energy",
@@ -91,9 +91,6 @@ int main(int argc, char** argv) {
       SlabOptions slab;
       slab.half_thickness = 2.0 * 2.0 * ro.material.radius;
       ro.slab = slab;
-      // The coil relaxes slowly under the slab (long, nearly flat modes of a
-      // multi-covered circle): up to 10000 Newton iterations, then as usual.
-      ro.max_iterations = 10000;
       const RelaxResult flat = relax(coil, ro);
       ro.slab.reset();
       const RelaxResult r = relax(flat.positions, ro);

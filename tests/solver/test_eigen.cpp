@@ -87,6 +87,30 @@ std::vector<VecX> rigid_motions(const Points& P, int dofs) {
 
 }  // namespace
 
+TEST(EigenAnalysis, PlanarSlabKeepsOnlyTheMotionsTheSlabAllows) {
+  // Under the slab |z| < h only x/y translations and the rotation about z
+  // leave the energy invariant: 3 orthonormal modes, with no z motion of the
+  // centroid-free kind (a z translation is outside their span).
+  std::mt19937_64 rng(4);
+  std::normal_distribution<double> N;
+  Points P(30, 3);
+  for (Eigen::Index i = 0; i < P.size(); ++i) P.data()[i] = 2.0 + N(rng);
+  const Eigen::MatrixXd Q = rigid_modes(P, 90, -1, true);
+  ASSERT_EQ(Q.cols(), 3);
+  EXPECT_LT((Q.transpose() * Q - Eigen::MatrixXd::Identity(3, 3)).norm(), 1e-12);
+  VecX tz = VecX::Zero(90), tx = VecX::Zero(90), rz = VecX::Zero(90);
+  const Vec3 c = P.colwise().mean().transpose();
+  for (int i = 0; i < 30; ++i) {
+    tz(3 * i + 2) = 1.0;
+    tx(3 * i) = 1.0;
+    const Vec3 w = Vec3::UnitZ().cross(P.row(i).transpose() - c);
+    rz.segment<3>(3 * i) = w;
+  }
+  EXPECT_LT(outside_span(Q, tx), 1e-12);
+  EXPECT_LT(outside_span(Q, rz), 1e-12);
+  EXPECT_NEAR(outside_span(Q, tz), 1.0, 1e-12);  // z translation is orthogonal to every kept mode
+}
+
 TEST(EigenAnalysis, RigidModesAreOrthonormalAndDropDegenerateRotations) {
   // A generic cloud: 6 orthonormal modes spanning every rigid motion; the
   // θ dofs (beyond 3n) are untouched without theta_begin.

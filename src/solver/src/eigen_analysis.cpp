@@ -33,7 +33,7 @@ class ShiftInvertOp {
 
 }  // namespace
 
-Eigen::MatrixXd rigid_modes(const Points& positions, int dofs, int theta_begin) {
+Eigen::MatrixXd rigid_modes(const Points& positions, int dofs, int theta_begin, bool planar_slab) {
   const int n = static_cast<int>(positions.rows());
   require(dofs >= 3 * n, "rigid_modes: fewer dofs than positions");
   const int k = 6 + (theta_begin >= 0 ? 1 : 0);
@@ -67,6 +67,8 @@ Eigen::MatrixXd rigid_modes(const Points& positions, int dofs, int theta_begin) 
   Eigen::MatrixXd out(dofs, k);
   int kept = 0;
   for (int j = 0; j < k; ++j) {
+    // with the slab: no translation along z (column 2), no rotation about x or y (3, 4)
+    if (planar_slab && (j == 2 || j == 3 || j == 4)) continue;
     VecX v = M.col(j);
     const double norm0 = v.norm();
     for (int pass = 0; pass < 2; ++pass)

@@ -66,7 +66,7 @@ class KnotObjective : public Objective {
   }
   Eigen::MatrixXd rigid_modes() override {
     return ek::rigid_modes(rod_.positions(), rod_.num_dofs(),
-                           rod_.model() == TwistModel::TwistFree ? -1 : 3 * rod_.num_vertices());
+                           rod_.model() == TwistModel::TwistFree ? -1 : 3 * rod_.num_vertices(), slab_ != nullptr);
   }
   double max_step(const VecX& x, const VecX& dx) override {
     const Eigen::Index m = rod_.positions().size();
@@ -244,7 +244,8 @@ RelaxResult relax(const Points& curve, const RelaxOptions& options) {
     SparseAssembler A;
     objective.assemble_hessian(A, true);
     const int theta_begin = model == TwistModel::TwistFree ? -1 : 3 * n;
-    const Eigen::MatrixXd Q = rigid_modes(result.positions, rod.num_dofs(), theta_begin);
+    const Eigen::MatrixXd Q =
+        rigid_modes(result.positions, rod.num_dofs(), theta_begin, slab.has_value() && !options.release_slab);
     EigenOptions eo;
     eo.count = 1;
     const EigenResult eig = smallest_eigenpairs(A.matrix(), Q, no.shift_epsilon * no.lambda_min, eo);

@@ -37,7 +37,14 @@ struct EigenResult {
 /// dofs theta_begin .. theta_begin + n - 1; then a rotation ω also moves each
 /// material angle by ω·t_j (t_j the unit tangent of edge j), which makes it an
 /// exact zero mode of the twisting energy.
-Eigen::MatrixXd rigid_modes(const Points& positions, int dofs, int theta_begin = -1);
+/// With `planar_slab` only the motions that also leave the planarity slab
+/// |z| < h (slab.hpp) invariant are returned: the translations along x and y
+/// and the rotation about the z axis (plus the θ shift). The slab's energy
+/// changes to second order under the other three, so removing them from a
+/// Newton step would remove real curvature (measured: the flat coil of
+/// 12a_1019 stalled at ||g|| ≈ 2e-2 with them, converged in 157 iterations
+/// without).
+Eigen::MatrixXd rigid_modes(const Points& positions, int dofs, int theta_begin = -1, bool planar_slab = false);
 
 /// The `options.count` smallest eigenpairs of the symmetric matrix given by
 /// its upper triangle. `base_shift` > 0 is the first shift tried for
