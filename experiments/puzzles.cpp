@@ -1,7 +1,9 @@
 // exp_puzzles: knot puzzles (paper Section 8.3, Fig. 14). The joined wire
 // cannot change its link, and the data set's equilibria are twist-free
 // (Lk = Wr), so a puzzle is a pair of distinct stable states (different
-// clusters at kClusterCut) of one knot with the same writhe, within 0.1; its
+// clusters at kClusterCut, and their representatives themselves farther
+// apart than the cut: complete linkage can keep two clusters apart whose
+// lowest-energy members look alike) of one knot with the same writhe, within 0.1; its
 // link is that writhe (the paper reports -3 and 1 for its two puzzles,
 // rounded). Reads ../dataset/dataset.h5 and ../multistability/multistability.h5.
 // Writes puzzles.csv (every pair), curves/ (the two states of the listed
@@ -49,6 +51,7 @@ int main(int argc, char** argv) {
             const int i = reps[x], k = reps[y];
             const double wi = e.attributes(i, wc), wk = e.attributes(k, wc);
             if (std::fabs(wi - wk) > kWritheTolerance) continue;
+            if (1.0 - e.similarity(i, k) <= kClusterCut) continue;  // the two states must differ visibly
             const double link = 0.5 * (wi + wk);
             const std::string ca = "curves/" + name + "_" + std::to_string(i) + ".obj";
             const std::string cb = "curves/" + name + "_" + std::to_string(k) + ".obj";

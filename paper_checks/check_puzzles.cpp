@@ -21,6 +21,8 @@ TEST(PaperPuzzles, ListedPairsAreDistinctStatesWithEqualWrithe) {
     const double wa = std::atof(r.at("writhe_a").c_str()), wb = std::atof(r.at("writhe_b").c_str());
     EXPECT_LE(std::fabs(wa - wb), tol) << r.at("knot");        // same link within the stated tolerance
     EXPECT_NE(r.at("state_a"), r.at("state_b")) << r.at("knot");  // representatives of two different clusters
+    // and visibly different themselves: distance 1 - similarity above the cut
+    EXPECT_GT(1.0 - std::atof(r.at("similarity").c_str()), s.at("cut").get<double>()) << r.at("knot");
     EXPECT_NEAR(std::atof(r.at("link").c_str()), 0.5 * (wa + wb), 1e-9) << r.at("knot");
   }
 }
