@@ -375,43 +375,10 @@ TEST(Newton, RigidMotionRemovalMakesStepsOrthogonalToRigidModes) {
   }
 }
 
-TEST(Newton, LazyStepsConvergeToTheSamePoint) {
-  VecX x0(20);
-  for (int i = 0; i < 20; ++i) x0(i) = (i % 3 == 0 ? -1.0 : 1.0) * (2.5 + 0.1 * i);  // far out on the walls
-  ProjectableWells f0(20), fl(20);
-  f0.set_dofs(x0);
-  fl.set_dofs(x0);
-  NewtonOptions o;
-  o.gradient_tolerance = 1e-10;
-  const NewtonReport r0 = minimize(f0, o);
-  NewtonOptions lazy = o;
-  lazy.max_lazy_steps = 3;
-  const NewtonReport rl = minimize(fl, lazy);
-  EXPECT_EQ(r0.lazy_steps, 0);
-  EXPECT_EQ(rl.status, SolverStatus::ConvergedStable);
-  EXPECT_LE(rl.gradient_norm, o.gradient_tolerance);
-  EXPECT_GT(rl.lazy_steps, 0);  // the reuse really happened
-  // fewer Hessians than iterations: lazy steps factorise nothing
-  EXPECT_LT(fl.exact_hessians + fl.projected_hessians, rl.iterations + 1);
-  EXPECT_LT((fl.dofs() - f0.dofs()).lpNorm<Eigen::Infinity>(), 1e-9);
-  // the same with rigid motions to remove and springs
-  const Points start = spring_start(0.2, 8);
-  SpringFrame s0(spring_reference(), true), sl(spring_reference(), true);
-  s0.set_dofs(as_vector(start));
-  sl.set_dofs(as_vector(start));
-  const NewtonReport q0 = minimize(s0, NewtonOptions{});
-  NewtonOptions lazy_springs;
-  lazy_springs.max_lazy_steps = 2;
-  const NewtonReport ql = minimize(sl, lazy_springs);
-  EXPECT_EQ(q0.status, SolverStatus::ConvergedStable);
-  EXPECT_EQ(ql.status, SolverStatus::ConvergedStable);
-  EXPECT_LT(sl.shape_error(), 1e-8);
-}
-
 TEST(Newton, NewOptionsAreValidated) {
   ProjectableWells f(3);
   for (auto mutate : std::vector<std::function<void(NewtonOptions&)>>{
-           [](NewtonOptions& o) { o.hybrid_switch = 0.5; }, [](NewtonOptions& o) { o.max_lazy_steps = -1; },
+           [](NewtonOptions& o) { o.hybrid_switch = 0.5; },
            [](NewtonOptions& o) { o.max_expansion = 0.5; }, [](NewtonOptions& o) { o.expansion_ratio = 0.0; },
            [](NewtonOptions& o) { o.max_shift_attempts = 0; }}) {
     NewtonOptions o;

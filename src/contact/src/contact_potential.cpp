@@ -279,33 +279,6 @@ StepReport ContactPotential::max_step_report(const Points& x, const Points& dx) 
 
 double ContactPotential::max_step(const Points& x, const Points& dx) const { return max_step_report(x, dx).t; }
 
-std::vector<BlockingPair> ContactPotential::blocking_pairs(const Points& x, const Points& dx, double fraction) const {
-  if (x.rows() != n_ || dx.rows() != n_)
-    require(false, "ContactPotential::blocking_pairs: x and dx need " + std::to_string(n_) + " rows");
-  std::vector<BlockingPair> out;
-  const double dhat = options_.dhat;
-  const auto& pairs = ccd_broad_.swept_pairs(x, dx, 0.5 * fraction * dhat);
-  for (const EdgePair& p : pairs) {
-    BlockingPair b;
-    b.a0 = p.a;
-    b.a1 = ccd_broad_.edge_end(p.a);
-    b.b0 = p.b;
-    b.b1 = ccd_broad_.edge_end(p.b);
-    const Vec3 a0 = row(x, b.a0), a1 = row(x, b.a1), b0 = row(x, b.b0), b1 = row(x, b.b1);
-    const EdgeEdgeClosest cl = edge_edge_closest(a0, a1, b0, b1);
-    edge_edge_closest_parameters(a0, a1, b0, b1, cl.type, &b.s, &b.t);
-    const Vec3 w = (a0 + b.s * (a1 - a0)) - (b0 + b.t * (b1 - b0));
-    b.distance = w.norm();
-    if (!(b.distance > 0.0)) continue;
-    b.normal = w / b.distance;
-    const Vec3 da = (1.0 - b.s) * row(dx, b.a0) + b.s * row(dx, b.a1);
-    const Vec3 db = (1.0 - b.t) * row(dx, b.b0) + b.t * row(dx, b.b1);
-    b.rate = b.normal.dot(da - db);
-    if (b.rate < 0.0 && b.distance + b.rate < fraction * std::min(b.distance, dhat)) out.push_back(b);
-  }
-  return out;
-}
-
 double max_step(const Points& x, const Points& dx, const CurveTopology& topology, const ContactOptions& options) {
   return ContactPotential(topology, options).max_step(x, dx);
 }

@@ -53,7 +53,6 @@ void NewtonOptions::validate() const {
   require(hybrid_switch >= 1.0 && std::isfinite(hybrid_switch), "NewtonOptions: hybrid_switch must be >= 1");
   require(exact_after_full_steps >= 0, "NewtonOptions: exact_after_full_steps must be >= 0");
   require(max_shift_attempts >= 1, "NewtonOptions: max_shift_attempts must be >= 1");
-  require(max_lazy_steps >= 0, "NewtonOptions: max_lazy_steps must be >= 0");
   require(max_expansion >= 1.0 && expansion_ratio > 0.0, "NewtonOptions: max_expansion must be >= 1, expansion_ratio > 0");
 }
 
@@ -114,9 +113,6 @@ NewtonReport minimize(Objective& f, const NewtonOptions& o) {
   // exact Hessian needed a shift above 10⁶·ε·λ_min (indefinite).
   bool exact_region = false;
   int full_projected_steps = 0;
-  bool have_factor = false;  // the factorisation of an earlier iterate's Hessian may be reused
-  bool lazy_allowed = false;
-  int lazy_run = 0;
   double shift = base_shift;
   for (;;) {
     auto t0 = Clock::now();
@@ -128,12 +124,8 @@ NewtonReport minimize(Objective& f, const NewtonOptions& o) {
     const bool converged = gnorm <= o.gradient_tolerance;
     const bool exact =
         o.hessian == HessianMode::Exact || exact_region || gnorm <= o.hybrid_switch * o.gradient_tolerance;
-    const bool lazy = !exact && have_factor && lazy_allowed && lazy_run < o.max_lazy_steps;
 
-    if (lazy) {
-      ++lazy_run;
-      ++report.lazy_steps;
-    } else {
+    {
       t0 = Clock::now();
       f.assemble_hessian(assembler, exact);
       report.time_assembly += since(t0);
@@ -158,8 +150,6 @@ NewtonReport minimize(Objective& f, const NewtonOptions& o) {
         start_shift = std::max(base_shift, shift / o.shift_growth);
       }
       report.hessian_psd = psd;
-      have_factor = true;
-      lazy_run = 0;
 
       if (converged) {
         if (psd) return finish(SolverStatus::ConvergedStable);
@@ -209,7 +199,6 @@ NewtonReport minimize(Objective& f, const NewtonOptions& o) {
         f.accept();
         ++report.saddle_escapes;
         ++report.iterations;
-        have_factor = false;
         if (report.iterations >= o.max_iterations) return finish(SolverStatus::MaxIterations);
         continue;
       }
@@ -220,33 +209,6 @@ NewtonReport minimize(Objective& f, const NewtonOptions& o) {
     VecX d = -cholesky.solve(g);
     report.time_factorization += since(t0);
     if (exact) ++report.exact_iterations;
-    if (o.constrain_steps && !exact) {
-      const auto tq = Clock::now();
-      std::vector<StepConstraint> C;
-      const VecX d_free = d;
-      for (int round = 0; round < o.max_constraint_rounds; ++round) {
-        const std::vector<StepConstraint> more = f.step_constraints(x, d);
-        if (more.empty()) break;
-        C.insert(C.end(), more.begin(), more.end());
-        const Eigen::Index m = static_cast<Eigen::Index>(C.size());
-        Eigen::MatrixXd Ct = Eigen::MatrixXd::Zero(d.size(), m);
-        for (Eigen::Index k = 0; k < m; ++k)
-          for (int j = 0; j < 12; ++j)
-            if (C[static_cast<size_t>(k)].index[static_cast<size_t>(j)] >= 0)
-              Ct(C[static_cast<size_t>(k)].index[static_cast<size_t>(j)], k) += C[static_cast<size_t>(k)].coefficient[static_cast<size_t>(j)];
-        Eigen::MatrixXd Y(d.size(), m);
-        for (Eigen::Index k = 0; k < m; ++k) Y.col(k) = cholesky.solve(Ct.col(k));
-        Eigen::MatrixXd S = Ct.transpose() * Y;
-        S.diagonal().array() += 1e-12 * S.diagonal().cwiseAbs().maxCoeff();
-        const VecX lambda = S.ldlt().solve(Ct.transpose() * d_free);
-        d = d_free - Y * lambda;
-      }
-      if (!C.empty()) {
-        ++report.constrained_steps;
-        report.step_constraints += static_cast<int>(C.size());
-      }
-      report.time_collision += since(tq);
-    }
     if (o.remove_rigid_motions) {
       const Eigen::MatrixXd Q = f.rigid_modes();
       if (Q.cols() > 0) d -= Q * (Q.transpose() * d);
@@ -322,13 +284,9 @@ NewtonReport minimize(Objective& f, const NewtonOptions& o) {
     if (o.verbose)
       std::fprintf(stderr, "newton %5d  E %.12g  |g| %.3e  shift %.2e  |d|inf %.2e  ccd %.3e  t %.3e  %s %s\n",
                    report.iterations, E, gnorm, shift, d.lpNorm<Eigen::Infinity>(), t_max, accepted ? t : 0.0,
-                   lazy ? "lazy" : exact ? "exact" : "proj", assembler.pattern_changed() ? "pattern" : "");
+                   exact ? "exact" : "proj", assembler.pattern_changed() ? "pattern" : "");
     if (!accepted) {
       f.set_dofs(x);
-      if (lazy) {  // the reused factorisation gave no progress: refactorise
-        lazy_allowed = false;
-        continue;
-      }
       return finish(SolverStatus::Stalled);
     }
     if (o.hessian == HessianMode::Hybrid) {
@@ -341,8 +299,6 @@ NewtonReport minimize(Objective& f, const NewtonOptions& o) {
         full_projected_steps = 0;
       }
     }
-    // Reuse the factorisation for the next step only after a full (or expanded) step.
-    lazy_allowed = t >= 1.0;
     f.accept();
     ++report.iterations;
   }

@@ -86,24 +86,6 @@ class KnotObjective : public Objective {
     }
     return t;
   }
-  std::vector<StepConstraint> step_constraints(const VecX& x, const VecX& d) override {
-    constexpr double rho = 0.5;  // a pair is blocking when the step would halve its distance (below d̂)
-    const Eigen::Index m = rod_.positions().size();
-    const Points X = as_points(x.head(m)), D = as_points(d.head(m));
-    std::vector<StepConstraint> out;
-    for (const BlockingPair& b : contact_.blocking_pairs(X, D, rho)) {
-      StepConstraint c;
-      const int v[4] = {b.a0, b.a1, b.b0, b.b1};
-      const double w[4] = {1.0 - b.s, b.s, -(1.0 - b.t), -b.t};
-      for (int k = 0; k < 4; ++k)
-        for (int i = 0; i < 3; ++i) {
-          c.index[static_cast<size_t>(3 * k + i)] = 3 * v[k] + i;
-          c.coefficient[static_cast<size_t>(3 * k + i)] = w[k] * b.normal(i);
-        }
-      out.push_back(c);
-    }
-    return out;
-  }
   void accept() override { rod_.update_reference_frames(); }
 
  private:

@@ -99,15 +99,6 @@ struct ContactPair {
   double distance = 0.0;  ///< [length] segment distance at update()
 };
 
-/// A pair that a motion would bring deep into the barrier (blocking_pairs()).
-struct BlockingPair {
-  int a0 = -1, a1 = -1, b0 = -1, b1 = -1;  ///< vertex indices of the two edges
-  double s = 0.0, t = 0.0;  ///< closest points a0 + s (a1 − a0) and b0 + t (b1 − b0) at x
-  Vec3 normal = Vec3::Zero();  ///< unit vector from the closest point on b to the one on a
-  double distance = 0.0;    ///< [length] segment distance at x
-  double rate = 0.0;        ///< [length] normal·(δp_a − δp_b): first-order change of the distance under dx (< 0)
-};
-
 /// Report of one collision-detection query.
 struct StepReport {
   double t = 1.0;          ///< [1] certified step (max_step)
@@ -163,14 +154,6 @@ class ContactPotential {
   /// Largest certified step t ∈ [0, 1] of the motion x + s·dx (see the file
   /// comment). 0 if two non-excluded edges already touch at x.
   double max_step(const Points& x, const Points& dx) const;
-  /// Pairs that the motion x + dx would bring, to first order, below
-  /// fraction · min(d(x), d̂) (fraction in (0, 1)): non-excluded pairs whose
-  /// swept boxes come within fraction · d̂, with distance d(x) and
-  /// first-order change r = n·(δp_a − δp_b) < 0 (δp the motion of the
-  /// closest points at x, n their unit normal) such that
-  /// d + r < fraction · min(d, d̂). For step control in solvers (a
-  /// linearisation; the certified bound is max_step()). Sorted by edge pair.
-  std::vector<BlockingPair> blocking_pairs(const Points& x, const Points& dx, double fraction) const;
   /// The same with a report (candidates, limiting pair).
   StepReport max_step_report(const Points& x, const Points& dx) const;
 

@@ -3,7 +3,6 @@
 /// reuse, a collision-free step bound and Armijo backtracking (paper Section 6,
 /// "Numerical Solver"), on an abstract objective.
 #include <Eigen/Dense>
-#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -13,13 +12,6 @@
 #include "ek/solver/cholesky.hpp"
 
 namespace ek {
-
-/// A linear constraint on a Newton step d: Σ_k coefficient[k] · d[index[k]] = 0
-/// (slots with index -1 are unused).
-struct StepConstraint {
-  std::array<int, 12> index;
-  std::array<double, 12> coefficient;
-};
 
 /// A smooth objective E(x) with exact gradient and sparse Hessian.
 ///
@@ -55,15 +47,6 @@ class Objective {
   /// NewtonOptions::remove_rigid_motions their components are removed from
   /// each Newton step. Default: none.
   virtual Eigen::MatrixXd rigid_modes() { return {}; }
-  /// Constraints for a step d from x that would drive parts of the objective
-  /// deep into a region the Hessian does not model (for example two strands
-  /// into each other's contact barrier); see NewtonOptions::constrain_steps.
-  /// Default: none.
-  virtual std::vector<StepConstraint> step_constraints(const VecX& x, const VecX& d) {
-    (void)x;
-    (void)d;
-    return {};
-  }
 };
 
 /// Outcome of a minimisation.
@@ -113,22 +96,6 @@ struct NewtonOptions {
   /// projected steps, until an exact step backtracks or needs a shift above
   /// 10⁶·ε·λ_min (indefinite); 0 disables.
   int exact_after_full_steps = 2;
-  /// [1] Lazy (Shamanskii) steps: in Hybrid mode, while ||g|| is above the
-  /// hybrid switch, the factorisation of an earlier iterate's (projected)
-  /// Hessian is reused for up to this many further steps, as long as every
-  /// step is taken in full (t >= 1); a step that must backtrack, or a failed
-  /// line search, brings a fresh Hessian. Directions stay descent directions
-  /// (the reused matrix is positive definite). 0 disables it. The exact phase
-  /// below the switch and the stability test always factorise afresh.
-  int max_lazy_steps = 0;
-  /// Constrained steps (Hybrid mode, above the switch): when the Newton step
-  /// d = -H⁻¹g would drive pairs deep into a barrier that H does not see
-  /// (Objective::step_constraints), d is replaced by the minimiser of the
-  /// same quadratic model subject to those constraints, C d = 0:
-  /// d = d₀ - H⁻¹Cᵀ (C H⁻¹ Cᵀ)⁻¹ C d₀, repeated while new constraints appear
-  /// (at most max_constraint_rounds). Still a descent direction.
-  bool constrain_steps = false;
-  int max_constraint_rounds = 3;    ///< [1]
   /// Remove the components along Objective::rigid_modes() from each Newton
   /// step. A rigid rotation leaves E invariant, but its linearisation
   /// x + ω×x stretches every edge to second order; with the tiny shift
@@ -190,9 +157,6 @@ struct NewtonReport {
   double time_line_search = 0.0;        ///< [s] energy evaluations of trial points
   double time_eigen = 0.0;              ///< [s] negative-curvature directions
   double time_symbolic = 0.0;           ///< [s] symbolic analyses (part of time_factorization)
-  int constrained_steps = 0;            ///< steps changed by constrain_steps
-  int step_constraints = 0;             ///< constraints imposed over all steps
-  int lazy_steps = 0;                   ///< steps that reused an earlier factorisation (max_lazy_steps)
   int expansions = 0;                   ///< steps lengthened by the line-search expansion
   int exact_iterations = 0;             ///< iterations whose direction used the exact Hessian
 };
