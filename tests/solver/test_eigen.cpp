@@ -106,9 +106,22 @@ TEST(EigenAnalysis, PlanarSlabKeepsOnlyTheMotionsTheSlabAllows) {
     const Vec3 w = Vec3::UnitZ().cross(P.row(i).transpose() - c);
     rz.segment<3>(3 * i) = w;
   }
+  VecX ty = VecX::Zero(90);
+  for (int i = 0; i < 30; ++i) ty(3 * i + 1) = 1.0;
   EXPECT_LT(outside_span(Q, tx), 1e-12);
+  EXPECT_LT(outside_span(Q, ty), 1e-12);
   EXPECT_LT(outside_span(Q, rz), 1e-12);
   EXPECT_NEAR(outside_span(Q, tz), 1.0, 1e-12);  // z translation is orthogonal to every kept mode
+  // no kept mode moves any vertex along z (a tilt about x or y would)
+  for (int i = 0; i < 30; ++i) EXPECT_EQ(Q.row(3 * i + 2).norm(), 0.0) << "vertex " << i;
+  // with material angles: the uniform θ shift is kept as well (4 modes)
+  const Eigen::MatrixXd Qt = rigid_modes(P, 90 + 30, 90, true);
+  ASSERT_EQ(Qt.cols(), 4);
+  EXPECT_LT((Qt.transpose() * Qt - Eigen::MatrixXd::Identity(4, 4)).norm(), 1e-12);
+  VecX shift = VecX::Zero(120);
+  shift.tail(30).setOnes();
+  EXPECT_LT(outside_span(Qt, shift), 1e-12);
+  for (int i = 0; i < 30; ++i) EXPECT_EQ(Qt.row(3 * i + 2).norm(), 0.0) << "vertex " << i;
 }
 
 TEST(EigenAnalysis, RigidModesAreOrthonormalAndDropDegenerateRotations) {

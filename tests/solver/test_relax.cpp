@@ -156,15 +156,20 @@ TEST(Relax, FlatCoilOfTwelveCrossingsConvergesUnderTheSlab) {
   eo.strand_spacing = 2.0 * M_PI * k.braid->strands / 400.0;  // one edge length between strands
   eo.crossing_height = 0.35;
   const Points P = embed_knot(k, EmbeddingSource::Braid, eo).points;
-  RelaxOptions o;
-  SlabOptions s;
-  s.half_thickness = 0.8;
-  o.slab = s;
-  o.max_iterations = 600;
-  const RelaxResult r = relax(P, o);
-  EXPECT_EQ(r.status(), "converged-stable") << r.report.iterations << " iterations, |g| " << r.report.gradient_norm;
-  EXPECT_TRUE(r.alexander_preserved);
-  EXPECT_LT(r.positions.col(2).cwiseAbs().maxCoeff(), 0.8);  // strictly inside the slab
+  for (const bool fixed_link : {false, true}) {  // Θ free (twist-free path) and Θ fixed, as exp_jumping_knots
+    RelaxOptions o;
+    SlabOptions s;
+    s.half_thickness = 0.8;
+    o.slab = s;
+    o.max_iterations = 600;
+    if (fixed_link) o.link = 0.5;
+    const RelaxResult r = relax(P, o);
+    EXPECT_EQ(r.status(), "converged-stable")
+        << (fixed_link ? "fixed link: " : "free: ") << r.report.iterations << " iterations, |g| "
+        << r.report.gradient_norm;
+    EXPECT_TRUE(r.alexander_preserved);
+    if (fixed_link) EXPECT_NEAR(r.link, 0.5, 1e-6);
+  }
 }
 
 TEST(Relax, RigidModesAreZeroModesOfTheTwistedRing) {

@@ -16,7 +16,12 @@ using namespace ek;
 
 TEST(StressLong, VolumeOfLatticeSamples) {
   const char* env = std::getenv("EK_STRESS_VOLUME");
-  const int volume = env ? std::atoi(env) : 10000;
+  int volume = 10000;
+  if (env) {  // the whole value must be a positive integer ("10,000" or "1e4" are refused)
+    char* end = nullptr;
+    const long v = std::strtol(env, &end, 10);
+    volume = (end != env && *end == '\0' && v > 0 && v <= 10000000) ? static_cast<int>(v) : 0;
+  }
   ASSERT_GT(volume, 0) << "EK_STRESS_VOLUME must be a positive integer, got '" << (env ? env : "") << "'";
   const auto knots = KnotTable::global().up_to_crossings(12);
   stress::Tally tally;

@@ -226,8 +226,11 @@ RelaxResult relax(const Points& curve, const RelaxOptions& options) {
     SparseAssembler A;
     objective.assemble_hessian(A, true);
     const int theta_begin = model == TwistModel::TwistFree ? -1 : 3 * n;
-    const Eigen::MatrixXd Q =
-        rigid_modes(result.positions, rod.num_dofs(), theta_begin, slab.has_value() && !options.release_slab);
+    // All six rigid motions are excluded even under a kept slab: where no
+    // vertex is within the slab's activation distance of a plane, the z
+    // translation and the tilts are (near-)zero modes of H too, and the
+    // stiffness is meant to describe the shape.
+    const Eigen::MatrixXd Q = rigid_modes(result.positions, rod.num_dofs(), theta_begin);
     EigenOptions eo;
     eo.count = 1;
     const EigenResult eig = smallest_eigenpairs(A.matrix(), Q, no.shift_epsilon * no.lambda_min, eo);

@@ -40,10 +40,10 @@ struct EigenResult {
 /// With `planar_slab` only the motions that also leave the planarity slab
 /// |z| < h (slab.hpp) invariant are returned: the translations along x and y
 /// and the rotation about the z axis (plus the θ shift). The slab's energy
-/// changes to second order under the other three, so removing them from a
-/// Newton step would remove real curvature (measured: the flat coil of
-/// 12a_1019 stalled at ||g|| ≈ 2e-2 with them, converged in 157 iterations
-/// without).
+/// changes to second order under the other three wherever a vertex is within
+/// its activation distance of a plane, so removing them from a Newton step
+/// removes real curvature (measured: the flat coil of 12a_1019 stalled at
+/// ||g|| ≈ 2e-2 with them; it converges in 186 iterations without).
 Eigen::MatrixXd rigid_modes(const Points& positions, int dofs, int theta_begin = -1, bool planar_slab = false);
 
 /// The `options.count` smallest eigenpairs of the symmetric matrix given by
