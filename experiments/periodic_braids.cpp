@@ -11,19 +11,30 @@
 //   0.1 rad of a principal axis, on a 0.01 rad grid, with the smallest error);
 //   control_error = the same for a (p+1)-fold rotation about that axis (what
 //   a state without the p-fold symmetry scores);
-// and the crossings seen along that axis, split into the two halves by
-// height: each half's angles against a regular p-gon (largest deviation, in
-// degrees) and the rotation between the two p-gons (expected 0 for odd p and
-// π/p for even p).
-// Writes periodic.csv, curves/<family>_p<p>.obj and summary.json.
+// and the braid's crossings seen along that axis: the crossings of the
+// projection whose two strands pass within kCrossingGap of each other along
+// the axis (where the strands cross they touch, ~d̂ apart; a 3D state's
+// projection also shows strands that pass each other far apart, e.g. 4_1's
+// 4 braid crossings at gap 0.46-0.48 and 4 more at gap ~31 near the axis),
+// split into the two halves by height: each half's angles against a regular
+// p-gon (largest deviation, in degrees) and the rotation between the two
+// p-gons (expected 0 for odd p and π/p for even p).
+// The p-fold symmetric equilibrium next to each state: its p-fold average
+// (symmetrize()) relaxed again with the same rest lengths; the same measures
+// on it ("symmetric" in summary.json). The relaxation from the coil can stop
+// in a slightly asymmetric neighbour (measured: 4_1's symmetric state is
+// 1.1e-4 lower in energy, 9_40's 7e-6 higher; both converged-stable).
+// Writes periodic.csv, curves/<family>_p<p>[_symmetric].obj and summary.json.
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <tuple>
 
 #include "ek/analysis/attributes.hpp"
 #include "ek/embedding/embedding.hpp"
 #include "ek/geometry/curve_io.hpp"
+#include "ek/geometry/polyline.hpp"
 #include "ek/geometry/segment_distance.hpp"
 #include "ek/knots/alexander.hpp"
 #include "ek/solver/relax.hpp"
@@ -81,6 +92,94 @@ Gon fit_gon(const std::vector<double>& angles, int p) {
 }
 
 }  // namespace
+
+/// The two p-gons of a state's braid crossings seen along `axis` (see the file comment).
+struct Polygons {
+  size_t crossings = 0, projected = 0;
+  bool by_radius = false;
+  Gon top, bottom;
+  double rotation = 0.0;  // [deg] between the two p-gons, in [0, 180/p]
+  double error() const { return std::max(top.max_error, bottom.max_error); }
+};
+
+Polygons measure_polygons(const Points& P, const Vec3& c, const Vec3& axis, int p, double max_gap);
+
+/// The p-fold average of P about `axis` through c. The closed s-strand braid
+/// winds s times about its axis, so moving k·n/p vertices along the curve
+/// (k periods of the braid word) turns by 2π·k·s/p: vertex i + k·n/p is
+/// rotated back by that angle (k = 0..p-1), in whichever sense of rotation
+/// moves P less. A p-fold symmetric start for the symmetric equilibrium
+/// (n divisible by p).
+Points symmetrize(const Points& P, const Vec3& c, const Vec3& axis, int p, int strands) {
+  const int n = static_cast<int>(P.rows());
+  require(n % p == 0, "symmetrize: n must be divisible by p");
+  Points best;
+  double best_move = 1e300;
+  for (const double sense : {1.0, -1.0}) {
+    Points Q = Points::Zero(n, 3);
+    for (int k = 0; k < p; ++k) {
+      const Eigen::AngleAxisd R(-sense * 2.0 * M_PI * k * strands / p, axis);
+      for (int i = 0; i < n; ++i)
+        Q.row(i) += (c + R * (P.row((i + k * n / p) % n).transpose() - c)).transpose() / p;
+    }
+    const double move = (Q - P).rowwise().norm().maxCoeff();
+    if (move < best_move) {
+      best_move = move;
+      best = Q;
+    }
+  }
+  return best;
+}
+
+/// [length] the braid's crossings: strands at most this far apart along the
+/// axis where their projections cross (2 d̂ of the data set's wire, d̂ = 0.4).
+constexpr double kCrossingGap = 0.8;
+
+Polygons measure_polygons(const Points& P, const Vec3& c, const Vec3& axis, int p, double max_gap) {
+  Polygons out;
+  Vec3 view = (axis + 1e-7 * Vec3(0.3, 0.7, 0.1)).normalized();
+  bool generic = false;
+  auto crossings = projection_crossings(P, view, &generic);
+  for (int attempt = 1; !generic && attempt < 10; ++attempt) {
+    view = (axis + 1e-5 * attempt * Vec3(0.3, -0.7, 0.2)).normalized();
+    crossings = projection_crossings(P, view, &generic);
+  }
+  out.projected = crossings.size();
+  // the braid's crossings: strands within max_gap along the axis
+  crossings.erase(std::remove_if(crossings.begin(), crossings.end(),
+                                 [&](const auto& x) { return std::fabs((x.over - x.under).dot(axis)) > max_gap; }),
+                  crossings.end());
+  out.crossings = crossings.size();
+  // The two p-gons: the crossings split at the median height along the
+  // axis (a 3D state: one p-gon at each end) or, when that fits worse, at
+  // the median distance from the axis (a flat coil: inner and outer ring).
+  const Vec3 u = axis.unitOrthogonal(), v = axis.cross(u);
+  auto split = [&](bool by_height) {
+    std::vector<double> key;
+    for (const auto& x : crossings) {
+      const Vec3 mid = 0.5 * (x.over + x.under) - c;
+      key.push_back(by_height ? mid.dot(axis) : (mid - mid.dot(axis) * axis).norm());
+    }
+    std::vector<double> sorted = key;
+    std::sort(sorted.begin(), sorted.end());
+    const double median = sorted.empty() ? 0.0 : sorted[sorted.size() / 2];
+    std::vector<double> hi, lo;
+    for (size_t q = 0; q < crossings.size(); ++q) {
+      const Vec3 mid = 0.5 * (crossings[q].over + crossings[q].under) - c;
+      (key[q] >= median ? hi : lo).push_back(std::atan2(mid.dot(v), mid.dot(u)));
+    }
+    return std::make_pair(fit_gon(hi, p), fit_gon(lo, p));
+  };
+  std::tie(out.top, out.bottom) = split(true);
+  const auto [rt, rb] = split(false);
+  out.by_radius = std::max(rt.max_error, rb.max_error) < out.error();
+  if (out.by_radius) {
+    out.top = rt;
+    out.bottom = rb;
+  }
+  out.rotation = std::fabs(wrap(out.top.phase - out.bottom.phase, 2.0 * M_PI / p)) * 180.0 / M_PI;
+  return out;
+}
 
 int main(int argc, char** argv) {
   return run_experiment(argc, argv, "exp_periodic_braids", "Periodic braids of Fig. 16.", [](const Args& a) {
@@ -142,45 +241,23 @@ int main(int argc, char** argv) {
             }
           }
       }
-      // crossings seen along the axis, split by height
-      Vec3 view = (axis + 1e-7 * Vec3(0.3, 0.7, 0.1)).normalized();
-      bool generic = false;
-      auto crossings = projection_crossings(P, view, &generic);
-      for (int attempt = 1; !generic && attempt < 10; ++attempt) {
-        view = (axis + 1e-5 * attempt * Vec3(0.3, -0.7, 0.2)).normalized();
-        crossings = projection_crossings(P, view, &generic);
-      }
-      // The two p-gons: the crossings split at the median height along the
-      // axis (a 3D state: one p-gon at each end) or, when that fits worse, at
-      // the median distance from the axis (a flat coil: inner and outer ring).
-      const Vec3 u = axis.unitOrthogonal(), v = axis.cross(u);
-      auto split = [&](bool by_height) {
-        std::vector<double> key;
-        for (const auto& x : crossings) {
-          const Vec3 mid = 0.5 * (x.over + x.under) - c;
-          key.push_back(by_height ? mid.dot(axis) : (mid - mid.dot(axis) * axis).norm());
-        }
-        std::vector<double> sorted = key;
-        std::sort(sorted.begin(), sorted.end());
-        const double median = sorted.empty() ? 0.0 : sorted[sorted.size() / 2];
-        std::vector<double> hi, lo;
-        for (size_t q = 0; q < crossings.size(); ++q) {
-          const Vec3 mid = 0.5 * (crossings[q].over + crossings[q].under) - c;
-          (key[q] >= median ? hi : lo).push_back(std::atan2(mid.dot(v), mid.dot(u)));
-        }
-        return std::make_pair(fit_gon(hi, m.p), fit_gon(lo, m.p));
-      };
-      auto [gt, gb] = split(true);
-      const auto [rt, rb] = split(false);
-      const bool by_radius = std::max(rt.max_error, rb.max_error) < std::max(gt.max_error, gb.max_error);
-      if (by_radius) {
-        gt = rt;
-        gb = rb;
-      }
-      const double rot = std::fabs(wrap(gt.phase - gb.phase, 2.0 * M_PI / m.p)) * 180.0 / M_PI;
+      const Polygons g = measure_polygons(P, c, axis, m.p, kCrossingGap);
+      const Gon &gt = g.top, &gb = g.bottom;
+      const double rot = g.rotation;
+      // The p-fold symmetric equilibrium next to it: relax the p-fold average
+      // (same rest lengths). Fig. 16's states are symmetric; the relaxation
+      // from the coil may stop in a slightly asymmetric neighbour.
+      RelaxOptions so;
+      so.rest_lengths = edge_lengths(emb.points);
+      const RelaxResult rs = relax(symmetrize(P, c, axis, m.p, m.strands), so);
+      const Points& S = rs.positions;
+      const Vec3 cs = S.colwise().mean().transpose();
+      const double sym_error = symmetry_error(S, cs, axis, m.p);
+      const Polygons gs = measure_polygons(S, cs, axis, m.p, kCrossingGap);
       const double expected = (m.p % 2 == 1) ? 0.0 : 180.0 / m.p;
       const std::string curve = "curves/" + m.family + "_p" + std::to_string(m.p) + ".obj";
       write_curve(a.out + "/" + curve, P);
+      write_curve(a.out + "/curves/" + m.family + "_p" + std::to_string(m.p) + "_symmetric.obj", S);
       csv.row({m.family, std::to_string(m.strands), std::to_string(m.p), std::to_string(n),
                m.table_name.empty() ? "-" : m.table_name, r.status(), Csv::num(r.energy.total), alex_ok,
                Csv::num(best), std::to_string(gt.count), std::to_string(gb.count), Csv::num(gt.max_error),
@@ -189,19 +266,33 @@ int main(int argc, char** argv) {
                               {"p", m.p},
                               {"knot", m.table_name},
                               {"status", r.status()},
+                              {"energy", r.energy.total},
                               {"alexander_preserved", r.alexander_preserved},
                               {"alexander_matches_table", alex_ok},
                               {"threedim", threedim(P)},
                               {"symmetry_error", best},
                               {"control_error", symmetry_error(P, c, axis, m.p + 1)},
-                              {"crossings", crossings.size()},
-                              {"polygon_split", by_radius ? "radius" : "height"},
-                              {"polygon_error_deg", std::max(gt.max_error, gb.max_error)},
+                              {"crossings", g.crossings},
+                              {"projection_crossings", g.projected},
+                              {"polygon_split", g.by_radius ? "radius" : "height"},
+                              {"polygon_error_deg", g.error()},
                               {"relative_rotation_deg", rot},
-                              {"expected_rotation_deg", expected}});
+                              {"expected_rotation_deg", expected},
+                              {"symmetric",
+                               {{"status", rs.status()},
+                                {"energy", rs.energy.total},
+                                {"energy_above", rs.energy.total - r.energy.total},
+                                {"threedim", threedim(S)},
+                                {"symmetry_error", sym_error},
+                                {"crossings", gs.crossings},
+                                {"polygon_split", gs.by_radius ? "radius" : "height"},
+                                {"polygon_error_deg", gs.error()},
+                                {"relative_rotation_deg", gs.rotation}}}});
       std::cout << "exp_periodic_braids: " << m.family << " p=" << m.p << " " << r.status() << " symmetry error "
                 << best << ", crossings " << gt.count << "+" << gb.count << ", rotation " << rot << " deg (expected "
-                << expected << ")" << std::endl;
+                << expected << "); symmetric equilibrium " << rs.status() << " dE " << rs.energy.total - r.energy.total
+                << ", symmetry error " << sym_error << ", p-gon error " << gs.error() << " deg, rotation "
+                << gs.rotation << " deg" << std::endl;
     }
     csv.commit();
     write_json(a.out + "/summary.json", j);
