@@ -1,5 +1,10 @@
 """Fig. 16: relaxed periodic braids (σ1σ2⁻¹)^p and (σ1σ2⁻¹σ3)^p, two views
-per member: from the side and along the symmetry axis, coloured by curvature."""
+per member: from the side and along the symmetry axis, coloured by curvature.
+Each member is drawn at its p-fold symmetric equilibrium (the relaxed
+state's p-fold average relaxed again, <curve>_symmetric.obj) when the
+experiment wrote it, as the paper's Fig. 16 shows symmetric states."""
+import os
+
 import numpy as np
 
 from common import curvature, draw_shadow, parse_args, plt, read_csv, save
@@ -14,7 +19,9 @@ def read_obj(path):
 
 fig, axs = plt.subplots(2, len(rows), figsize=(1.9 * len(rows), 4.2), squeeze=False)
 for col, r in enumerate(rows):
-    P = read_obj(f"{a.results}/periodic_braids/{r['curve']}")
+    path = f"{a.results}/periodic_braids/{r['curve']}"
+    symmetric = path[:-4] + "_symmetric.obj"
+    P = read_obj(symmetric if os.path.exists(symmetric) else path)
     Q = P - P.mean(axis=0)
     w, v = np.linalg.eigh(Q.T @ Q)
     # the symmetry axis: the principal axis whose eigenvalue differs most from the other two
