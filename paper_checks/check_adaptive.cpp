@@ -11,7 +11,7 @@
 TEST(PaperAdaptive, ScoreEndsTheSamplingForMostKnots) {
   const auto s = ek::paper::summary("adaptive");
   const double stopped = s.at("stopped_by_score_share").get<double>();
-  std::cout << "[ measured ] score stopped the sampling for " << stopped << " of " << s.at("knots")
+  std::cout << "[ measured ] score stopped the sampling for a share " << stopped << " of the " << s.at("knots")
             << " knots (budget " << s.at("budget") << ", " << s.at("adaptive") << "); saved "
             << s.at("saved_share") << ", median " << s.at("median_samples") << " samples per knot" << std::endl;
   EXPECT_GE(stopped, 0.95);  // paper: 95% of the knot types
