@@ -29,8 +29,9 @@
 // comparisons. Writes DIR/solver_macro.csv (one row per knot and one "all"
 // row) and DIR/solver_macro_runs.csv (one row per sample, with the energy,
 // contacts and gradient norm at the result, to compare methods sample by
-// sample). Exit status 1 when a run does not end converged-stable with its
-// Alexander polynomial preserved.
+// sample). Exit status 1 when a run changed the knot type (its Alexander
+// polynomial); other statuses (max-iterations, stalled) are measured
+// outcomes, counted in the table.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -250,13 +251,13 @@ int main(int argc, char** argv) {
       csv << "variant,runs,converged_stable,total_seconds,median_seconds,median_iterations\n";
       std::printf("solver skips (n = 400, %d samples each of %zu knots, one after the other)\n", count, knots.size());
       std::printf("%-11s %5s %7s %9s %9s %7s\n", "variant", "runs", "stable", "total s", "median s", "med it");
-      bool all_stable = true;
+      bool all_stable = true;  // (no topology change)
       for (size_t v = 0; v < skip_variants.size(); ++v) {
         std::vector<const Run*> sel;
         for (const Run& r : skip_runs[v]) sel.push_back(&r);
         const Summary sm = summarize(skip_variants[v], sel);
         const double total = sm.mean_seconds * sm.runs;
-        all_stable = all_stable && sm.stable == sm.runs;
+        all_stable = all_stable && !sm.statuses.count("topology-changed");
         std::printf("%-11s %5d %7d %9.3f %9.3f %7.0f\n", sm.name.c_str(), sm.runs, sm.stable, total,
                     sm.median_seconds, sm.median_iterations);
         csv << sm.name << "," << sm.runs << "," << sm.stable << "," << fmt(total, "%.6g") << ","
@@ -312,7 +313,7 @@ int main(int argc, char** argv) {
     write_atomic(out + "/solver_macro.csv", csv.str());
     write_atomic(out + "/solver_macro_runs.csv", runs_csv.str());
     std::printf("wrote %s/solver_macro.csv and %s/solver_macro_runs.csv\n", out.c_str(), out.c_str());
-    return table.back().stable == table.back().runs ? 0 : 1;
+    return table.back().statuses.count("topology-changed") ? 1 : 0;
   } catch (const ek::InputError& e) {
     std::cerr << "exp_bench_solver: " << e.what() << "\n";
     return 2;
