@@ -32,28 +32,26 @@ ax.set_ylabel("relative error")
 ax.set_title("exact answers")
 ax.legend(fontsize=7)
 
-ax = axs[1]
-for name in sorted({r["knot"] for r in knots}):
-    rows = [r for r in knots if r["knot"] == name and float(r["relative_error"]) > 0]
-    ax.loglog([float(r["seconds"]) for r in rows], [float(r["relative_error"]) for r in rows], "o-", label=name)
-    for r in rows:
-        ax.annotate(r["n"], (float(r["seconds"]), float(r["relative_error"])), fontsize=6)
-ax.set_xlabel("time per equilibrium [s] (one core)")
-ax.set_ylabel("relative energy error (Richardson reference)")
-ax.set_title("knots: resolution n")
-ax.legend(fontsize=7)
+def time_error_panel(ax, rows, label_key, ylabel, title):
+    """Time per equilibrium against relative energy error, one line per knot,
+    each point annotated with its rows' label_key (n or tolerance)."""
+    for name in sorted({r["knot"] for r in rows}):
+        sel = [r for r in rows if r["knot"] == name]
+        x = [float(r["seconds"]) for r in sel]
+        y = [max(float(r["relative_error"]), 1e-17) for r in sel]
+        ax.loglog(x, y, "o-", label=name)
+        for r, xi, yi in zip(sel, x, y):
+            ax.annotate(r[label_key], (xi, yi), fontsize=6)
+    ax.set_xlabel("time per equilibrium [s] (one core)")
+    ax.set_ylabel(ylabel)
+    ax.set_title(title)
+    ax.legend(fontsize=7)
 
-ax = axs[2]
-for name in sorted({r["knot"] for r in tol}):
-    rows = [r for r in tol if r["knot"] == name]
-    ax.loglog([float(r["seconds"]) for r in rows], [max(float(r["relative_error"]), 1e-17) for r in rows], "o-",
-              label=name)
-    for r in rows:
-        ax.annotate(r["tolerance"], (float(r["seconds"]), max(float(r["relative_error"]), 1e-17)), fontsize=6)
-ax.set_xlabel("time per equilibrium [s] (one core)")
-ax.set_ylabel("relative energy error (tolerance 1e-12 reference)")
-ax.set_title("knots: gradient tolerance, n = 400")
-ax.legend(fontsize=7)
+
+time_error_panel(axs[1], [r for r in knots if float(r["relative_error"]) > 0], "n",
+                 "relative energy error (Richardson reference)", "knots: resolution n")
+time_error_panel(axs[2], tol, "tolerance", "relative energy error (tolerance 1e-12 reference)",
+                 "knots: gradient tolerance, n = 400")
 save(fig, a.out, "time_vs_error")
 
 print(f"{'case':<28}{'n / tol':>10}{'rel. error':>12}{'seconds':>10}")
