@@ -91,8 +91,6 @@ Gon fit_gon(const std::vector<double>& angles, int p) {
   return g;
 }
 
-}  // namespace
-
 /// The two p-gons of a state's braid crossings seen along `axis` (see the file comment).
 struct Polygons {
   size_t crossings = 0, projected = 0;
@@ -101,8 +99,6 @@ struct Polygons {
   double rotation = 0.0;  // [deg] between the two p-gons, in [0, 180/p]
   double error() const { return std::max(top.max_error, bottom.max_error); }
 };
-
-Polygons measure_polygons(const Points& P, const Vec3& c, const Vec3& axis, int p, double max_gap);
 
 /// The p-fold average of P about `axis` through c. The closed s-strand braid
 /// winds s times about its axis, so moving k·n/p vertices along the curve
@@ -154,20 +150,17 @@ Polygons measure_polygons(const Points& P, const Vec3& c, const Vec3& axis, int 
   // axis (a 3D state: one p-gon at each end) or, when that fits worse, at
   // the median distance from the axis (a flat coil: inner and outer ring).
   const Vec3 u = axis.unitOrthogonal(), v = axis.cross(u);
+  std::vector<Vec3> mids;  // each crossing's midpoint, relative to c
+  for (const auto& x : crossings) mids.push_back(0.5 * (x.over + x.under) - c);
   auto split = [&](bool by_height) {
     std::vector<double> key;
-    for (const auto& x : crossings) {
-      const Vec3 mid = 0.5 * (x.over + x.under) - c;
-      key.push_back(by_height ? mid.dot(axis) : (mid - mid.dot(axis) * axis).norm());
-    }
+    for (const Vec3& mid : mids) key.push_back(by_height ? mid.dot(axis) : (mid - mid.dot(axis) * axis).norm());
     std::vector<double> sorted = key;
     std::sort(sorted.begin(), sorted.end());
     const double median = sorted.empty() ? 0.0 : sorted[sorted.size() / 2];
     std::vector<double> hi, lo;
-    for (size_t q = 0; q < crossings.size(); ++q) {
-      const Vec3 mid = 0.5 * (crossings[q].over + crossings[q].under) - c;
-      (key[q] >= median ? hi : lo).push_back(std::atan2(mid.dot(v), mid.dot(u)));
-    }
+    for (size_t q = 0; q < mids.size(); ++q)
+      (key[q] >= median ? hi : lo).push_back(std::atan2(mids[q].dot(v), mids[q].dot(u)));
     return std::make_pair(fit_gon(hi, p), fit_gon(lo, p));
   };
   std::tie(out.top, out.bottom) = split(true);
@@ -180,6 +173,8 @@ Polygons measure_polygons(const Points& P, const Vec3& c, const Vec3& axis, int 
   out.rotation = std::fabs(wrap(out.top.phase - out.bottom.phase, 2.0 * M_PI / p)) * 180.0 / M_PI;
   return out;
 }
+
+}  // namespace
 
 int main(int argc, char** argv) {
   return run_experiment(argc, argv, "exp_periodic_braids", "Periodic braids of Fig. 16.", [](const Args& a) {
