@@ -24,6 +24,10 @@
 // on it ("symmetric" in summary.json). The relaxation from the coil can stop
 // in a slightly asymmetric neighbour (measured: 4_1's symmetric state is
 // 1.1e-4 lower in energy, 9_40's 7e-6 higher; both converged-stable).
+// A tall start per member ("tall_start" in summary.json): the same braid with
+// its strands stacked along the axis (EmbeddingOptions::braid_tilt = π/2,
+// spacing kTallSpacing/s of the coil radius; an isotopy of the coil, 3D-ness
+// 0.2-0.4), relaxed; its energy and 3D-ness against the coil's.
 // Writes periodic.csv, curves/<family>_p<p>[_symmetric].obj and summary.json.
 #include <algorithm>
 #include <cmath>
@@ -130,6 +134,8 @@ Points symmetrize(const Points& P, const Vec3& c, const Vec3& axis, int p, int s
 /// [length] the braid's crossings: strands at most this far apart along the
 /// axis where their projections cross (2 d̂ of the data set's wire, d̂ = 0.4).
 constexpr double kCrossingGap = 0.8;
+/// [coil radius] total height of the tall start's strand stack (s - 1)/s of this
+constexpr double kTallSpacing = 0.9;
 
 Polygons measure_polygons(const Points& P, const Vec3& c, const Vec3& axis, int p, double max_gap) {
   Polygons out;
@@ -250,6 +256,14 @@ int main(int argc, char** argv) {
       const double sym_error = symmetry_error(S, cs, axis, m.p);
       const Polygons gs = measure_polygons(S, cs, axis, m.p, kCrossingGap);
       const double expected = (m.p % 2 == 1) ? 0.0 : 180.0 / m.p;
+      // A second, tall start: the same braid with its strands stacked along
+      // the axis (cross-sections turned by 90°, an isotopy of the coil; a 3D
+      // start), to see whether a 3D equilibrium is reached from there.
+      EmbeddingOptions to = eo;
+      to.braid_tilt = 0.5 * M_PI;
+      to.strand_spacing = kTallSpacing / m.strands;
+      const Embedding tall = embed_braid(w, to);
+      const RelaxResult rt = relax(tall.points);
       const std::string curve = "curves/" + m.family + "_p" + std::to_string(m.p) + ".obj";
       write_curve(a.out + "/" + curve, P);
       write_curve(a.out + "/curves/" + m.family + "_p" + std::to_string(m.p) + "_symmetric.obj", S);
@@ -282,12 +296,19 @@ int main(int argc, char** argv) {
                                 {"crossings", gs.crossings},
                                 {"polygon_split", gs.by_radius ? "radius" : "height"},
                                 {"polygon_error_deg", gs.error()},
-                                {"relative_rotation_deg", gs.rotation}}}});
+                                {"relative_rotation_deg", gs.rotation}}},
+                              {"tall_start",
+                               {{"start_threedim", threedim(tall.points)},
+                                {"status", rt.status()},
+                                {"energy", rt.energy.total},
+                                {"energy_above", rt.energy.total - r.energy.total},
+                                {"threedim", threedim(rt.positions)}}}});
       std::cout << "exp_periodic_braids: " << m.family << " p=" << m.p << " " << r.status() << " symmetry error "
                 << best << ", crossings " << gt.count << "+" << gb.count << ", rotation " << rot << " deg (expected "
                 << expected << "); symmetric equilibrium " << rs.status() << " dE " << rs.energy.total - r.energy.total
                 << ", symmetry error " << sym_error << ", p-gon error " << gs.error() << " deg, rotation "
-                << gs.rotation << " deg" << std::endl;
+                << gs.rotation << " deg; tall start (3D-ness " << threedim(tall.points) << ") " << rt.status()
+                << " dE " << rt.energy.total - r.energy.total << ", 3D-ness " << threedim(rt.positions) << std::endl;
     }
     csv.commit();
     write_json(a.out + "/summary.json", j);

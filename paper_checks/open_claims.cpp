@@ -5,6 +5,7 @@
 // that starts passing is moved to its check_<experiment>.cpp.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "results.hpp"
@@ -17,14 +18,19 @@ std::string label(const nlohmann::json& m) {
 
 // Fig. 16 shows a 3D state for every p. Measured: the BB members (8_18 and
 // 10_123 are BB knots, whose lowest-curvature states are multi-covered
-// circles, Fig. 9) and the longer members stay flat coils, stable.
+// circles, Fig. 9) and the longer members stay flat coils, stable, also when
+// relaxed from the tall start (strands stacked along the axis, 3D-ness
+// 0.26-0.31): it returns to the same flat coil. A member counts as deployed
+// when either start ends 3D.
 // Tolerance: 3D-ness >= 0.1 (the planarity threshold of Section 8.2).
 TEST(PaperOpenPeriodicBraids, EveryMemberDeploysTo3D) {
   const auto s = ek::paper::summary("periodic_braids");
   ASSERT_EQ(s.at("members").size(), 8u);
   for (const auto& m : s.at("members")) {
-    std::cout << "[ measured ] " << label(m) << ": 3D-ness " << m.at("threedim") << std::endl;
-    EXPECT_GE(m.at("threedim").get<double>(), 0.1) << label(m);
+    const auto& tall = m.at("tall_start");
+    std::cout << "[ measured ] " << label(m) << ": 3D-ness " << m.at("threedim") << " from the coil, "
+              << tall.at("threedim") << " from the tall start (" << tall.at("start_threedim") << ")" << std::endl;
+    EXPECT_GE(std::max(m.at("threedim").get<double>(), tall.at("threedim").get<double>()), 0.1) << label(m);
   }
 }
 

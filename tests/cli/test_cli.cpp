@@ -4,6 +4,7 @@
 #include <fstream>
 
 #include "cli_runner.hpp"
+#include "ek/geometry/curve_io.hpp"
 #include "testing.hpp"
 
 using ek::clitest::run;
@@ -56,6 +57,17 @@ TEST(Cli, EmbedAndInvariants) {
     // Milnor: total curvature above 2π · bridge index (8_19: bridge index 3)
     EXPECT_GT(j["total_curvature"].get<double>(), 2 * M_PI * 3);
   }
+  // the braid's strands stacked along the axis (--tilt 90): same knot type, a
+  // 3D start (z extent above a third of the x extent; the flat coil's is ~0.1)
+  const std::string tall = dir + "/8_19-tall.txt";
+  const auto e = run("embed 8_19 --tilt 90 --strand-spacing 0.5 -n 300 -o " + tall);
+  ASSERT_EQ(e.status, 0) << e.err;
+  const auto r = run("invariants " + tall + " --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(r.json()["alexander"], nlohmann::json::parse("[1,-1,0,1,0,-1,1]"));
+  const ek::Points P = ek::read_curve(tall);
+  const double zext = P.col(2).maxCoeff() - P.col(2).minCoeff(), xext = P.col(0).maxCoeff() - P.col(0).minCoeff();
+  EXPECT_GT(zext, xext / 3) << zext << " vs " << xext;
   std::filesystem::remove_all(dir);
 }
 
@@ -97,6 +109,8 @@ TEST(Cli, BadInputExitsWithStatus2AndOneLine) {
   expect_bad_input("embed 3_1 -n abc -o " + dir + "/x.obj", "'abc' is not an integer");
   expect_bad_input("embed 3_1 -o /nonexistent-folder/x.obj", "does not exist");
   expect_bad_input("embed 3_1", "missing -o FILE");
+  expect_bad_input("embed 3_1 --tilt nan -o " + dir + "/x.obj", "--tilt: 'nan' is not a finite number");
+  expect_bad_input("embed 3_1 --tilt 90 --strand-spacing 1.5 -o " + dir + "/x.obj", "too large for a tilted coil");
   expect_bad_input("embed 3_1 -o " + dir + "/x.ply", "unknown curve format");
   std::filesystem::remove_all(dir);
 }

@@ -1,10 +1,13 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cmath>
 
 #include "ek/core/errors.hpp"
 #include "ek/embedding/embedding.hpp"
 #include "ek/geometry/polyline.hpp"
+#include "ek/geometry/writhe.hpp"
+#include "ek/contact/contact_potential.hpp"
 #include "ek/knots/alexander.hpp"
 #include "testing.hpp"
 
@@ -28,6 +31,44 @@ TEST(Embedding, BraidCoilOfTrefoil) {
   expect_valid(e, 400, 1.0);
   EXPECT_EQ(alexander(e.points), alexander(*k.pd));
   // a positive braid: the coil's writhe has the sign of the braid's crossings
+  // (a nearly flat coil: Wr ≈ algebraic crossing number 3 plus a small
+  // out-of-plane part; 3.04 measured at the default spacing)
+  EXPECT_NEAR(writhe(e.points), 3.0, 0.1);
+}
+
+TEST(Embedding, TiltedBraidCoilIsAnIsotopyOfTheFlatCoil) {
+  // Turning every cross-section about the core circle is an isotopy, so the
+  // knot type and its chirality are kept (the Alexander polynomial alone
+  // cannot see a mirror image). Checked directly: from the flat coil (0°) to
+  // the cylinder (90°) in steps of 4.5°, the linear motion between
+  // consecutive polygons is certified collision-free by the CCD (t = 1).
+  for (const char* name : {"3_1", "5_2", "12a_1019"}) {
+    const auto& k = KnotTable::global().at(name);
+    const int s = k.braid->strands;
+    EmbeddingOptions o;
+    o.strand_spacing = 0.9 / s;
+    o.vertices = 600;
+    Points previous = embed_knot(k, EmbeddingSource::Braid, o).points;
+    const CurveTopology topology = CurveTopology::single(o.vertices);
+    ContactOptions co;
+    co.dhat = 0.05;
+    for (int step = 1; step <= 20; ++step) {
+      o.braid_tilt = 0.5 * M_PI * step / 20;
+      const Embedding e = embed_knot(k, EmbeddingSource::Braid, o);
+      expect_valid(e, 600, 1.0);
+      ASSERT_EQ(max_step(previous, e.points - previous, topology, co), 1.0) << name << " at step " << step;
+      previous = e.points;
+    }
+    EXPECT_EQ(alexander(previous), alexander(*k.pd)) << name;
+    // the cylinder: strands stacked along the axis, (s - 1) spacings tall
+    // [units of R], and the crossings reach radii R ± h (h = 0.5 spacings);
+    // R is the middle of the radii, all to 2% (the resampling)
+    const VecX r = previous.leftCols(2).rowwise().norm();
+    const double R = 0.5 * (r.maxCoeff() + r.minCoeff()), delta = o.strand_spacing;
+    const double height = previous.col(2).maxCoeff() - previous.col(2).minCoeff();
+    EXPECT_NEAR(height / R, (s - 1) * delta, 0.02 * (s - 1) * delta) << name;
+    EXPECT_NEAR(0.5 * (r.maxCoeff() - r.minCoeff()) / R, 0.5 * delta, 0.02 * 0.5 * delta) << name;
+  }
 }
 
 TEST(Embedding, PDDrawingOfFigureEight) {
@@ -67,6 +108,12 @@ TEST(Embedding, BadOptionsAreInputErrors) {
   o.edge_length = -1;
   EXPECT_THROW(embed_knot(k, EmbeddingSource::PD, o), InputError);
   EXPECT_THROW(parse_embedding_source("dt"), InputError);
+  o = {};
+  o.braid_tilt = std::nan("");
+  EXPECT_THROW(embed_knot(k, EmbeddingSource::Braid, o), InputError);
+  o.braid_tilt = 0.5 * M_PI;  // the turned cross-section would reach the axis
+  o.strand_spacing = 1.5;
+  EXPECT_THROW(embed_knot(k, EmbeddingSource::Braid, o), InputError);
   // far too few vertices for a 12-crossing knot: the check catches it
   o = {};
   o.vertices = 12;

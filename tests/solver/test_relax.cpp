@@ -168,7 +168,9 @@ TEST(Relax, FlatCoilOfTwelveCrossingsConvergesUnderTheSlab) {
         << (fixed_link ? "fixed link: " : "free: ") << r.report.iterations << " iterations, |g| "
         << r.report.gradient_norm;
     EXPECT_TRUE(r.alexander_preserved);
-    if (fixed_link) EXPECT_NEAR(r.link, 0.5, 1e-6);
+    if (fixed_link) {
+      EXPECT_NEAR(r.link, 0.5, 1e-6);
+    }
   }
 }
 

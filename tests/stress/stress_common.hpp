@@ -28,6 +28,17 @@ struct Tally {
     EXPECT_FALSE(r.status().empty()) << what;
   }
 
+  /// A run counted from a log (a resumed volume run): its status, whether
+  /// its energy and gradient were finite, and whether the knot type was kept.
+  void add_logged(const std::string& status, bool finite, bool preserved, const std::string& what) {
+    ++runs;
+    ++statuses[status];
+    if (!finite) ++non_finite;
+    if (!preserved) ++topology_changes;
+    EXPECT_TRUE(finite) << what << ": non-finite result (logged)";
+    EXPECT_TRUE(preserved) << what << ": Alexander polynomial changed (logged)";
+  }
+
   void print(const std::string& title) const {
     std::cout << "[ stress   ] " << title << ": " << runs << " runs, topology changes " << topology_changes
               << ", non-finite " << non_finite;

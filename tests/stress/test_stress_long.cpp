@@ -5,7 +5,10 @@
 // with a progress line every 500 runs. EK_STRESS_LOG=FILE writes one CSV row per
 // run (index, knot, seed, status, iterations, seconds, energy, gradient norm,
 // Alexander preserved) to FILE.partial and renames it to FILE at the end, so an
-// interrupted run never replaces an earlier complete log.
+// interrupted run never replaces an earlier complete log. An interrupted run
+// resumes: the rows of an existing FILE.partial are counted and only the
+// missing indices are run (run k is fixed by k: knot k·7919 mod 2,977, seed
+// k + 1; delete FILE.partial to start over after changing the code).
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -14,6 +17,9 @@
 #include <cstdlib>
 #include <fstream>
 #include <mutex>
+#include <sstream>
+#include <string>
+#include <vector>
 #include <thread>
 
 #include "ek/lattice/sampling.hpp"
@@ -35,11 +41,38 @@ TEST(StressLong, VolumeOfLatticeSamples) {
   std::mutex mutex;
   const char* log_env = std::getenv("EK_STRESS_LOG");
   const std::string log_path = log_env ? log_env : "";
+  const std::string header = "index,knot,seed,status,iterations,seconds,energy,gradient_norm,alexander_preserved";
+  std::vector<char> done(static_cast<size_t>(volume), 0);
   std::ofstream log;
   if (!log_path.empty()) {
-    log.open(log_path + ".partial");
-    ASSERT_TRUE(log) << "cannot write the stress log " << log_path << ".partial";
-    log << "index,knot,seed,status,iterations,seconds,energy,gradient_norm,alexander_preserved\n";
+    const std::string partial = log_path + ".partial";
+    // resume: keep the complete rows of an interrupted run (a row cut by the
+    // interruption is dropped and run again), rewritten before appending
+    std::vector<std::string> kept;
+    if (std::ifstream in(partial); in) {
+      std::string line;
+      std::getline(in, line);
+      ASSERT_EQ(line, header) << partial << " is not a stress log; move it away to start over";
+      while (std::getline(in, line) && !in.eof()) {  // the last line counts only if it ends with '\n'
+        std::vector<std::string> f;
+        std::stringstream ss(line);
+        for (std::string x; std::getline(ss, x, ',');) f.push_back(x);
+        if (f.size() != 9) continue;
+        const int k = std::atoi(f[0].c_str());
+        if (k < 0 || k >= volume || done[static_cast<size_t>(k)]) continue;
+        done[static_cast<size_t>(k)] = 1;
+        tally.add_logged(f[3], std::isfinite(std::strtod(f[6].c_str(), nullptr)) &&
+                                   std::isfinite(std::strtod(f[7].c_str(), nullptr)),
+                         f[8] == "1", f[1]);
+        kept.push_back(line);
+      }
+      std::cout << "[ stress   ] resuming " << partial << ": " << kept.size() << " runs already done" << std::endl;
+    }
+    log.open(partial, std::ios::trunc);
+    ASSERT_TRUE(log) << "cannot write the stress log " << partial;
+    log << header << "\n";
+    for (const auto& line : kept) log << line << "\n";
+    log.flush();
   }
   const auto start = std::chrono::steady_clock::now();
   std::atomic<int> next{0};
@@ -47,6 +80,7 @@ TEST(StressLong, VolumeOfLatticeSamples) {
     for (;;) {
       const int k = next.fetch_add(1);
       if (k >= volume) return;
+      if (done[static_cast<size_t>(k)]) continue;
       // knots spread over the table, one sample each (seed = index)
       const KnotRecord& knot = *knots[static_cast<size_t>(k) * 7919 % knots.size()];
       SampleOptions so;

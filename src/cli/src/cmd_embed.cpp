@@ -1,4 +1,5 @@
-// knots embed NAME --from braid|pd [-n N] -o FILE [--edge-length L] [--json]
+// knots embed NAME --from braid|pd [-n N] -o FILE [--edge-length L] [--strand-spacing S] [--crossing-height H] [--tilt DEG] [--json]
+#include <cmath>
 #include <iostream>
 
 #include "args.hpp"
@@ -23,10 +24,18 @@ int cmd_embed(int argc, char** argv) {
   args.option("--edge-length", &opt.edge_length, "common edge length (default 1)");
   args.option("--strand-spacing", &opt.strand_spacing,
               "braid coil: radial spacing of the strands in units of the coil radius (default: automatic)");
+  args.option("--crossing-height", &opt.crossing_height,
+              "braid coil: height of the over/under offsets at a crossing in units of the strand spacing, > 0 "
+              "(default 0.5)");
+  double tilt_deg = 0.0;
+  args.option("--tilt", &tilt_deg,
+              "braid coil: turn of every cross-section about the core circle in degrees: 0 a flat coil (default), "
+              "90 the strands stacked along the axis (a tall 3D start); same knot type at every angle");
   args.option("-o,--output", &out, "output curve file (.obj or .txt); written atomically");
   args.flag("--json", &json, "print a JSON summary");
   if (!args.parse(argc, argv)) return 0;
   if (out.empty()) throw InputError("missing -o FILE");
+  opt.braid_tilt = tilt_deg * M_PI / 180.0;
   check_writable(out);
   const KnotRecord& knot = KnotTable::global().at(name);
   const Embedding e = embed_knot(knot, parse_embedding_source(from), opt);

@@ -18,7 +18,12 @@ Embedding embed_braid(const BraidWord& word, const EmbeddingOptions& o) {
   const double delta = o.strand_spacing > 0.0 ? o.strand_spacing : std::min(0.5 * slot, 0.6 * R / s);
   require_input(delta * (s - 1) < 1.8 * R, "braid embedding: strand spacing too large for the coil radius");
   const double h = o.crossing_height * delta;
-  auto radius = [&](double position) { return R + (position - 0.5 * (s + 1)) * delta; };
+  auto offset = [&](double position) { return (position - 0.5 * (s + 1)) * delta; };
+  require_input(std::isfinite(o.braid_tilt), "braid embedding: tilt must be finite");
+  // a turned cross-section must stay off the axis (r > 0)
+  require_input(o.braid_tilt == 0.0 || std::hypot(0.5 * (s - 1) * delta, h) < R,
+                "braid embedding: strand spacing and crossing height too large for a tilted coil");
+  const double ct = std::cos(o.braid_tilt), st = std::sin(o.braid_tilt);
   auto smoothstep = [](double u) { return u * u * (3.0 - 2.0 * u); };
   const int K = o.samples_per_letter;
   std::vector<Vec3> pts;
@@ -36,8 +41,11 @@ Embedding embed_braid(const BraidWord& word, const EmbeddingOptions& o) {
         const double u = static_cast<double>(k) / K;
         const double phi = 2.0 * M_PI * (j + u) / L;
         const double w = involved ? smoothstep(u) : 0.0;
-        const double r = radius(pos + (target - pos) * w);
-        const double z = involved ? (over ? h : -h) * std::sin(M_PI * u) : 0.0;
+        // coil: (radial, height) = (position offset a, over/under lift b),
+        // turned by the tilt about the core circle
+        const double a = offset(pos + (target - pos) * w);
+        const double b = involved ? (over ? h : -h) * std::sin(M_PI * u) : 0.0;
+        const double r = R + a * ct - b * st, z = a * st + b * ct;
         pts.emplace_back(r * std::cos(phi), r * std::sin(phi), z);
       }
       pos = target;

@@ -22,6 +22,11 @@ struct EmbeddingOptions {
   /// Braid closure: height of the over/under offsets at a crossing, in units of
   /// the strand spacing.
   double crossing_height = 0.5;  ///< [strand spacing]
+  /// Braid closure: turn of every cross-section about the core circle
+  /// (r, z) = (R, 0); 0 is the flat coil, π/2 stacks the strands along the
+  /// axis on the cylinder r = R (a tall, 3D start). Any value is an isotopy of
+  /// the coil (same knot type and chirality).
+  double braid_tilt = 0.0;  ///< [rad] finite
   int samples_per_letter = 32;   ///< [1] dense samples per braid letter before resampling
   /// PD drawing: height of the over/under offsets at a crossing, in units of
   /// the shortest straight piece (crossing to edge midpoint) of the drawing.
@@ -55,6 +60,12 @@ struct Embedding {
 /// σ_i (letter +i): the strand coming from position i passes over, a positive
 /// crossing seen from +z. With a small strand_spacing this is the paper's
 /// multi-covered circle initialisation.
+/// braid_tilt = α turns every cross-section by α about the core circle: the
+/// coil's offsets (radial a, height b) become (a cos α - b sin α, a sin α +
+/// b cos α). This is an isotopy of the solid torus, so the knot type and its
+/// chirality are kept. At α = π/2 position k lies at height (k - (s+1)/2)·δ on
+/// the cylinder r = R, and the over strand of a crossing moves inwards to
+/// R - h, the under strand outwards to R + h.
 Embedding embed_braid(const BraidWord& word, const EmbeddingOptions& options = {});
 
 /// PD code realised from a planar straight-line drawing: the 4-valent plane
