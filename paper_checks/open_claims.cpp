@@ -47,22 +47,14 @@ TEST(PaperOpenMultistability, EightOneHasAtLeastEightMostlyPlanarEquilibria) {
   EXPECT_LE(4 * three_d, distinct);
 }
 
-// Section 7.4: adaptive sampling saves 70% of the simulations of a fixed
-// budget (issue 9: check at least 60%) and finds every low-energy state
-// (every cluster of the full budget within 20% of the knot's minimum energy).
-TEST(PaperOpenAdaptive, SavesAtLeastSixtyPercent) {
-  const auto s = ek::paper::summary("adaptive");
-  const double saved = s.at("saved_share").get<double>();
-  std::cout << "[ measured ] saved " << saved << " of " << s.at("fixed_simulations") << " simulations (budget "
-            << s.at("budget") << ", " << s.at("adaptive") << "), median " << s.at("median_samples")
-            << " samples per knot" << std::endl;
-  EXPECT_GE(saved, 0.6);
-}
-
+// Issue 9: adaptive sampling finds every low-energy state (every cluster of
+// the full budget within 20% of the knot's minimum energy). The savings of
+// Section 7.4 are checked in check_adaptive.cpp.
 TEST(PaperOpenAdaptive, FindsEveryLowEnergyCluster) {
   const auto s = ek::paper::summary("adaptive");
   const int total = s.at("low_energy_clusters").get<int>(), found = s.at("low_energy_clusters_found").get<int>();
-  std::cout << "[ measured ] " << found << " of " << total << " clusters within 20% of the minimum energy found"
+  std::cout << "[ measured ] " << found << " of " << total << " clusters within 20% of the minimum energy found ("
+            << s.at("adaptive") << "); with the paper's rule " << s.at("paper_rule").at("low_energy_clusters_found")
             << std::endl;
   EXPECT_GT(total, 0);
   EXPECT_EQ(found, total) << s.at("missed").dump();
