@@ -17,26 +17,21 @@ struct Tally {
   std::map<std::string, int> statuses;
 
   void add(const RelaxResult& r, const std::string& what) {
-    ++runs;
-    ++statuses[r.status()];
     const bool finite = r.positions.allFinite() && std::isfinite(r.energy.total) &&
                         std::isfinite(r.report.gradient_norm) && std::isfinite(r.link);
-    if (!finite) ++non_finite;
-    if (!r.alexander_preserved) ++topology_changes;
-    EXPECT_TRUE(finite) << what << ": non-finite result";
-    EXPECT_TRUE(r.alexander_preserved) << what << ": Alexander polynomial changed";
-    EXPECT_FALSE(r.status().empty()) << what;
+    add_logged(r.status(), finite, r.alexander_preserved, what);
   }
 
-  /// A run counted from a log (a resumed volume run): its status, whether
-  /// its energy and gradient were finite, and whether the knot type was kept.
+  /// One run given by its status, whether its results were finite and
+  /// whether the knot type was kept (also a run read back from a log).
   void add_logged(const std::string& status, bool finite, bool preserved, const std::string& what) {
     ++runs;
     ++statuses[status];
     if (!finite) ++non_finite;
     if (!preserved) ++topology_changes;
-    EXPECT_TRUE(finite) << what << ": non-finite result (logged)";
-    EXPECT_TRUE(preserved) << what << ": Alexander polynomial changed (logged)";
+    EXPECT_TRUE(finite) << what << ": non-finite result";
+    EXPECT_TRUE(preserved) << what << ": Alexander polynomial changed";
+    EXPECT_FALSE(status.empty()) << what;
   }
 
   void print(const std::string& title) const {
