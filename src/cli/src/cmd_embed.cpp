@@ -17,7 +17,9 @@ int cmd_embed(int argc, char** argv) {
   std::string name, from = "braid", out;
   EmbeddingOptions opt;
   bool json = false;
-  ArgParser args("embed", "NAME --from braid|pd [-n N] -o FILE [--edge-length L] [--json]");
+  ArgParser args("embed",
+                 "NAME --from braid|pd [-n N] -o FILE [--edge-length L] [--strand-spacing S] [--crossing-height H] "
+                 "[--tilt DEG] [--json]");
   args.positional("NAME", &name, "knot name as in the table");
   args.option("--from", &from, "braid (closed braid coil, default) or pd (planar drawing of the PD code)");
   args.option("-n,--vertices", &opt.vertices, "vertex count of the polygon (default 400)");
