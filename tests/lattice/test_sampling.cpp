@@ -64,6 +64,44 @@ TEST(Sampling, TwoHundredSamplesOfSixKnotTypes) {
   EXPECT_EQ(total, 200);
 }
 
+// Regression, one per knot: the 10,000-sample stress volume (make stress)
+// could not make a single sample of these four knots. 11n_109, 12a_769 and
+// 12n_579: loop erasure left a defect at the rounding's first scale
+// (logic_error). 12a_1164: its PD drawing with 128 vertices crosses itself,
+// and the Alexander check of that candidate threw an InputError ("curve
+// intersects itself") instead of skipping it.
+TEST(Sampling, KnotsWhoseLatticeStartFailedInTheStressVolume) {
+  for (const char* name : {"11n_109", "12a_769", "12n_579", "12a_1164"}) {
+    SCOPED_TRACE(name);
+    const KnotRecord& k = KnotTable::global().at(name);
+    const AlexanderPolynomial want = alexander(*k.pd);
+    SampleOptions o;
+    o.count = 2;
+    o.seed = 3;
+    o.verify = false;
+    LatticeStart start;
+    SampleBatch b;
+    ASSERT_NO_THROW(b = sample_knot(k, o, {}, &start));
+    EXPECT_EQ(start.alexander, want);
+    EXPECT_GT(start.rounding.certificate_ratio, 1.0);
+    EXPECT_TRUE(start.rounding.defect.empty());
+    ASSERT_EQ(b.samples.size(), 2u);
+    for (const LatticePoints& L : b.samples) {
+      expect_sample(L, 400);
+      EXPECT_EQ(alexander(to_points(L)), want);
+    }
+  }
+  // 12a_1164's crossing PD candidate is skipped, not fatal: the braid coil wins.
+  LatticeStartOptions only_pd;
+  only_pd.candidates = {{EmbeddingSource::PD, 128}};
+  try {
+    lattice_start(KnotTable::global().at("12a_1164"), only_pd);
+    ADD_FAILURE() << "the 128-vertex PD drawing of 12a_1164 was expected to cross itself";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("no usable embedding of 12a_1164"), std::string::npos) << e.what();
+  }
+}
+
 TEST(Sampling, SameSeedSameCurvesDifferentSeedDifferentCurves) {
   const KnotRecord& k = KnotTable::global().at("5_1");
   SampleOptions o;

@@ -192,7 +192,7 @@ RoundingResult lattice_walk_of(const Points& P, double scale, const Mat3& rotati
   piece(Q.row(j0).transpose(), S);
   const int N = static_cast<int>(walk.size()) - 1;  // w_N = w_0
   const int K = static_cast<int>(keys.size());
-  if (walk[static_cast<size_t>(N)].key() != walk[0].key() || N < 4)
+  if (walk[static_cast<size_t>(N)].key() != walk[0].key())
     throw std::logic_error("lattice walk: the cell walk does not close");
 
   auto range_max = [&](const Site& s, int from, int to) {
@@ -209,6 +209,15 @@ RoundingResult lattice_walk_of(const Points& P, double scale, const Mat3& rotati
         res.walk_displacement,
         range_max(walk[static_cast<size_t>(a)], arrive[static_cast<size_t>(a)], arrive[static_cast<size_t>(a) + 1]));
   res.walk_displacement = std::max(res.walk_displacement, range_max(walk[0], arrive[static_cast<size_t>(N)], K - 1));
+
+  if (N < 4) {  // the whole curve within a few cells: every point goes to w_0
+    res.defect = "the cell walk has only " + std::to_string(N) + " steps";
+    res.displacement = range_max(walk[0], 0, K - 1);
+    res.points.resize(1, 3);
+    for (int k = 0; k < 3; ++k) res.points(0, k) = walk[0].p[k];
+    res.max_turning_angle = turning_angles(P).maxCoeff();
+    return res;
+  }
 
   // Chronological loop erasure of w_0 .. w_{N-1} (w_N = w_0 closes the polygon).
   std::vector<Site> path;
@@ -246,7 +255,7 @@ RoundingResult lattice_walk_of(const Points& P, double scale, const Mat3& rotati
   for (int q = 0; q < M; ++q)
     for (int k = 0; k < 3; ++k) res.points(q, k) = path[static_cast<size_t>(q)].p[k];
   const LatticePolygonCheck check = check_lattice_polygon(res.points);
-  if (!check.ok) throw std::logic_error("lattice walk: loop erasure left a defect: " + check.problem);
+  if (!check.ok) res.defect = "loop erasure left a defect: " + check.problem;
   const VecX theta = turning_angles(P);
   res.max_turning_angle = theta.maxCoeff();
   return res;
@@ -311,7 +320,12 @@ RoundingResult round_to_lattice(const Points& P, const RoundingOptions& o,
     res = lattice_walk_of(P, s, R);
     // strict inequality s·c_W > 2δ, with room for rounding errors of the measurement
     certified = s * cW > 2.0 * res.displacement * (1.0 + 1e-12) + 1e-12;
-    if (!certified) s = std::max(1.25 * s, (1.0 + o.margin) * 2.0 * res.displacement / cW);
+    if (certified && !res.defect.empty())  // excluded by the theorem: a bug, not bad input
+      throw std::logic_error("lattice rounding: certified scale " + std::to_string(s) + " but " + res.defect);
+    // A defect means a cut loop swallowed most of the curve at a scale far too
+    // small; its δ measures that loop, not the walk, so only grow by 1.25x.
+    if (!certified)
+      s = res.defect.empty() ? std::max(1.25 * s, (1.0 + o.margin) * 2.0 * res.displacement / cW) : 1.25 * s;
     if (!certified && s * l1_length > kMaxWalkSteps) break;
   }
   if (!certified)

@@ -109,7 +109,16 @@ LatticeStart lattice_start(const KnotRecord& knot, const LatticeStartOptions& o)
       skipped += std::string(skipped.empty() ? "" : "; ") + err.what();
       continue;
     }
-    if (!(e.clearance > 0.0) || alexander(e.points) != best.alexander) {
+    // A coarse drawing can cross itself (no generic projection: alexander()
+    // throws InputError) or change type; either way this candidate is skipped,
+    // it says nothing about the user's input.
+    bool usable = e.clearance > 0.0;
+    if (usable) try {
+        usable = alexander(e.points) == best.alexander;
+      } catch (const InputError&) {
+        usable = false;
+      }
+    if (!usable) {
       skipped += std::string(skipped.empty() ? "" : "; ") + e.method + " embedding with " + std::to_string(m) +
                  " vertices is too coarse";
       continue;

@@ -34,6 +34,7 @@
 /// then L has the knot type of P.
 #include <cstdint>
 #include <optional>
+#include <string>
 
 #include "ek/geometry/types.hpp"
 #include "ek/knots/polynomial.hpp"
@@ -76,6 +77,12 @@ struct RoundingResult {
   int walk_length = 0;               ///< [steps] N, before loop erasure
   int loops_erased = 0;              ///< [1] loops cut out
   int attempts = 0;                  ///< [1] scales tried
+  /// Empty, or why loop erasure did not leave a self-avoiding polygon (a
+  /// scale far too small for the curve: a cut loop swallowed most of it, so
+  /// `points` may have fewer than 4 sites). Never set on a certified result:
+  /// the certificate's proof rules it out, and round_to_lattice treats it as
+  /// a failed certificate and enlarges the scale.
+  std::string defect;
   /// The certificate's margin s·c_W / (2δ) (> 1).
   double certificate_ratio = 0.0;  ///< [1]
 };
@@ -94,7 +101,8 @@ RoundingResult round_to_lattice(const Points& P, const RoundingOptions& options 
 /// The cell walk and loop erasure of steps 1-3 at a given scale and rotation,
 /// without the certificate or the Alexander check (for tests and
 /// experiments). Fills every field of the result except window,
-/// window_clearance and certificate_ratio.
+/// window_clearance and certificate_ratio; a scale too small for the curve
+/// can leave a `defect` (then δ is still measured, and large).
 RoundingResult lattice_walk_of(const Points& P, double scale, const Mat3& rotation = Mat3::Identity());
 
 /// Largest W (<= max_window, <= m/2) such that every W consecutive edges of P
