@@ -34,6 +34,8 @@ using namespace ek::exp;
 
 namespace {
 
+// The paper's rule (Section 7.4): 50 initial samples, batches of 10, at most 500.
+constexpr int kPaperInitial = 50, kPaperBatch = 10, kPaperBudget = 500;
 constexpr int kShuffles = 20;                           ///< [1] random orders per knot
 constexpr std::uint64_t kShuffleSeed = 0x5EED0ADA97ULL;  ///< fixed: the control is reproducible
 
@@ -54,12 +56,12 @@ KnotEntry shuffled(const KnotEntry& e, std::uint64_t& state) {
 int main(int argc, char** argv) {
   return run_experiment(argc, argv, "exp_adaptive", "Adaptive sampling against a fixed sample budget.", [](const Args& a) {
     ExploreOptions o = base_options(a);
-    o.samples = by_scale(a, 60, 150, 500);
+    o.samples = by_scale(a, 60, 150, kPaperBudget);
     o.adaptive = false;
     ExploreOptions ad = o;
     ad.adaptive = true;
-    ad.initial_samples = by_scale(a, 15, 30, 50);
-    ad.batch_samples = by_scale(a, 5, 10, 10);
+    ad.initial_samples = by_scale(a, 15, 30, kPaperInitial);
+    ad.batch_samples = by_scale(a, 5, 10, kPaperBatch);
     ad.max_samples = o.samples;
     const int max_crossings = by_scale(a, 6, 7, 12);
     const auto knots = KnotTable::global().up_to_crossings(max_crossings);
@@ -79,9 +81,9 @@ int main(int argc, char** argv) {
     int stopped = 0, low_total = 0, low_found = 0;
     std::vector<int> used;
     ExploreOptions paper = ad;  // the paper's rule and budget (Section 7.4)
-    paper.initial_samples = 50;
-    paper.batch_samples = 10;
-    paper.max_samples = 500;
+    paper.initial_samples = kPaperInitial;
+    paper.batch_samples = kPaperBatch;
+    paper.max_samples = kPaperBudget;
     long paper_total = 0, paper_optimistic = 0;
     int paper_exact = 0, paper_low_found = 0;
     std::vector<int> paper_used;  // exact stops only

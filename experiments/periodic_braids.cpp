@@ -264,6 +264,7 @@ int main(int argc, char** argv) {
       to.strand_spacing = kTallSpacing / m.strands;
       const Embedding tall = embed_braid(w, to);
       const RelaxResult rt = relax(tall.points);
+      const double tall_start_3d = threedim(tall.points), tall_end_3d = threedim(rt.positions);
       const std::string curve = "curves/" + m.family + "_p" + std::to_string(m.p) + ".obj";
       write_curve(a.out + "/" + curve, P);
       write_curve(a.out + "/curves/" + m.family + "_p" + std::to_string(m.p) + "_symmetric.obj", S);
@@ -298,17 +299,17 @@ int main(int argc, char** argv) {
                                 {"polygon_error_deg", gs.error()},
                                 {"relative_rotation_deg", gs.rotation}}},
                               {"tall_start",
-                               {{"start_threedim", threedim(tall.points)},
+                               {{"start_threedim", tall_start_3d},
                                 {"status", rt.status()},
                                 {"energy", rt.energy.total},
                                 {"energy_above", rt.energy.total - r.energy.total},
-                                {"threedim", threedim(rt.positions)}}}});
+                                {"threedim", tall_end_3d}}}});
       std::cout << "exp_periodic_braids: " << m.family << " p=" << m.p << " " << r.status() << " symmetry error "
                 << best << ", crossings " << gt.count << "+" << gb.count << ", rotation " << rot << " deg (expected "
                 << expected << "); symmetric equilibrium " << rs.status() << " dE " << rs.energy.total - r.energy.total
                 << ", symmetry error " << sym_error << ", p-gon error " << gs.error() << " deg, rotation "
-                << gs.rotation << " deg; tall start (3D-ness " << threedim(tall.points) << ") " << rt.status()
-                << " dE " << rt.energy.total - r.energy.total << ", 3D-ness " << threedim(rt.positions) << std::endl;
+                << gs.rotation << " deg; tall start (3D-ness " << tall_start_3d << ") " << rt.status()
+                << " dE " << rt.energy.total - r.energy.total << ", 3D-ness " << tall_end_3d << std::endl;
     }
     csv.commit();
     write_json(a.out + "/summary.json", j);
