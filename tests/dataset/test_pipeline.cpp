@@ -142,6 +142,41 @@ TEST(Pipeline, SameSeedSameEquilibriaWhateverTheJobs) {
   EXPECT_NE(c.runs[0].seed, a.runs[0].seed);
 }
 
+// Burn-in: sample k of a run with burn-in B is sample B + k of the same walk
+// without burn-in (same seed, same curve, so the same equilibrium), and the
+// burn-in is part of the sampling description (a data set or journal made
+// with another burn-in is not extended by mistake).
+TEST(Pipeline, BurnInDropsTheWalksFirstSamples) {
+  ExploreOptions o;
+  o.sampling.vertices = 100;
+  o.samples = 5;
+  o.stiffness = false;
+  o.jobs = 2;
+  const KnotRecord& k = KnotTable::global().at("3_1");
+  const KnotEntry plain = explore_knot(k, o);
+  o.burn_in = 3;
+  o.samples = 2;
+  const KnotEntry burnt = explore_knot(k, o);
+  ASSERT_EQ(burnt.runs.size(), 2u);
+  for (int s = 0; s < 2; ++s) {
+    const RunRecord& a = burnt.runs[static_cast<size_t>(s)];
+    const RunRecord& b = plain.runs[static_cast<size_t>(3 + s)];
+    EXPECT_EQ(a.sample, s);
+    EXPECT_EQ(a.seed, b.seed) << s;
+    EXPECT_EQ(a.status, b.status) << s;
+    EXPECT_EQ(a.energy, b.energy) << s;
+    ASSERT_GE(a.equilibrium, 0);
+    ASSERT_GE(b.equilibrium, 0);
+    EXPECT_EQ(burnt.equilibria[static_cast<size_t>(a.equilibrium)], plain.equilibria[static_cast<size_t>(b.equilibrium)]);
+  }
+  EXPECT_NE(burnt.runs[0].seed, plain.runs[0].seed);
+  EXPECT_EQ(o.sampling_description(), "fixed:2,burn-in=3");
+  o.burn_in = 0;
+  EXPECT_EQ(o.sampling_description(), "fixed:2");  // unchanged without burn-in
+  o.burn_in = -1;
+  EXPECT_THROW(o.validate(), InputError);
+}
+
 TEST(Pipeline, BadOptionsAreInputErrors) {
   ExploreOptions o;
   o.sampling.vertices = 101;  // lattice polygons have an even number of edges

@@ -71,6 +71,7 @@ ExploreOptions::ExploreOptions() { similarity.reversal = true; }
 void ExploreOptions::validate() const {
   relax.validate();
   require_input(samples >= 1, "explore: --samples must be at least 1");
+  require_input(burn_in >= 0 && burn_in <= 100000, "explore: --burn-in must be between 0 and 100000 samples");
   require_input(initial_samples >= 1 && batch_samples >= 1, "explore: initial and batch sample counts must be positive");
   require_input(max_samples >= initial_samples, "explore: max samples must be >= the initial samples");
   require_input(score_threshold >= 0.0 && score_threshold < 1.0, "explore: score threshold must be in [0, 1)");
@@ -87,6 +88,7 @@ std::string ExploreOptions::sampling_description() const {
       << ",delta=" << novelty_distance;
   else
     s << "fixed:" << samples;
+  if (burn_in > 0) s << ",burn-in=" << burn_in;
   return s.str();
 }
 
@@ -272,15 +274,23 @@ KnotEntry explore_knot(const KnotRecord& knot, const ExploreOptions& options, co
   // Sample k continues the walk from sample k - 1 with its own seed derived
   // from (knot seed, k): the samples do not depend on how they are batched, so
   // an adaptive run uses exactly the first samples of a fixed-budget run.
+  // With a burn-in the walk first makes o.burn_in samples (walk indices
+  // 0 .. burn_in - 1) and drops them; sample k is walk sample burn_in + k.
   std::vector<LatticePoints> samples;
+  LatticePoints last = start.points;
+  int walk_index = 0;
+  auto next_sample = [&]() {
+    SampleOptions so = o.sampling;
+    so.count = 1;
+    so.seed = sample_seed(seed, walk_index++);
+    SampleBatch b = sample_lattice_polygons(last, so, start.alexander, knot.name);
+    last = std::move(b.samples.front());
+  };
   auto generate = [&](int count) {
+    while (walk_index < o.burn_in) next_sample();
     for (int c = 0; c < count; ++c) {
-      SampleOptions so = o.sampling;
-      so.count = 1;
-      so.seed = sample_seed(seed, static_cast<int>(samples.size()));
-      const LatticePoints& from = samples.empty() ? start.points : samples.back();
-      SampleBatch b = sample_lattice_polygons(from, so, start.alexander, knot.name);
-      samples.push_back(std::move(b.samples.front()));
+      next_sample();
+      samples.push_back(last);
     }
   };
 
@@ -295,7 +305,7 @@ KnotEntry explore_knot(const KnotRecord& knot, const ExploreOptions& options, co
         const size_t t = next.fetch_add(1);
         if (t >= todo.size()) return;
         const int k = todo[t];
-        JournalRun r = run_one(to_points(samples[static_cast<size_t>(k)]), k, sample_seed(seed, k), o);
+        JournalRun r = run_one(to_points(samples[static_cast<size_t>(k)]), k, sample_seed(seed, o.burn_in + k), o);
         std::lock_guard<std::mutex> lock(mutex);
         if (journal) journal->append(r);
         if (on_run) on_run(r.record);

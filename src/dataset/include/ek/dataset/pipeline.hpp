@@ -46,6 +46,12 @@ struct ExploreOptions {
   SampleOptions sampling;          ///< n, fugacities, decorrelation (count and seed are set per batch)
   LatticeStartOptions start;       ///< how the first lattice polygon is made
   int samples = 50;                ///< [1] samples per knot without adaptive sampling
+  /// [samples] Burn-in: the knot's walk makes and discards this many samples
+  /// before sample 0, so sample k is the walk's sample burn_in + k (the same
+  /// curve and seed as sample burn_in + k of a run without burn-in). The walk
+  /// starts next to the rounded table drawing and drifts away over many
+  /// samples (README, "Lattice sampling"); 0 keeps every sample.
+  int burn_in = 0;
   bool adaptive = false;           ///< adaptive sampling (see the file comment)
   int initial_samples = 50;        ///< [1]
   int batch_samples = 10;          ///< [1]
