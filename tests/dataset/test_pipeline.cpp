@@ -9,6 +9,20 @@
 
 using namespace ek;
 
+namespace {
+
+/// A fixed-budget run small enough for a unit test: n = 100, no stiffness.
+ExploreOptions small_fixed_run(int samples, int jobs) {
+  ExploreOptions o;
+  o.sampling.vertices = 100;
+  o.samples = samples;
+  o.stiffness = false;
+  o.jobs = jobs;
+  return o;
+}
+
+}  // namespace
+
 TEST(Adaptive, ImportanceScoreByHand) {
   // One earlier state; a batch of two: the first repeats the earlier state
   // (similarity 1), the second is new (similarity 0.7 < 1 - δ with δ = 0.1)
@@ -126,11 +140,7 @@ TEST(Pipeline, AdaptiveSamplingStopsAndRecordsScores) {
 }
 
 TEST(Pipeline, SameSeedSameEquilibriaWhateverTheJobs) {
-  ExploreOptions o;
-  o.sampling.vertices = 100;
-  o.samples = 4;
-  o.stiffness = false;
-  o.jobs = 1;
+  ExploreOptions o = small_fixed_run(4, 1);
   const KnotEntry a = explore_knot(KnotTable::global().at("3_1"), o);
   o.jobs = 3;
   const KnotEntry b = explore_knot(KnotTable::global().at("3_1"), o);
@@ -147,11 +157,7 @@ TEST(Pipeline, SameSeedSameEquilibriaWhateverTheJobs) {
 // burn-in is part of the sampling description (a data set or journal made
 // with another burn-in is not extended by mistake).
 TEST(Pipeline, BurnInDropsTheWalksFirstSamples) {
-  ExploreOptions o;
-  o.sampling.vertices = 100;
-  o.samples = 5;
-  o.stiffness = false;
-  o.jobs = 2;
+  ExploreOptions o = small_fixed_run(5, 2);
   const KnotRecord& k = KnotTable::global().at("3_1");
   const KnotEntry plain = explore_knot(k, o);
   o.burn_in = 3;
@@ -190,11 +196,7 @@ TEST(Pipeline, BadOptionsAreInputErrors) {
 }
 
 TEST(Pipeline, AdaptiveRunIsAPrefixOfTheFixedRunAndReplayAgrees) {
-  ExploreOptions fixed;
-  fixed.sampling.vertices = 100;
-  fixed.samples = 10;
-  fixed.stiffness = false;
-  fixed.jobs = 2;
+  const ExploreOptions fixed = small_fixed_run(10, 2);
   const KnotRecord& k = KnotTable::global().at("4_1");
   const KnotEntry full = explore_knot(k, fixed);
   ExploreOptions adaptive = fixed;
