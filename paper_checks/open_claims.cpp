@@ -49,13 +49,16 @@ TEST(PaperOpenMultistability, EightOneHasAtLeastEightMostlyPlanarEquilibria) {
 
 // Issue 9: adaptive sampling finds every low-energy state (every cluster of
 // the full budget within 20% of the knot's minimum energy). The savings of
-// Section 7.4 are checked in check_adaptive.cpp.
+// Section 7.4 are checked in check_adaptive.cpp. Measured at default: 11 of
+// the 14 missed clusters hold 1-3 of ~150 samples; a rule that runs a share k
+// of the samples finds a one-sample cluster with probability k (random
+// orders: 87.6 of 100 found), so "every" cannot hold at 60% savings.
 TEST(PaperOpenAdaptive, FindsEveryLowEnergyCluster) {
   const auto s = ek::paper::summary("adaptive");
   const int total = s.at("low_energy_clusters").get<int>(), found = s.at("low_energy_clusters_found").get<int>();
   std::cout << "[ measured ] " << found << " of " << total << " clusters within 20% of the minimum energy found ("
             << s.at("adaptive") << "); with the paper's rule " << s.at("paper_rule").at("low_energy_clusters_found")
-            << std::endl;
+            << "; mean over random sample orders " << s.at("shuffled").at("low_energy_clusters_found_mean") << std::endl;
   EXPECT_GT(total, 0);
   EXPECT_EQ(found, total) << s.at("missed").dump();
 }
