@@ -88,7 +88,6 @@ int main(int argc, char** argv) {
     int paper_exact = 0, paper_low_found = 0;
     std::vector<int> paper_used;  // exact stops only
     nlohmann::ordered_json missed = nlohmann::ordered_json::array();
-    std::uint64_t shuffle_state = kShuffleSeed;
     double shuffled_found = 0.0, shuffled_used = 0.0;  // sums over the orders
     for (const auto& name : reader.knot_names()) {
       const KnotEntry e = reader.read(name);
@@ -132,6 +131,7 @@ int main(int argc, char** argv) {
         }
       low_total += low;
       low_found += found;
+      std::uint64_t shuffle_state = knot_seed(kShuffleSeed, name);  // per knot: independent of the knot set
       for (int t = 0; t < kShuffles; ++t) {
         const KnotEntry se = shuffled(e, shuffle_state);
         const AdaptiveReplay sr = replay_adaptive(se, ad);

@@ -52,7 +52,7 @@ TEST(PaperOpenMultistability, EightOneHasAtLeastEightMostlyPlanarEquilibria) {
 // Section 7.4 are checked in check_adaptive.cpp. Measured at default: 11 of
 // the 14 missed clusters hold 1-3 of ~150 samples; a rule that runs a share k
 // of the samples finds a one-sample cluster with probability k (random
-// orders: 87.6 of 100 found), so "every" cannot hold at 60% savings.
+// orders: 87.8 of 100 found), so "every" cannot hold at 60% savings.
 TEST(PaperOpenAdaptive, FindsEveryLowEnergyCluster) {
   const auto s = ek::paper::summary("adaptive");
   const int total = s.at("low_energy_clusters").get<int>(), found = s.at("low_energy_clusters_found").get<int>();

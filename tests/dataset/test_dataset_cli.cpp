@@ -170,7 +170,8 @@ TEST(DatasetCli, BadInputOverwritesNothing) {
   expect_bad_input("explore 4_1 --samples 2" + kSmall + "-o /nonexistent-folder/d.h5", "does not exist");
   expect_bad_input("explore 4_1 --samples 2 --adaptive" + kSmall + "-o " + file, "exclude each other");
   expect_bad_input("dataset --max-crossings 2" + kSmall + "-o " + file, "between 3 and 12");
-  expect_bad_input("explore 4_1 --samples 2 --burn-in -1" + kSmall + "-o " + file, "--burn-in");
+  expect_bad_input("explore 4_1 --samples 2 --burn-in -1" + kSmall + "-o " + file,
+                   "--burn-in must be between 0 and 100000");
   expect_bad_input("explore 4_1 --samples 2 --burn-in 3" + kSmall + "-o " + file,
                    "different sampling (fixed:2 vs fixed:2,burn-in=3)");
   expect_bad_input("dataset --names 3_1 --shard 3/2" + kSmall + "-o " + file, "1 <= I <= N");

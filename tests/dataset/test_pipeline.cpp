@@ -3,6 +3,8 @@
 #include <cmath>
 #include <filesystem>
 
+#include <unistd.h>
+
 #include "ek/core/errors.hpp"
 #include "ek/dataset/run.hpp"
 #include "ek/knots/alexander.hpp"
@@ -154,8 +156,8 @@ TEST(Pipeline, SameSeedSameEquilibriaWhateverTheJobs) {
 
 // Burn-in: sample k of a run with burn-in B is sample B + k of the same walk
 // without burn-in (same seed, same curve, so the same equilibrium), and the
-// burn-in is part of the sampling description (a data set or journal made
-// with another burn-in is not extended by mistake).
+// burn-in is part of the sampling description (so a data set, journal or
+// work part made with another burn-in is not reused: see the next test).
 TEST(Pipeline, BurnInDropsTheWalksFirstSamples) {
   ExploreOptions o = small_fixed_run(5, 2);
   const KnotRecord& k = KnotTable::global().at("3_1");
@@ -181,6 +183,55 @@ TEST(Pipeline, BurnInDropsTheWalksFirstSamples) {
   EXPECT_EQ(o.sampling_description(), "fixed:2");  // unchanged without burn-in
   o.burn_in = -1;
   EXPECT_THROW(o.validate(), InputError);
+}
+
+// A finished per-knot part left in the work folder by an interrupted run is
+// reused only by a run with the same parameters, sampling and seed; a rerun
+// with another burn-in or seed recomputes it.
+TEST(Pipeline, WorkPartsAreReusedOnlyWithTheSameSamplingAndSeed) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("ek_parts_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string out = (dir / "d.h5").string();
+  const KnotRecord& k = KnotTable::global().at("3_1");
+  const ExploreOptions made = small_fixed_run(2, 2);
+  const KnotEntry entry = explore_knot(k, made);
+  auto leave_part = [&]() {  // what an interrupted run leaves behind
+    fs::remove(out);
+    fs::create_directories(out + ".work");
+    DatasetMetadata meta = dataset_metadata(made);
+    meta.created = "2026-01-01T00:00:00Z";
+    DatasetWriter w(out + ".work/3_1.h5", meta);
+    w.add(entry);
+    w.commit();
+  };
+  auto rerun = [&](const ExploreOptions& o) {
+    DatasetRunOptions ro;
+    ro.explore = o;
+    ro.knots = {&k};
+    ro.output = out;
+    ro.progress = false;
+    return run_dataset(ro);
+  };
+  leave_part();
+  const DatasetRunSummary same = rerun(made);
+  EXPECT_EQ(same.knots_resumed, 1);
+  EXPECT_EQ(same.runs, 0);
+  ExploreOptions burnt = made;
+  burnt.burn_in = 3;
+  leave_part();
+  const DatasetRunSummary b = rerun(burnt);
+  EXPECT_EQ(b.knots_resumed, 0);
+  EXPECT_EQ(b.runs, 2);
+  EXPECT_EQ(DatasetReader(out).metadata().sampling, "fixed:2,burn-in=3");
+  ExploreOptions reseeded = made;
+  reseeded.seed = 2;
+  leave_part();
+  const DatasetRunSummary c = rerun(reseeded);
+  EXPECT_EQ(c.knots_resumed, 0);
+  EXPECT_EQ(c.runs, 2);
+  fs::remove_all(dir);
 }
 
 TEST(Pipeline, BadOptionsAreInputErrors) {

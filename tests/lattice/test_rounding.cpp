@@ -187,8 +187,10 @@ TEST(Rounding, ADefectAtASmallScaleIsAFailedCertificateNotAnError) {
     if (!r.defect.empty()) {
       ++defects;
       EXPECT_FALSE(check_lattice_polygon(r.points).ok);
-      // the certificate cannot hold: the cut loop is far from its site
-      EXPECT_LE(r.scale * clearance(P, 2).distance, 2.0 * r.displacement) << cells;
+      // the certificate cannot hold at any window the curve allows (c_W <= c_max)
+      const int W = monotone_window(P, 64, 1e-6);
+      ASSERT_GE(W, 2);
+      EXPECT_LE(r.scale * clearance(P, W).distance, 2.0 * r.displacement) << cells;
     } else {
       EXPECT_TRUE(check_lattice_polygon(r.points).ok);
     }
@@ -201,10 +203,17 @@ TEST(Rounding, ADefectAtASmallScaleIsAFailedCertificateNotAnError) {
     eo.vertices = 128;
     eo.pd_crossing_height = 1.0;
     const Embedding e = embed_knot(k, EmbeddingSource::PD, eo);
+    // round_to_lattice's first (optimistic) scale, s = (1 + margin)·√3/c_W
+    // (no rotation needed for these drawings), leaves a defect ...
+    ASSERT_GE(monotone_window(e.points, 64, 1e-6), 2);
+    const int W = monotone_window(e.points, 64, 1e-6);
+    const double first = 1.05 * 2.0 * kHalfDiagonal / clearance(e.points, W).distance;
+    EXPECT_FALSE(lattice_walk_of(e.points, first).defect.empty());
+    // ... and round_to_lattice grows the scale past it
     RoundingResult r;
     ASSERT_NO_THROW(r = round_to_lattice(e.points, {}, alexander(*k.pd)));
     EXPECT_TRUE(r.defect.empty());
-    EXPECT_GT(r.attempts, 1);  // the first (optimistic) scale had the defect
+    EXPECT_GT(r.attempts, 1);
     expect_certified_rounding(e.points, r);
   }
 }

@@ -20,8 +20,8 @@ inline void add_explore_options(ArgParser& args, ExploreArgs& a) {
   args.flag("--adaptive", &a.adaptive, "adaptive sampling: 50, then batches of 10 while the importance score S > 0.1, at most 500");
   args.option("--max-samples", &a.options.max_samples, "adaptive sampling: at most this many samples (default 500)");
   args.option("--burn-in", &a.options.burn_in,
-              "lattice samples the walk makes and discards before sample 0 (default 0); sample k is then the walk's "
-              "sample burn-in + k");
+              "lattice samples the walk makes and discards before sample 0 (default 0, at most 100000); sample k is "
+              "then the walk's sample burn-in + k");
   args.option("--jobs,-j", &a.options.jobs, "relaxations in parallel (default 1)");
   args.option("--seed", &a.seed, "run seed (default 1); each knot's walk seed derives from it and the name");
   args.option("-n,--vertices", &a.options.sampling.vertices, "vertices per curve, even (default 400)");

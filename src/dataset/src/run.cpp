@@ -151,7 +151,11 @@ DatasetRunSummary run_dataset(const DatasetRunOptions& o) {
     if (fs::exists(part)) {
       try {
         DatasetReader check(part);
-        if (check.has_knot(knot->name) && check.metadata().difference(meta).empty()) {
+        // the same physical parameters, sampling (count, adaptive rule,
+        // burn-in) and seed as this run, or the part is recomputed
+        const DatasetMetadata& pm = check.metadata();
+        if (check.has_knot(knot->name) && pm.difference(meta).empty() && pm.sampling == meta.sampling &&
+            pm.seed == meta.seed) {
           parts.push_back(part);
           ++summary.knots_resumed;
           progress.knot_finished();

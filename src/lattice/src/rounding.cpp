@@ -242,6 +242,10 @@ RoundingResult lattice_walk_of(const Points& P, double scale, const Mat3& rotati
     }
   }
   const int M = static_cast<int>(path.size());
+  if (M >= kMaxLatticeLength)
+    throw InputError("lattice rounding: the lattice polygon would have " + std::to_string(M) +
+                     " vertices, more than the limit " + std::to_string(kMaxLatticeLength) +
+                     "; the curve's clearance is too small for its length");
   // Preimage of path entry q: keys [arrive_q, arrive_{q+1}]; the last entry's
   // ends where the walk returns to w_0, and w_0 also owns the tail up to S.
   for (int q = 0; q < M; ++q) {

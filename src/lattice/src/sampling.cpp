@@ -112,15 +112,15 @@ LatticeStart lattice_start(const KnotRecord& knot, const LatticeStartOptions& o)
     // A coarse drawing can cross itself (no generic projection: alexander()
     // throws InputError) or change type; either way this candidate is skipped,
     // it says nothing about the user's input.
-    bool usable = e.clearance > 0.0;
-    if (usable) try {
-        usable = alexander(e.points) == best.alexander;
-      } catch (const InputError&) {
-        usable = false;
+    std::string why = e.clearance > 0.0 ? "" : "has zero clearance";
+    if (why.empty()) try {
+        if (alexander(e.points) != best.alexander) why = "is too coarse to keep the knot type";
+      } catch (const InputError& err) {
+        why = std::string("crosses itself (") + err.what() + ")";
       }
-    if (!usable) {
+    if (!why.empty()) {
       skipped += std::string(skipped.empty() ? "" : "; ") + e.method + " embedding with " + std::to_string(m) +
-                 " vertices is too coarse";
+                 " vertices " + why;
       continue;
     }
     RoundingOptions ro = o.rounding;
