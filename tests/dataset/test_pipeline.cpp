@@ -214,23 +214,23 @@ TEST(Pipeline, WorkPartsAreReusedOnlyWithTheSameSamplingAndSeed) {
     ro.progress = false;
     return run_dataset(ro);
   };
+  auto expect_recomputed = [&](const ExploreOptions& o, const char* what) {
+    leave_part();
+    const DatasetRunSummary r = rerun(o);
+    EXPECT_EQ(r.knots_resumed, 0) << what;
+    EXPECT_EQ(r.runs, 2) << what;
+  };
   leave_part();
   const DatasetRunSummary same = rerun(made);
   EXPECT_EQ(same.knots_resumed, 1);
   EXPECT_EQ(same.runs, 0);
   ExploreOptions burnt = made;
   burnt.burn_in = 3;
-  leave_part();
-  const DatasetRunSummary b = rerun(burnt);
-  EXPECT_EQ(b.knots_resumed, 0);
-  EXPECT_EQ(b.runs, 2);
+  expect_recomputed(burnt, "another burn-in");
   EXPECT_EQ(DatasetReader(out).metadata().sampling, "fixed:2,burn-in=3");
   ExploreOptions reseeded = made;
   reseeded.seed = 2;
-  leave_part();
-  const DatasetRunSummary c = rerun(reseeded);
-  EXPECT_EQ(c.knots_resumed, 0);
-  EXPECT_EQ(c.runs, 2);
+  expect_recomputed(reseeded, "another seed");
   fs::remove_all(dir);
 }
 
