@@ -71,11 +71,18 @@ TEST(StressLong, VolumeOfLatticeSamples) {
       }
       std::cout << "[ stress   ] resuming " << partial << ": " << kept.size() << " runs already done" << std::endl;
     }
-    log.open(partial, std::ios::trunc);
+    {  // the kept rows replace the old log atomically: an interruption here loses nothing
+      const std::string tmp = partial + ".tmp";
+      std::ofstream out(tmp, std::ios::trunc);
+      ASSERT_TRUE(out) << "cannot write the stress log " << tmp;
+      out << header << "\n";
+      for (const auto& line : kept) out << line << "\n";
+      out.close();
+      ASSERT_TRUE(out) << "cannot write the stress log " << tmp;
+      ASSERT_EQ(std::rename(tmp.c_str(), partial.c_str()), 0) << "cannot replace " << partial;
+    }
+    log.open(partial, std::ios::app);
     ASSERT_TRUE(log) << "cannot write the stress log " << partial;
-    log << header << "\n";
-    for (const auto& line : kept) log << line << "\n";
-    log.flush();
   }
   const auto start = std::chrono::steady_clock::now();
   std::atomic<int> next{0};
