@@ -51,6 +51,15 @@ KnotEntry shuffled(const KnotEntry& e, std::uint64_t& state) {
   return out;
 }
 
+/// Clusters (by rank, see clusters_at_cut) of the stable runs among the first
+/// `samples` samples of e.
+std::set<int> clusters_seen(const KnotEntry& e, const std::vector<int>& rank, int samples) {
+  std::set<int> seen;
+  for (const auto& run : e.runs)
+    if (run.equilibrium >= 0 && run.sample < samples) seen.insert(rank[static_cast<size_t>(run.equilibrium)]);
+  return seen;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -110,16 +119,13 @@ int main(int argc, char** argv) {
       int low = 0, found = 0;
       std::vector<int> rank;
       const auto clusters = clusters_at_cut(e, kClusterCut, &rank);
-      std::set<int> in_prefix;
-      std::set<int> in_paper_prefix;  // a truncated paper-rule run used every stored sample (at least)
-      for (const auto& run : e.runs)
-        if (run.equilibrium >= 0) {
-          if (run.sample < r.samples_used) in_prefix.insert(rank[static_cast<size_t>(run.equilibrium)]);
-          if (pr.truncated || run.sample < pr.samples_used)
-            in_paper_prefix.insert(rank[static_cast<size_t>(run.equilibrium)]);
-        }
+      auto is_low = [&](size_t c) { return clusters[c].energy_min <= 1.2 * clusters.front().energy_min; };
+      const std::set<int> in_prefix = clusters_seen(e, rank, r.samples_used);
+      // a truncated paper-rule run used every stored sample (at least)
+      const std::set<int> in_paper_prefix =
+          clusters_seen(e, rank, pr.truncated ? static_cast<int>(e.runs.size()) : pr.samples_used);
       for (size_t c = 0; c < clusters.size(); ++c)
-        if (clusters[c].energy_min <= 1.2 * clusters.front().energy_min) {
+        if (is_low(c)) {
           ++low;
           paper_low_found += in_paper_prefix.count(static_cast<int>(c)) ? 1 : 0;
           if (in_prefix.count(static_cast<int>(c)))
@@ -135,12 +141,9 @@ int main(int argc, char** argv) {
       for (int t = 0; t < kShuffles; ++t) {
         const KnotEntry se = shuffled(e, shuffle_state);
         const AdaptiveReplay sr = replay_adaptive(se, ad);
-        std::set<int> seen;
-        for (const auto& run : se.runs)
-          if (run.equilibrium >= 0 && run.sample < sr.samples_used) seen.insert(rank[static_cast<size_t>(run.equilibrium)]);
+        const std::set<int> seen = clusters_seen(se, rank, sr.samples_used);
         for (size_t c = 0; c < clusters.size(); ++c)
-          if (clusters[c].energy_min <= 1.2 * clusters.front().energy_min && seen.count(static_cast<int>(c)))
-            shuffled_found += 1.0 / kShuffles;
+          if (is_low(c) && seen.count(static_cast<int>(c))) shuffled_found += 1.0 / kShuffles;
         shuffled_used += static_cast<double>(sr.samples_used) / kShuffles;
       }
       std::string scores;

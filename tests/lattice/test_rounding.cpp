@@ -180,6 +180,8 @@ TEST(Rounding, TableKnotsKeepTheirType) {
 TEST(Rounding, ADefectAtASmallScaleIsAFailedCertificateNotAnError) {
   const Points P = fixtures::torus_knot(80, 2, 3);
   const double size = (P.colwise().maxCoeff() - P.colwise().minCoeff()).maxCoeff();
+  const int W = monotone_window(P, 64, 1e-6);
+  ASSERT_GE(W, 2);
   int defects = 0;
   for (double cells : {0.5, 1.0, 1.5, 2.0, 2.5, 3.0}) {
     RoundingResult r;
@@ -188,8 +190,6 @@ TEST(Rounding, ADefectAtASmallScaleIsAFailedCertificateNotAnError) {
       ++defects;
       EXPECT_FALSE(check_lattice_polygon(r.points).ok);
       // the certificate cannot hold at any window the curve allows (c_W <= c_max)
-      const int W = monotone_window(P, 64, 1e-6);
-      ASSERT_GE(W, 2);
       EXPECT_LE(r.scale * clearance(P, W).distance, 2.0 * r.displacement) << cells;
     } else {
       EXPECT_TRUE(check_lattice_polygon(r.points).ok);
@@ -205,9 +205,9 @@ TEST(Rounding, ADefectAtASmallScaleIsAFailedCertificateNotAnError) {
     const Embedding e = embed_knot(k, EmbeddingSource::PD, eo);
     // round_to_lattice's first (optimistic) scale, s = (1 + margin)·√3/c_W
     // (no rotation needed for these drawings), leaves a defect ...
-    ASSERT_GE(monotone_window(e.points, 64, 1e-6), 2);
-    const int W = monotone_window(e.points, 64, 1e-6);
-    const double first = 1.05 * 2.0 * kHalfDiagonal / clearance(e.points, W).distance;
+    const int We = monotone_window(e.points, 64, 1e-6);
+    ASSERT_GE(We, 2);
+    const double first = 1.05 * 2.0 * kHalfDiagonal / clearance(e.points, We).distance;
     EXPECT_FALSE(lattice_walk_of(e.points, first).defect.empty());
     // ... and round_to_lattice grows the scale past it
     RoundingResult r;

@@ -210,12 +210,12 @@ RoundingResult lattice_walk_of(const Points& P, double scale, const Mat3& rotati
         range_max(walk[static_cast<size_t>(a)], arrive[static_cast<size_t>(a)], arrive[static_cast<size_t>(a) + 1]));
   res.walk_displacement = std::max(res.walk_displacement, range_max(walk[0], arrive[static_cast<size_t>(N)], K - 1));
 
+  res.max_turning_angle = turning_angles(P).maxCoeff();
   if (N < 4) {  // the whole curve within a few cells: every point goes to w_0
     res.defect = "the cell walk has only " + std::to_string(N) + " steps";
     res.displacement = range_max(walk[0], 0, K - 1);
     res.points.resize(1, 3);
     for (int k = 0; k < 3; ++k) res.points(0, k) = walk[0].p[k];
-    res.max_turning_angle = turning_angles(P).maxCoeff();
     return res;
   }
 
@@ -260,8 +260,6 @@ RoundingResult lattice_walk_of(const Points& P, double scale, const Mat3& rotati
     for (int k = 0; k < 3; ++k) res.points(q, k) = path[static_cast<size_t>(q)].p[k];
   const LatticePolygonCheck check = check_lattice_polygon(res.points);
   if (!check.ok) res.defect = "loop erasure left a defect: " + check.problem;
-  const VecX theta = turning_angles(P);
-  res.max_turning_angle = theta.maxCoeff();
   return res;
 }
 
