@@ -19,6 +19,12 @@ double elapsed_seconds() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+fs::path previous_folder(const std::string& out) {
+  fs::path p(out);
+  if (!p.has_filename()) p = p.parent_path();  // "dir/" names the same folder as "dir"
+  return p.string() + ".previous";
+}
+
 Args parse_args(int argc, char** argv, const std::string& name, const std::string& description) {
   elapsed_seconds();
   Args a;
@@ -55,6 +61,16 @@ Args parse_args(int argc, char** argv, const std::string& name, const std::strin
   }
   if (a.out.empty()) fail("missing --out DIR");
   std::error_code ec;
+  if (fs::exists(fs::path(a.out) / "summary.json", ec)) {
+    // A finished run: this one recomputes everything (its data sets would
+    // otherwise keep the old equilibria of every knot they hold). The old
+    // folder is kept as DIR.previous until this run finishes.
+    const fs::path previous = previous_folder(a.out);
+    fs::remove_all(previous, ec);
+    if (ec) fail("cannot remove '" + previous.string() + "': " + ec.message());
+    fs::rename(a.out, previous, ec);
+    if (ec) fail("cannot move the finished run '" + a.out + "' to '" + previous.string() + "': " + ec.message());
+  }
   fs::create_directories(a.out, ec);
   if (ec) fail("cannot create '" + a.out + "': " + ec.message());
   a.results = fs::path(a.out).parent_path().string();
@@ -71,6 +87,8 @@ int run_experiment(int argc, char** argv, const std::string& name, const std::st
     std::cerr << name << ": error: " << e.what() << std::endl;
     return 2;
   }
+  std::error_code ec;
+  fs::remove_all(previous_folder(a.out), ec);  // the run finished: its predecessor is replaced
   return 0;
 }
 

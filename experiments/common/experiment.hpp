@@ -3,6 +3,7 @@
 // crash-safe CSV/JSON results, and the run-time estimate printed before a run.
 // Experiments are thin programs over the library; figure scripts read only
 // what they write.
+#include <filesystem>
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -28,7 +29,18 @@ struct Args {
 
 /// Parses `--scale ci|default|paper --out DIR [--jobs J]` (and --help);
 /// creates DIR. Bad arguments: one line on stderr, exit status 2.
+///
+/// Reruns: a DIR holding a finished run (DIR/summary.json, written last by
+/// every experiment) is renamed DIR.previous (replacing an older one) and the
+/// experiment starts afresh, so a rerun after a code change never keeps the
+/// old results (a data set would otherwise skip every knot it already holds).
+/// DIR.previous is removed when the new run finishes (run_experiment); a
+/// failed or interrupted run leaves it, and its own unfinished DIR, which the
+/// next run resumes (data-set journals, README "Data-set files").
 Args parse_args(int argc, char** argv, const std::string& name, const std::string& description);
+
+/// DIR.previous for an output folder DIR ("dir/" and "dir" give the same).
+std::filesystem::path previous_folder(const std::string& out);
 
 /// Pick a value by scale.
 template <class T>
