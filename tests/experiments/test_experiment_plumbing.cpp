@@ -37,6 +37,15 @@ std::string read(const fs::path& p) {
   return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
+// A folder holding a finished run of a data-set experiment.
+fs::path finished_run(const Folder& f) {
+  const fs::path out = f.root / "dataset";
+  fs::create_directories(out);
+  touch(out / "dataset.h5", "old equilibria");
+  touch(out / "summary.json", "{}");
+  return out;
+}
+
 int run(const fs::path& out, const std::function<void(const Args&)>& body) {
   std::vector<std::string> args = {"exp_test", "--scale", "ci", "--out", out.string()};
   std::vector<char*> argv;
@@ -48,10 +57,7 @@ int run(const fs::path& out, const std::function<void(const Args&)>& body) {
 
 TEST(ExperimentReruns, AFinishedRunIsRecomputedFromAnEmptyFolder) {
   Folder f;
-  const fs::path out = f.root / "dataset";
-  fs::create_directories(out);
-  touch(out / "dataset.h5", "old equilibria");
-  touch(out / "summary.json", "{}");
+  const fs::path out = finished_run(f);
   bool saw_old_files = true, saw_previous = false;
   const int status = run(out, [&](const Args& a) {
     saw_old_files = fs::exists(fs::path(a.out) / "dataset.h5") || fs::exists(fs::path(a.out) / "summary.json");
@@ -67,10 +73,7 @@ TEST(ExperimentReruns, AFinishedRunIsRecomputedFromAnEmptyFolder) {
 
 TEST(ExperimentReruns, AFailedRerunKeepsTheFinishedRunAndTheNextRunResumesIt) {
   Folder f;
-  const fs::path out = f.root / "dataset";
-  fs::create_directories(out);
-  touch(out / "dataset.h5", "old equilibria");
-  touch(out / "summary.json", "{}");
+  const fs::path out = finished_run(f);
   // The rerun fails (bad input) after writing part of its work.
   const int failed = run(out, [&](const Args& a) {
     touch(fs::path(a.out) / "journal", "half the runs");
