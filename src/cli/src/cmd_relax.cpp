@@ -52,16 +52,17 @@ int cmd_relax(int argc, char** argv) {
   std::string method = "default";
   RelaxOptions opt;
   ArgParser args("relax", "FILE [-o OUT] [--link LK] [--planar H [--release]] [--tol T] [--max-iter N] [--radius R] "
-                          "[--young E] [--poisson NU] [--full-model] [--method M] [--eigen] [--json]");
+                          "[--young E] [--poisson NU] [--contact-stiffness W] [--full-model] [--method M] [--eigen] "
+                          "[--stop-at-saddle] [--verbose] [--json]");
   args.positional("FILE", &file, "closed curve (.obj or .txt); its edge lengths are the rest lengths");
   args.option("-o,--output", &out, "write the equilibrium here (.obj or .txt), atomically");
   args.option("--link", &link, "prescribe the link Lk = Tw + Wr (full model with Theta fixed); default: Theta free");
   args.option("--planar", &planar, "keep every vertex in the slab |z| < H (barrier)");
   args.flag("--release", &release, "after relaxing in the slab, drop it and continue (jumping knots)");
   args.option("--tol", &opt.tolerance, "gradient-norm tolerance (default 1e-8 scaled by EI and edge length)");
-  args.option("--max-iter", &opt.max_iterations, "Newton iterations per phase (default 5000)");
+  args.option("--max-iter", &opt.max_iterations, "Newton iterations per phase (default " + std::to_string(RelaxOptions{}.max_iterations) + ")");
   args.option("--radius", &opt.material.radius, "wire radius r (default 0.2)");
-  args.option("--young", &opt.material.young, "Young's modulus E (default 5000)");
+  args.option("--young", &opt.material.young, "Young's modulus E (default 2000)");
   args.option("--poisson", &opt.material.poisson, "Poisson ratio nu (default 0.3)");
   args.option("--contact-stiffness", &opt.contact_stiffness, "contact stiffness omega (default 1e3 (E/2000)(r/0.2)^3)");
   args.flag("--full-model", &full, "use the full model (positions, theta, Theta) even when Theta is free");
