@@ -23,6 +23,7 @@
 #include <vector>
 #include <thread>
 
+#include "ek/core/atomic_file.hpp"
 #include "ek/lattice/sampling.hpp"
 #include "stress_common.hpp"
 
@@ -72,14 +73,10 @@ TEST(StressLong, VolumeOfLatticeSamples) {
       std::cout << "[ stress   ] resuming " << partial << ": " << kept.size() << " runs already done" << std::endl;
     }
     {  // the kept rows replace the old log atomically: an interruption here loses nothing
-      const std::string tmp = partial + ".tmp";
-      std::ofstream out(tmp, std::ios::trunc);
-      ASSERT_TRUE(out) << "cannot write the stress log " << tmp;
-      out << header << "\n";
-      for (const auto& line : kept) out << line << "\n";
-      out.close();
-      ASSERT_TRUE(out) << "cannot write the stress log " << tmp;
-      ASSERT_EQ(std::rename(tmp.c_str(), partial.c_str()), 0) << "cannot replace " << partial;
+      AtomicFile out(partial);
+      out.stream() << header << "\n";
+      for (const auto& line : kept) out.stream() << line << "\n";
+      out.commit();
     }
     log.open(partial, std::ios::app);
     ASSERT_TRUE(log) << "cannot write the stress log " << partial;

@@ -60,7 +60,8 @@ int cmd_relax(int argc, char** argv) {
   args.option("--planar", &planar, "keep every vertex in the slab |z| < H (barrier)");
   args.flag("--release", &release, "after relaxing in the slab, drop it and continue (jumping knots)");
   args.option("--tol", &opt.tolerance, "gradient-norm tolerance (default 1e-8 scaled by EI and edge length)");
-  args.option("--max-iter", &opt.max_iterations, "Newton iterations per phase (default " + std::to_string(RelaxOptions{}.max_iterations) + ")");
+  args.option("--max-iter", &opt.max_iterations,
+              "Newton iterations per phase (default " + std::to_string(RelaxOptions{}.max_iterations) + ")");
   args.option("--radius", &opt.material.radius, "wire radius r (default 0.2)");
   args.option("--young", &opt.material.young, "Young's modulus E (default 2000)");
   args.option("--poisson", &opt.material.poisson, "Poisson ratio nu (default 0.3)");

@@ -29,7 +29,8 @@ inline void add_explore_options(ArgParser& args, ExploreArgs& a) {
   args.option("--young", &a.options.relax.material.young, "Young's modulus E (default 2000)");
   args.option("--poisson", &a.options.relax.material.poisson, "Poisson ratio (default 0.3)");
   args.option("--tol", &a.options.relax.tolerance, "gradient tolerance (default 1e-8 for the default material)");
-  args.option("--max-iter", &a.options.relax.max_iterations, "Newton iterations per relaxation (default " + std::to_string(RelaxOptions{}.max_iterations) + ")");
+  args.option("--max-iter", &a.options.relax.max_iterations,
+              "Newton iterations per relaxation (default " + std::to_string(RelaxOptions{}.max_iterations) + ")");
   args.flag("--no-stiffness", &a.no_stiffness, "skip the stiffness attribute (an eigenvalue per equilibrium)");
   args.flag("--quiet", &a.quiet, "no progress output");
 }
