@@ -10,7 +10,8 @@
 // issue's measurement: `taskset -c 1 build/experiments/exp_bench_solver`.
 //
 //   exp_bench_solver [--quick] [--count K] [--knots A,B,...] [--seed S] [--out DIR]
-//                    [--method default|projected|paper] [--max-iter N] [--verbose] [--skips]
+//                    [--method default|projected|paper] [--continuation F[,F...]] [--max-iter N]
+//                    [--verbose] [--skips]
 //
 // --skips (issue 11, "skip what a scene does not need", measured on and off):
 // every sample is relaxed three times, one after the other: as by default
@@ -23,6 +24,10 @@
 //
 // --method projected: the hybrid Hessian without its exact region
 // (NewtonOptions::exact_after_full_steps = 0).
+// --continuation F[,F...]: contact-stiffness continuation
+// (RelaxOptions::contact_continuation; e.g. 1e-3): times, iterations and
+// the split count every phase; the method column reads e.g.
+// "default+continuation(0.001)".
 // --quick: 2 samples per knot (smoke test). --method paper: the paper's plain
 // method (exact Hessian every iteration, shift restarted at ε·λ_min, every
 // factorisation on the pattern of the current contact set), for before/after
@@ -115,6 +120,31 @@ struct Summary {
   double symbolic = 0.0, numeric = 0.0;  // per run (mean)
 };
 
+/// The counters and timings of every phase of a relaxation (continuation,
+/// slab, final) summed; status and values of the final phase.
+ek::NewtonReport all_phases(const ek::RelaxResult& result) {
+  ek::NewtonReport sum = result.report;
+  std::vector<const ek::NewtonReport*> others;
+  for (const ek::NewtonReport& r : result.continuation_reports) others.push_back(&r);
+  if (result.slab_report) others.push_back(&*result.slab_report);
+  for (const ek::NewtonReport* r : others) {
+    sum.iterations += r->iterations;
+    sum.seconds += r->seconds;
+    sum.symbolic_factorizations += r->symbolic_factorizations;
+    sum.orderings += r->orderings;
+    sum.numeric_factorizations += r->numeric_factorizations;
+    sum.line_search_trials += r->line_search_trials;
+    sum.saddle_escapes += r->saddle_escapes;
+    sum.time_assembly += r->time_assembly;
+    sum.time_factorization += r->time_factorization;
+    sum.time_collision += r->time_collision;
+    sum.time_line_search += r->time_line_search;
+    sum.time_eigen += r->time_eigen;
+    sum.time_symbolic += r->time_symbolic;
+  }
+  return sum;
+}
+
 Summary summarize(const std::string& name, const std::vector<const Run*>& runs) {
   Summary s;
   s.name = name;
@@ -122,7 +152,7 @@ Summary summarize(const std::string& name, const std::vector<const Run*>& runs) 
   std::vector<double> secs, its;
   double total = 0.0;
   for (const Run* r : runs) {
-    const ek::NewtonReport& rep = r->result.report;
+    const ek::NewtonReport rep = all_phases(r->result);
     secs.push_back(r->seconds);
     its.push_back(rep.iterations);
     total += r->seconds;
@@ -165,7 +195,7 @@ std::string statuses_text(const Summary& s) {
 int usage(const char* msg) {
   if (msg) std::cerr << "exp_bench_solver: " << msg << "\n";
   std::cerr << "usage: exp_bench_solver [--quick] [--count K] [--knots A,B,...] [--seed S] [--out DIR] "
-               "[--method default|projected|paper] [--max-iter N] [--verbose] [--skips]\n";
+               "[--method default|projected|paper] [--continuation F[,F...]] [--max-iter N] [--verbose] [--skips]\n";
   return 2;
 }
 
@@ -177,6 +207,7 @@ int main(int argc, char** argv) {
   std::uint64_t seed = 20230806;
   std::string out = "results/bench", method = "default";
   int max_iter = -1;
+  std::vector<double> continuation;
   bool verbose = false, skips = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
@@ -192,6 +223,8 @@ int main(int argc, char** argv) {
       else if (a == "--out") out = value();
       else if (a == "--method") method = value();
       else if (a == "--max-iter") max_iter = std::stoi(value());
+      else if (a == "--continuation")
+        for (const std::string& f : split(value(), ',')) continuation.push_back(std::stod(f));
       else if (a == "--verbose") verbose = true;
       else if (a == "--skips") skips = true;
       else if (a == "--help" || a == "-h") return usage(nullptr), 0;
@@ -209,6 +242,17 @@ int main(int argc, char** argv) {
   if (method == "projected") options.newton.exact_after_full_steps = 0;  // hybrid without the exact region
   if (max_iter >= 0) options.max_iterations = max_iter;
   options.newton.verbose = verbose;
+  options.contact_continuation = continuation;
+  try {
+    options.validate();
+  } catch (const ek::InputError& e) {
+    return usage(e.what());
+  }
+  if (!continuation.empty()) {
+    method += "+continuation(";
+    for (size_t k = 0; k < continuation.size(); ++k) method += (k ? ";" : "") + fmt(continuation[k], "%g");
+    method += ")";
+  }
 
   try {
     std::filesystem::create_directories(out);
@@ -230,7 +274,7 @@ int main(int argc, char** argv) {
             vo.smallest_eigenvalue = v == 2;
             Run run = timed_relax(knots[k], s, P, vo);
             std::fprintf(stderr, "%-9s #%02d  %-11s %-18s %5d it  %7.3f s  E %.10g\n", knots[k].c_str(), s,
-                         skip_variants[v].c_str(), run.result.status().c_str(), run.result.report.iterations,
+                         skip_variants[v].c_str(), run.result.status().c_str(), run.result.total_iterations(),
                          run.seconds, run.result.energy.total);
             skip_runs[v].push_back(std::move(run));
           }
@@ -240,7 +284,7 @@ int main(int argc, char** argv) {
       for (int s = 0; s < count; ++s) {
         Run run = timed_relax(knots[k], s, ek::to_points(batch.samples[static_cast<size_t>(s)]), options);
         std::fprintf(stderr, "%-9s #%02d  %-18s %5d it  %7.3f s  E %.10g  contacts %d\n", run.knot.c_str(), s,
-                     run.result.status().c_str(), run.result.report.iterations, run.seconds,
+                     run.result.status().c_str(), run.result.total_iterations(), run.seconds,
                      run.result.energy.total, run.result.contacts);
         runs.push_back(std::move(run));
       }
@@ -302,7 +346,7 @@ int main(int argc, char** argv) {
     runs_csv << "knot,sample,method,status,seconds,iterations,energy,gradient_norm,contacts,min_distance,writhe,"
                 "symbolic,numeric,line_search_trials,saddle_escapes,marginal\n";
     for (const Run& r : runs) {
-      const ek::NewtonReport& rep = r.result.report;
+      const ek::NewtonReport rep = all_phases(r.result);
       runs_csv << r.knot << "," << r.sample << "," << method << "," << r.result.status() << ","
                << fmt(r.seconds, "%.6g") << "," << rep.iterations << "," << fmt(r.result.energy.total, "%.15g") << ","
                << fmt(rep.gradient_norm, "%.3e") << "," << r.result.contacts << ","

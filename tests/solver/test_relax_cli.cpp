@@ -41,11 +41,32 @@ TEST(RelaxCli, RelaxesKeepsTheKnotAndWritesTheEquilibrium) {
   EXPECT_LE(again.json().at("iterations").get<int>(), 5);
 }
 
+// --continuation: the soft solves are reported, the iteration total counts
+// every phase, and the result is an equilibrium of the model at ω (the
+// final phase's gradient is below the tolerance).
+TEST(RelaxCli, ContinuationReportsEveryPhase) {
+  const std::string dir = temp_dir("relax_cli_cont");
+  const std::string in = trefoil(dir);
+  const auto r = run("relax " + in + " --continuation 0.001,0.1 --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = r.json();
+  EXPECT_EQ(j.at("status"), "converged-stable");
+  EXPECT_TRUE(j.at("alexander_preserved").get<bool>());
+  ASSERT_EQ(j.at("continuation_reports").size(), 2u);
+  int total = j.at("iterations").get<int>();
+  for (const auto& c : j.at("continuation_reports")) total += c.at("iterations").get<int>();
+  EXPECT_EQ(j.at("total_iterations").get<int>(), total);
+  EXPECT_GT(total, j.at("iterations").get<int>());  // the soft phases did work
+  EXPECT_LE(j.at("gradient_norm").get<double>(), 1e-7);
+}
+
 TEST(RelaxCli, BadInputIsOneMessageAndStatusTwo) {
   const std::string dir = temp_dir("relax_cli_bad");
   const std::string in = trefoil(dir);
   const std::vector<std::string> cases = {in + " --method newton", in + " --release", dir + "/missing.obj",
-                                          in + " -o /nonexistent-dir/x.obj", in + " --radius -1"};
+                                          in + " -o /nonexistent-dir/x.obj", in + " --radius -1",
+                                          in + " --continuation 2", in + " --continuation 0", in + " --continuation x",
+                                          in + " --continuation 0.1,"};
   for (const auto& args : cases) {
     const auto r = run("relax " + args);
     EXPECT_EQ(r.status, 2) << args << ": " << r.err;

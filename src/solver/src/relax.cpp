@@ -114,10 +114,23 @@ void RelaxOptions::validate() const {
   require_input(!link || std::isfinite(*link), "relax: link must be finite");
   require_input(max_tangent_rotation > 0.0 && max_tangent_rotation < 1.5, "relax: max_tangent_rotation in (0, 1.5)");
   require_input(!release_slab || slab, "relax: release_slab needs a slab");
+  for (const double f : contact_continuation)
+    require_input(f > 0.0 && f < 1.0, "relax: contact_continuation factors must be in (0, 1)");
   if (slab) {
     require_input(slab->half_thickness > 0.0 && std::isfinite(slab->half_thickness),
                   "relax: slab half-thickness must be positive");
   }
+}
+
+int RelaxResult::total_iterations() const {
+  int k = report.iterations + (slab_report ? slab_report->iterations : 0);
+  for (const NewtonReport& r : continuation_reports) k += r.iterations;
+  return k;
+}
+double RelaxResult::total_seconds() const {
+  double s = report.seconds + (slab_report ? slab_report->seconds : 0.0);
+  for (const NewtonReport& r : continuation_reports) s += r.seconds;
+  return s;
 }
 
 bool RelaxResult::converged() const {
@@ -197,6 +210,17 @@ RelaxResult relax(const Points& curve, const RelaxOptions& options) {
   result.lambda_min = cached_lambda_min(n, edge, mat, model);
   no.lambda_min = result.lambda_min;
 
+  // Contact-stiffness continuation (RelaxOptions::contact_continuation): the
+  // same rod, slab and tolerance with a softer barrier; every accepted step
+  // is still collision-free (the barrier is singular at d = 0 for any ω).
+  for (const double f : options.contact_continuation) {
+    ContactOptions soft = co;
+    soft.stiffness = f * co.stiffness;
+    ContactPotential soft_contact(CurveTopology::single(n), soft);
+    KnotObjective soft_objective(rod, soft_contact, slab ? &*slab : nullptr, options.max_tangent_rotation);
+    result.continuation_reports.push_back(minimize(soft_objective, no));
+  }
+  if (!options.contact_continuation.empty()) objective.set_dofs(rod.dofs());
   result.report = minimize(objective, no);
   if (slab && options.release_slab) {
     result.slab_report = result.report;
