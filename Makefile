@@ -56,7 +56,8 @@ stress: build
 	  ctest -V -j$(JOBS) -L 'stress'
 
 # Microbenchmarks pinned to one core (Google Benchmark, median of 5), then the
-# macro benchmarks; one summary table at the end.
+# macro benchmarks (the solver by default and with contact-stiffness
+# continuation 1e-3, the skips, time against error); one summary table at the end.
 BENCH_CORE ?= 0
 # exp_time_vs_error: ci (n <= 800) or default (n <= 3200)
 BENCH_SCALE ?= default
@@ -70,6 +71,8 @@ bench: build
 	done
 	@if [ -x $(BUILD)/experiments/exp_bench_solver ]; then \
 	  taskset -c $(BENCH_CORE) $(BUILD)/experiments/exp_bench_solver --out results/bench && \
+	  taskset -c $(BENCH_CORE) $(BUILD)/experiments/exp_bench_solver --continuation 1e-3 \
+	    --out results/bench/continuation && \
 	  taskset -c $(BENCH_CORE) $(BUILD)/experiments/exp_bench_solver --skips --count 3 \
 	    --knots 4_1,8_19,12a_1019 --out results/bench; fi
 	taskset -c $(BENCH_CORE) $(BUILD)/experiments/exp_time_vs_error --scale $(BENCH_SCALE) --out results/bench/time_vs_error

@@ -106,8 +106,12 @@ def main(folder):
             ok = "" if t is None else ("yes" if s <= t else "NO")
             print(f"{exe:<16} {name:<{width}}  {fmt_seconds(s):>12}  {fmt_seconds(t) if t else '':>12}  {ok}")
     skips_table(rows, folder)
-    for path in sorted(glob.glob(os.path.join(folder, "*.csv"))):
-        print(f"\n{os.path.basename(path)}")
+    # the macro tables: the default method, then contact-stiffness continuation
+    # (make bench writes it to continuation/)
+    tables = sorted(glob.glob(os.path.join(folder, "*.csv")))
+    tables += sorted(glob.glob(os.path.join(folder, "continuation", "solver_macro.csv")))
+    for path in tables:
+        print(f"\n{os.path.relpath(path, folder)}")
         with open(path) as f:
             for row in csv.reader(f):
                 print("  " + "  ".join(f"{c:>14}" for c in row))
