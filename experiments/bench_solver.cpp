@@ -120,31 +120,6 @@ struct Summary {
   double symbolic = 0.0, numeric = 0.0;  // per run (mean)
 };
 
-/// The counters and timings of every phase of a relaxation (continuation,
-/// slab, final) summed; status and values of the final phase.
-ek::NewtonReport all_phases(const ek::RelaxResult& result) {
-  ek::NewtonReport sum = result.report;
-  std::vector<const ek::NewtonReport*> others;
-  for (const ek::NewtonReport& r : result.continuation_reports) others.push_back(&r);
-  if (result.slab_report) others.push_back(&*result.slab_report);
-  for (const ek::NewtonReport* r : others) {
-    sum.iterations += r->iterations;
-    sum.seconds += r->seconds;
-    sum.symbolic_factorizations += r->symbolic_factorizations;
-    sum.orderings += r->orderings;
-    sum.numeric_factorizations += r->numeric_factorizations;
-    sum.line_search_trials += r->line_search_trials;
-    sum.saddle_escapes += r->saddle_escapes;
-    sum.time_assembly += r->time_assembly;
-    sum.time_factorization += r->time_factorization;
-    sum.time_collision += r->time_collision;
-    sum.time_line_search += r->time_line_search;
-    sum.time_eigen += r->time_eigen;
-    sum.time_symbolic += r->time_symbolic;
-  }
-  return sum;
-}
-
 Summary summarize(const std::string& name, const std::vector<const Run*>& runs) {
   Summary s;
   s.name = name;
@@ -152,7 +127,7 @@ Summary summarize(const std::string& name, const std::vector<const Run*>& runs) 
   std::vector<double> secs, its;
   double total = 0.0;
   for (const Run* r : runs) {
-    const ek::NewtonReport rep = all_phases(r->result);
+    const ek::NewtonReport rep = r->result.all_phases();
     secs.push_back(r->seconds);
     its.push_back(rep.iterations);
     total += r->seconds;
@@ -274,7 +249,7 @@ int main(int argc, char** argv) {
             vo.smallest_eigenvalue = v == 2;
             Run run = timed_relax(knots[k], s, P, vo);
             std::fprintf(stderr, "%-9s #%02d  %-11s %-18s %5d it  %7.3f s  E %.10g\n", knots[k].c_str(), s,
-                         skip_variants[v].c_str(), run.result.status().c_str(), run.result.total_iterations(),
+                         skip_variants[v].c_str(), run.result.status().c_str(), run.result.all_phases().iterations,
                          run.seconds, run.result.energy.total);
             skip_runs[v].push_back(std::move(run));
           }
@@ -284,7 +259,7 @@ int main(int argc, char** argv) {
       for (int s = 0; s < count; ++s) {
         Run run = timed_relax(knots[k], s, ek::to_points(batch.samples[static_cast<size_t>(s)]), options);
         std::fprintf(stderr, "%-9s #%02d  %-18s %5d it  %7.3f s  E %.10g  contacts %d\n", run.knot.c_str(), s,
-                     run.result.status().c_str(), run.result.total_iterations(), run.seconds,
+                     run.result.status().c_str(), run.result.all_phases().iterations, run.seconds,
                      run.result.energy.total, run.result.contacts);
         runs.push_back(std::move(run));
       }
@@ -346,7 +321,7 @@ int main(int argc, char** argv) {
     runs_csv << "knot,sample,method,status,seconds,iterations,energy,gradient_norm,contacts,min_distance,writhe,"
                 "symbolic,numeric,line_search_trials,saddle_escapes,marginal\n";
     for (const Run& r : runs) {
-      const ek::NewtonReport rep = all_phases(r.result);
+      const ek::NewtonReport rep = r.result.all_phases();
       runs_csv << r.knot << "," << r.sample << "," << method << "," << r.result.status() << ","
                << fmt(r.seconds, "%.6g") << "," << rep.iterations << "," << fmt(r.result.energy.total, "%.15g") << ","
                << fmt(rep.gradient_norm, "%.3e") << "," << r.result.contacts << ","

@@ -121,8 +121,8 @@ int cmd_relax(int argc, char** argv) {
     j["converged"] = r.converged();
     j["stable"] = r.stable();
     j["iterations"] = r.report.iterations;
-    j["total_iterations"] = r.total_iterations();
-    j["seconds"] = number(r.total_seconds());
+    j["total_iterations"] = r.all_phases().iterations;
+    j["seconds"] = number(r.all_phases().seconds);
     const Json energies = energy_json(r.energy);
     for (auto& [k, v] : energies.items()) j[k] = v;
     j["gradient_norm"] = number(r.report.gradient_norm);
@@ -149,8 +149,8 @@ int cmd_relax(int argc, char** argv) {
     if (!out.empty() && r.alexander_preserved) j["output"] = out;
     print_json(j);
   } else {
-    std::cout << "status:       " << r.status() << " (" << r.total_iterations() << " iterations, "
-              << fmt(r.total_seconds(), 4) << " s)\n"
+    std::cout << "status:       " << r.status() << " (" << r.all_phases().iterations << " iterations, "
+              << fmt(r.all_phases().seconds, 4) << " s)\n"
               << "energy:       " << fmt(r.energy.total) << " (stretch " << fmt(r.energy.stretch, 6) << ", bend "
               << fmt(r.energy.bend, 6) << ", twist " << fmt(r.energy.twist, 6) << ", contact "
               << fmt(r.energy.contact, 6) << ")\n"

@@ -122,15 +122,28 @@ void RelaxOptions::validate() const {
   }
 }
 
-int RelaxResult::total_iterations() const {
-  int k = report.iterations + (slab_report ? slab_report->iterations : 0);
-  for (const NewtonReport& r : continuation_reports) k += r.iterations;
-  return k;
-}
-double RelaxResult::total_seconds() const {
-  double s = report.seconds + (slab_report ? slab_report->seconds : 0.0);
-  for (const NewtonReport& r : continuation_reports) s += r.seconds;
-  return s;
+NewtonReport RelaxResult::all_phases() const {
+  NewtonReport sum = report;
+  auto add = [&sum](const NewtonReport& r) {
+    sum.iterations += r.iterations;
+    sum.seconds += r.seconds;
+    sum.symbolic_factorizations += r.symbolic_factorizations;
+    sum.orderings += r.orderings;
+    sum.numeric_factorizations += r.numeric_factorizations;
+    sum.line_search_trials += r.line_search_trials;
+    sum.saddle_escapes += r.saddle_escapes;
+    sum.exact_iterations += r.exact_iterations;
+    sum.expansions += r.expansions;
+    sum.time_assembly += r.time_assembly;
+    sum.time_factorization += r.time_factorization;
+    sum.time_collision += r.time_collision;
+    sum.time_line_search += r.time_line_search;
+    sum.time_eigen += r.time_eigen;
+    sum.time_symbolic += r.time_symbolic;
+  };
+  for (const NewtonReport& r : continuation_reports) add(r);
+  if (slab_report) add(*slab_report);
+  return sum;
 }
 
 bool RelaxResult::converged() const {

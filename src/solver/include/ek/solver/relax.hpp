@@ -102,9 +102,11 @@ struct RelaxResult {
   double lambda_min = 0.0;          ///< straight-rod λ_min used for the shift
   std::string model;                ///< "twist-free", "free-theta" or "fixed-link"
 
-  /// Newton iterations and wall time [s] of all phases (continuation, slab, final).
-  int total_iterations() const;
-  double total_seconds() const;
+  /// The report of all phases (continuation, slab, final) together:
+  /// iterations, factorisations, line-search trials, saddle escapes and the
+  /// times summed; status, energy, gradient norm and the other values of the
+  /// final phase (`report`).
+  NewtonReport all_phases() const;
 
   bool converged() const;
   bool stable() const;
