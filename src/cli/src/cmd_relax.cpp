@@ -1,6 +1,7 @@
 // knots relax FILE [-o OUT] [--link LK] [--planar H [--release]] [--tol T] [--max-iter N]
 //             [--radius R] [--young E] [--poisson NU] [--contact-stiffness W] [--continuation F[,F...]]
 //             [--full-model] [--method M] [--eigen] [--stop-at-saddle] [--verbose] [--json]
+#include <algorithm>
 #include <iostream>
 
 #include "args.hpp"
@@ -90,14 +91,13 @@ int cmd_relax(int argc, char** argv) {
   } else if (method != "default") {
     throw InputError("--method must be default, exact or paper, not '" + method + "'");
   }
-  for (size_t pos = 0; pos < continuation.size();) {
-    size_t end = continuation.find(',', pos);
-    if (end == std::string::npos) end = continuation.size();
-    const double f = parse_number(continuation.substr(pos, end - pos), "--continuation");
-    if (!(f > 0.0 && f < 1.0)) throw InputError("--continuation: every factor must be in (0, 1)");
-    opt.contact_continuation.push_back(f);
+  // comma-separated factors; an empty one ("0.1,") is not a number. Their
+  // range (0, 1) is checked by RelaxOptions::validate() in relax().
+  for (size_t pos = 0; !continuation.empty();) {
+    const size_t end = std::min(continuation.find(',', pos), continuation.size());
+    opt.contact_continuation.push_back(parse_number(continuation.substr(pos, end - pos), "--continuation"));
+    if (end == continuation.size()) break;
     pos = end + 1;
-    if (end + 1 == continuation.size()) throw InputError("--continuation: empty factor after ','");
   }
   if (!out.empty()) check_writable(out);
   if (release && !planar) throw InputError("--release needs --planar H");
@@ -113,6 +113,7 @@ int cmd_relax(int argc, char** argv) {
   }
   const Points curve = read_curve(file);
   const RelaxResult r = relax(curve, opt);
+  const NewtonReport all = r.all_phases();
   if (!out.empty() && r.alexander_preserved) write_curve(out, r.positions);
   if (json) {
     Json j;
@@ -121,8 +122,8 @@ int cmd_relax(int argc, char** argv) {
     j["converged"] = r.converged();
     j["stable"] = r.stable();
     j["iterations"] = r.report.iterations;
-    j["total_iterations"] = r.all_phases().iterations;
-    j["seconds"] = number(r.all_phases().seconds);
+    j["total_iterations"] = all.iterations;
+    j["seconds"] = number(all.seconds);
     const Json energies = energy_json(r.energy);
     for (auto& [k, v] : energies.items()) j[k] = v;
     j["gradient_norm"] = number(r.report.gradient_norm);
@@ -149,8 +150,8 @@ int cmd_relax(int argc, char** argv) {
     if (!out.empty() && r.alexander_preserved) j["output"] = out;
     print_json(j);
   } else {
-    std::cout << "status:       " << r.status() << " (" << r.all_phases().iterations << " iterations, "
-              << fmt(r.all_phases().seconds, 4) << " s)\n"
+    std::cout << "status:       " << r.status() << " (" << all.iterations << " iterations, "
+              << fmt(all.seconds, 4) << " s)\n"
               << "energy:       " << fmt(r.energy.total) << " (stretch " << fmt(r.energy.stretch, 6) << ", bend "
               << fmt(r.energy.bend, 6) << ", twist " << fmt(r.energy.twist, 6) << ", contact "
               << fmt(r.energy.contact, 6) << ")\n"

@@ -44,8 +44,9 @@ JournalRun run_one(const Points& sample, int index, std::uint64_t seed, const Ex
     ro.smallest_eigenvalue = o.stiffness;
     const RelaxResult r = relax(sample, ro);
     out.record.status = r.status();
-    out.record.iterations = r.all_phases().iterations;
-    out.record.seconds = r.all_phases().seconds;
+    const NewtonReport all = r.all_phases();
+    out.record.iterations = all.iterations;
+    out.record.seconds = all.seconds;
     out.record.energy = r.energy.total;
     out.record.gradient_norm = r.report.gradient_norm;
     out.record.contacts = r.contacts;
