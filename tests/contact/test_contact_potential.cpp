@@ -297,6 +297,43 @@ TEST(ContactPotential, HessianStructureFollowsTheActiveSet) {
   EXPECT_TRUE(A.end());
 }
 
+// The Hessian plan is built by add_hessian() for the active set of the last
+// update(), however many updates with other active sets came between (as the
+// line search's trials do): the values equal those of a fresh object.
+TEST(ContactPotential, HessianFollowsTheLastUpdateAcrossTrials) {
+  const Points x = twisted_pair(200, 7, 16.0, 0.3);
+  Points z = x;
+  z.row(0) += Vec3(0, 0, 10).transpose();  // its edges' pairs drop out
+  Points w = x;
+  w.row(50) += Vec3(0, 0, 10).transpose();  // other pairs drop out
+  ContactPotential cp(CurveTopology::single(200), ContactOptions{});
+  auto fresh = [&](const Points& y) {
+    ContactPotential other(CurveTopology::single(200), ContactOptions{});
+    other.update(y);
+    return dense_hessian(other, y);
+  };
+  cp.update(x);
+  EXPECT_EQ(dense_hessian(cp, x), fresh(x));
+  // trials with other active sets, then back to x without assembling between
+  for (const Points* y : std::vector<const Points*>{&z, &w, &z, &x}) cp.update(*y);
+  EXPECT_EQ(dense_hessian(cp, x), fresh(x));
+  // assembled at z, then trials, then assembled at w
+  cp.update(z);
+  EXPECT_EQ(dense_hessian(cp, z), fresh(z));
+  for (const Points* y : std::vector<const Points*>{&x, &z, &x, &w}) cp.update(*y);
+  ASSERT_NE(cp.num_active(), 0u);
+  EXPECT_EQ(dense_hessian(cp, w), fresh(w));
+  // the three active sets differ, so each assembly above needed its own plan
+  auto active_at = [](const Points& y) {
+    ContactPotential other(CurveTopology::single(200), ContactOptions{});
+    other.update(y);
+    return active_as_pairs(other);
+  };
+  EXPECT_NE(active_at(x), active_at(z));
+  EXPECT_NE(active_at(x), active_at(w));
+  EXPECT_NE(active_at(z), active_at(w));
+}
+
 TEST(ContactPotential, MaxStepStopsBeforeSelfIntersection) {
   ContactOptions o;
   int limited = 0;

@@ -67,7 +67,6 @@ void ContactPotential::update(const Points& x) {
     verlet_valid_ = skin > 0.0;
     ++broad_phase_runs_;
   }
-  const std::uint64_t previous = structure_;
   const double margin = options_.hessian_margin;
   active_.clear();
   near_.clear();
@@ -138,10 +137,12 @@ void ContactPotential::update(const Points& x) {
       active_slot_[k] = static_cast<int>(q);
     }
   }
-  if (structure_ != previous || pair_blocks_.size() != pattern_.size()) build_hessian_plan();
+  // The Hessian plan is built by add_hessian() when the pattern has changed:
+  // the line search calls update() at every trial, and most trials' active
+  // sets are never assembled.
 }
 
-void ContactPotential::build_hessian_plan() {
+void ContactPotential::build_hessian_plan() const {
   // keys of the 10 vertex pairs of every active pair, then the distinct keys in
   // sorted order (a deterministic function of the active set)
   struct Key {
@@ -173,6 +174,8 @@ void ContactPotential::build_hessian_plan() {
         keys[i].transposed ? (b | (1 << 30)) : b;
   }
   block_values_.resize(blocks_.size());
+  plan_structure_ = structure_;
+  plan_valid_ = true;
 }
 
 double ContactPotential::energy(const Points& x) const {
@@ -211,6 +214,7 @@ void ContactPotential::add_hessian(const Points& x, SparseAssembler& A) const {
 
 void ContactPotential::add_hessian(const Points& x, SparseAssembler& A, bool project_psd) const {
   if (x.rows() != n_) require(false, "ContactPotential::add_hessian: wrong number of points");
+  if (!plan_valid_ || plan_structure_ != structure_ || pair_blocks_.size() != pattern_.size()) build_hessian_plan();
   if (blocks_.empty()) return;
   const PairBarrierParams params = pair_params();
   const double w = options_.stiffness;

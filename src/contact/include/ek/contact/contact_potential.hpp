@@ -174,14 +174,16 @@ class ContactPotential {
   bool verlet_valid_ = false;
   double min_distance_ = 0.0;
   std::uint64_t structure_ = 0;
-  // Hessian plan, rebuilt when the active set changes: the distinct vertex
-  // pairs (u <= v) touched by the active pairs, and for each active pair and
-  // each of its 10 vertex pairs (k <= l) the block it adds to (bit 31 set:
-  // add the transpose).
-  std::vector<std::pair<int, int>> blocks_;
-  std::vector<std::array<int, 10>> pair_blocks_;
+  // Hessian plan, a cache rebuilt by add_hessian() after the pattern changed:
+  // the distinct vertex pairs (u <= v) touched by the pattern pairs, and for
+  // each pattern pair and each of its 10 vertex pairs (k <= l) the block it
+  // adds to (bit 30 set: add the transpose).
+  mutable std::vector<std::pair<int, int>> blocks_;
+  mutable std::vector<std::array<int, 10>> pair_blocks_;
   mutable std::vector<Mat3> block_values_;
-  void build_hessian_plan();
+  mutable bool plan_valid_ = false;
+  mutable std::uint64_t plan_structure_ = 0;  // structure_ the plan was built for
+  void build_hessian_plan() const;
   PairBarrierParams pair_params() const { return {options_.dhat, options_.parallel_threshold}; }
 };
 
