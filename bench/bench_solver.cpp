@@ -100,6 +100,44 @@ void BM_Solve(benchmark::State& state) {
 
 }  // namespace
 
+// The assembler's pattern rebuild when the contact set changes (what the
+// solver pays at every contact change before the symbolic analysis): the
+// relaxed trefoil's rod Hessian replayed and its contact Hessian recorded
+// under a new structure id, alternating between the contact sets of the
+// relaxed curve and of the curve 1% larger (a subset of its pairs).
+// Argument 0: the same contact set every pass (replayed: the cost of filling
+// values alone), 1: alternating (a rebuild every pass).
+void BM_AssemblerPatternRebuild(benchmark::State& state) {
+  const bool alternate = state.range(0) != 0;
+  const Points& P = relaxed_trefoil().relaxed;
+  const Points& S = relaxed_trefoil().start;
+  VecX rest(S.rows());
+  for (Eigen::Index i = 0; i < S.rows(); ++i) rest(i) = (S.row((i + 1) % S.rows()) - S.row(i)).norm();
+  const RodMaterial mat;
+  const ElasticRod rod(P, rest, mat, TwistModel::TwistFree);
+  ContactOptions co;
+  co.dhat = 2.0 * mat.radius;
+  const Points Q = 1.01 * P;
+  ContactPotential c0(CurveTopology::single(static_cast<int>(P.rows())), co), c1 = c0;
+  c0.update(P);
+  c1.update(Q);
+  SparseAssembler A;
+  int pass = 0;
+  for (auto _ : state) {
+    const bool first = !alternate || (pass++ % 2) == 0;
+    const ContactPotential& c = first ? c0 : c1;
+    A.begin(rod.num_dofs());
+    A.segment(0, rod.hessian_structure());
+    rod.add_hessian(A);
+    A.segment(1, c.hessian_structure());
+    c.add_hessian(first ? P : Q, A);
+    benchmark::DoNotOptimize(A.end());
+  }
+  state.counters["contacts"] = static_cast<double>(c0.num_active());
+  state.counters["contacts_larger"] = static_cast<double>(c1.num_active());
+}
+
+BENCHMARK(BM_AssemblerPatternRebuild)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_FactorizeSymbolicAndNumeric)->ArgsProduct({{0, 1}, {0, 1}})->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_FactorizeNumericOnly)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Solve)->Unit(benchmark::kMicrosecond);

@@ -28,6 +28,7 @@ void SparseAssembler::segment(int id, std::uint64_t structure) {
   s.id = id;
   s.structure = structure;
   s.cursor = 0;
+  s.written = 0;
   s.replay = same;
   if (!same) {
     replay_ok_ = false;
@@ -47,8 +48,10 @@ void SparseAssembler::add_slow(Index i, Index j, double v) {
       H_.valuePtr()[s.slots[s.cursor++]] += v;
       return;
     }
-    // more entries than last time: the structure id lied; fall back to recording
+    // more entries than last time: the structure id lied; fall back to
+    // recording (the adds so far are in their slots; end() keeps them)
     s.replay = false;
+    s.written = s.slots.size();
     replay_ok_ = false;
   }
   s.recorded.emplace_back(i, j, v);
@@ -67,57 +70,133 @@ bool SparseAssembler::end() {
     changed_ = false;
     return false;
   }
-  // Rebuild: every segment must be available as positions + values. Segments
-  // that were replayed this pass are re-recorded from their slots.
-  std::vector<Eigen::Triplet<double, Index>> all;
-  const Eigen::SparseMatrix<double, Eigen::ColMajor, Index> old = H_;
-  std::vector<Index> slot_row, slot_col;
-  if (old.nonZeros() > 0) {
-    slot_row.resize(static_cast<size_t>(old.nonZeros()));
-    slot_col.resize(static_cast<size_t>(old.nonZeros()));
-    for (Index c = 0; c < old.outerSize(); ++c)
-      for (Index p = old.outerIndexPtr()[c]; p < old.outerIndexPtr()[c + 1]; ++p) {
-        slot_row[static_cast<size_t>(p)] = old.innerIndexPtr()[p];
-        slot_col[static_cast<size_t>(p)] = c;
-      }
-  }
+  // Rebuild: a merge, column by column, of the old pattern's entries that
+  // this pass wrote (the replayed segments' adds, summed in their slots; the
+  // old matrix is sorted) with the recorded adds (sorted by column, row and
+  // call). An entry's value is the old slot's sum, then the recorded adds in
+  // call order: the left-to-right sum of every add in call order, as Eigen's
+  // setFromTriplets gives. Cost O(nnz + n + recorded), no search.
+  Matrix old;
+  old.swap(H_);
+  const Index old_nnz = static_cast<Index>(old.nonZeros());
+  const Index* old_outer = old.outerIndexPtr();
+  const Index* old_inner = old.innerIndexPtr();
+  const double* old_value = old.valuePtr();
   segments_.resize(static_cast<size_t>(used_segments_));
-  // Values of replayed segments live in H_ (summed together). Collect them as
-  // one block of triplets from the old matrix restricted to the slots used by
-  // replayed segments, then add the recorded segments.
-  std::vector<char> slot_used(static_cast<size_t>(old.nonZeros()), 0);
+  // adds written into slots this pass: a replayed segment's all, a segment
+  // that fell back to recording those before it did
+  auto written = [](const Segment& s) { return s.replay ? s.cursor : s.written; };
+  std::vector<Index>& old_to_new = scratch_old_to_new_;  // -1: slot not written this pass
+  old_to_new.assign(static_cast<size_t>(old_nnz), -1);
   for (const Segment& s : segments_)
-    if (s.replay)
-      for (size_t k = 0; k < s.cursor; ++k) slot_used[static_cast<size_t>(s.slots[k])] = 1;
-  for (size_t p = 0; p < slot_used.size(); ++p)
-    if (slot_used[p]) all.emplace_back(slot_row[p], slot_col[p], old.valuePtr()[p]);
+    for (size_t k = 0; k < written(s); ++k) old_to_new[static_cast<size_t>(s.slots[k])] = 0;
+  // recorded adds, by column (counting sort), then by row and call within
+  // a column (insertion sort: columns hold few adds)
+  size_t r = 0;
   for (const Segment& s : segments_)
-    if (!s.replay) all.insert(all.end(), s.recorded.begin(), s.recorded.end());
-  H_.resize(dofs_, dofs_);
-  H_.setFromTriplets(all.begin(), all.end());
-  H_.makeCompressed();
-  // Slots for every segment's positions in the new pattern.
-  auto find_slot = [this](Index i, Index j) {
-    const Index* begin = H_.innerIndexPtr() + H_.outerIndexPtr()[j];
-    const Index* end = H_.innerIndexPtr() + H_.outerIndexPtr()[j + 1];
-    const Index* it = std::lower_bound(begin, end, i);
-    return static_cast<Index>(it - H_.innerIndexPtr());
-  };
-  for (Segment& s : segments_) {
-    std::vector<Index> slots;
-    if (s.replay) {
-      slots.reserve(s.cursor);
-      for (size_t k = 0; k < s.cursor; ++k) {
-        const Index p = s.slots[k];
-        slots.push_back(find_slot(slot_row[static_cast<size_t>(p)], slot_col[static_cast<size_t>(p)]));
+    if (!s.replay) r += s.recorded.size();
+  std::vector<Index>& rec_start = scratch_start_;
+  rec_start.assign(static_cast<size_t>(dofs_) + 1, 0);
+  for (const Segment& s : segments_)
+    if (!s.replay)
+      for (const auto& t : s.recorded) ++rec_start[static_cast<size_t>(t.col()) + 1];
+  for (Index c = 0; c < dofs_; ++c) rec_start[static_cast<size_t>(c) + 1] += rec_start[static_cast<size_t>(c)];
+  std::vector<Index>& rec_row = scratch_row_;   // by sorted position
+  std::vector<Index>& rec_call = scratch_col_;  // call number (over the recorded segments, in order)
+  std::vector<double>& rec_val = scratch_val_;
+  rec_row.resize(r);
+  rec_call.resize(r);
+  rec_val.resize(r);
+  {
+    std::vector<Index>& next = scratch_next_;
+    next.assign(rec_start.begin(), rec_start.end() - 1);
+    Index call = 0;
+    for (const Segment& s : segments_)
+      if (!s.replay)
+        for (const auto& t : s.recorded) {
+          const Index q = next[static_cast<size_t>(t.col())]++;
+          rec_row[static_cast<size_t>(q)] = t.row();
+          rec_call[static_cast<size_t>(q)] = call++;
+          rec_val[static_cast<size_t>(q)] = t.value();
+        }
+  }
+  for (Index c = 0; c < dofs_; ++c) {
+    // stable by call already (filled in call order): sort by row, keeping it
+    const Index lo = rec_start[static_cast<size_t>(c)], hi = rec_start[static_cast<size_t>(c) + 1];
+    for (Index q = lo + 1; q < hi; ++q) {
+      const Index rr = rec_row[static_cast<size_t>(q)], cc = rec_call[static_cast<size_t>(q)];
+      const double vv = rec_val[static_cast<size_t>(q)];
+      Index z = q;
+      for (; z > lo && rec_row[static_cast<size_t>(z) - 1] > rr; --z) {
+        rec_row[static_cast<size_t>(z)] = rec_row[static_cast<size_t>(z) - 1];
+        rec_call[static_cast<size_t>(z)] = rec_call[static_cast<size_t>(z) - 1];
+        rec_val[static_cast<size_t>(z)] = rec_val[static_cast<size_t>(z) - 1];
       }
-    } else {
-      slots.reserve(s.recorded.size());
-      for (const auto& t : s.recorded) slots.push_back(find_slot(t.row(), t.col()));
+      rec_row[static_cast<size_t>(z)] = rr;
+      rec_call[static_cast<size_t>(z)] = cc;
+      rec_val[static_cast<size_t>(z)] = vv;
+    }
+  }
+  // merge
+  std::vector<Index>& call_pos = scratch_at_;  // new position of each recorded call
+  call_pos.resize(r);
+  std::vector<Index>& outer = scratch_outer_;
+  std::vector<Index>& inner = scratch_inner_;
+  std::vector<double>& values = scratch_values_;
+  outer.assign(static_cast<size_t>(dofs_) + 1, 0);
+  inner.clear();
+  values.clear();
+  inner.reserve(static_cast<size_t>(old_nnz) + r);
+  values.reserve(static_cast<size_t>(old_nnz) + r);
+  const Index old_cols = static_cast<Index>(old.outerSize());
+  for (Index c = 0; c < dofs_; ++c) {
+    Index p = c < old_cols ? old_outer[c] : 0, p_end = c < old_cols ? old_outer[c + 1] : 0;
+    Index q = rec_start[static_cast<size_t>(c)];
+    const Index q_end = rec_start[static_cast<size_t>(c) + 1];
+    for (;;) {
+      while (p < p_end && old_to_new[static_cast<size_t>(p)] < 0) ++p;  // slot not written: dropped
+      const bool has_old = p < p_end, has_rec = q < q_end;
+      if (!has_old && !has_rec) break;
+      const Index row = !has_rec || (has_old && old_inner[p] <= rec_row[static_cast<size_t>(q)])
+                            ? old_inner[p]
+                            : rec_row[static_cast<size_t>(q)];
+      const Index pos = static_cast<Index>(inner.size());
+      double v = 0.0;
+      bool first = true;
+      if (has_old && old_inner[p] == row) {
+        v = old_value[p];
+        first = false;
+        old_to_new[static_cast<size_t>(p)] = pos;
+        ++p;
+      }
+      for (; q < q_end && rec_row[static_cast<size_t>(q)] == row; ++q) {
+        v = first ? rec_val[static_cast<size_t>(q)] : v + rec_val[static_cast<size_t>(q)];
+        first = false;
+        call_pos[static_cast<size_t>(rec_call[static_cast<size_t>(q)])] = pos;
+      }
+      inner.push_back(row);
+      values.push_back(v);
+    }
+    outer[static_cast<size_t>(c) + 1] = static_cast<Index>(inner.size());
+  }
+  H_.resize(dofs_, dofs_);
+  H_.resizeNonZeros(static_cast<Index>(inner.size()));
+  std::copy(outer.begin(), outer.end(), H_.outerIndexPtr());
+  std::copy(inner.begin(), inner.end(), H_.innerIndexPtr());
+  std::copy(values.begin(), values.end(), H_.valuePtr());
+  // Slots for every segment's adds in the new pattern.
+  Index call = 0;
+  for (Segment& s : segments_) {
+    const size_t w = written(s);
+    if (!s.replay) s.slots.resize(w + s.recorded.size());
+    for (size_t k = 0; k < w; ++k) s.slots[k] = old_to_new[static_cast<size_t>(s.slots[k])];
+    if (!s.replay) {
+      for (size_t k = 0; k < s.recorded.size(); ++k) s.slots[w + k] = call_pos[static_cast<size_t>(call++)];
       s.recorded.clear();
       s.recorded.shrink_to_fit();
+    } else {
+      s.slots.resize(w);
     }
-    s.slots = std::move(slots);
     s.has_slots = true;
     s.replay = false;
   }

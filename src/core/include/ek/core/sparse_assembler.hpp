@@ -85,11 +85,17 @@ class SparseAssembler {
     std::vector<Index> slots;                  // value slot of each add() (replay)
     std::vector<Eigen::Triplet<double, Index>> recorded;  // positions+values (record)
     size_t cursor = 0;
+    size_t written = 0;  // adds written into slots before falling back to recording
     bool replay = false;
     bool has_slots = false;  // slots describe the current pattern (possibly empty)
   };
+  using Matrix = Eigen::SparseMatrix<double, Eigen::ColMajor, Index>;
   void add_slow(Index i, Index j, double v);
-  Eigen::SparseMatrix<double, Eigen::ColMajor, Index> H_;
+  Matrix H_;
+  // end()'s rebuild buffers, kept between rebuilds (no allocation once grown)
+  std::vector<Index> scratch_old_to_new_, scratch_start_, scratch_next_, scratch_row_, scratch_col_, scratch_at_,
+      scratch_outer_, scratch_inner_;
+  std::vector<double> scratch_val_, scratch_values_;
   std::vector<Segment> segments_;
   int current_ = -1;
   int used_segments_ = 0;
