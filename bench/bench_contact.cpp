@@ -27,6 +27,7 @@
 #include <cstdio>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "ek/contact/contact_potential.hpp"
 
@@ -159,6 +160,34 @@ void BM_Hessian(benchmark::State& st) {
   st.SetLabel(scene_name(static_cast<int>(st.range(0))));
 }
 
+// The solver's projected contact Hessian (hybrid Hessian far from
+// equilibrium): every active pair's 12 by 12 barrier Hessian and its
+// projection to positive semidefinite. Argument 1: 0 = the exact Hessian,
+// then the 12 by 12 eigen-decomposition (project_to_psd); 1 = the same in the
+// 9-dimensional complement of translations; 2 = the projection computed in
+// the Hessian's at most 5-dimensional range (edge_edge_barrier_derivatives
+// with project_psd, what add_hessian uses).
+void BM_PairHessianProjection(benchmark::State& st) {
+  const Points x = scene(static_cast<int>(st.range(0)));
+  ContactPotential cp(CurveTopology::single(kN), ContactOptions{});
+  cp.update(x);
+  const PairBarrierParams params{cp.options().dhat, cp.options().parallel_threshold};
+  const int method = static_cast<int>(st.range(1));
+  for (auto _ : st) {
+    for (const ContactPair& c : cp.active_pairs()) {
+      Mat12 h;
+      edge_edge_barrier_derivatives(x.row(c.a0).transpose(), x.row(c.a1).transpose(), x.row(c.b0).transpose(),
+                                    x.row(c.b1).transpose(), params, nullptr, &h, 1.0, method == 2);
+      if (method == 0) project_to_psd(h);
+      if (method == 1) project_translation_invariant_to_psd(h);
+      benchmark::DoNotOptimize(h.data());
+    }
+  }
+  st.counters["pairs"] = static_cast<double>(cp.num_active());
+  static const char* names[] = {" 12x12", " 9x9", " range"};
+  st.SetLabel(std::string(scene_name(static_cast<int>(st.range(0)))) + names[method]);
+}
+
 void BM_MaxStep(benchmark::State& st) {
   const Points x = scene(static_cast<int>(st.range(0)));
   const double size = st.range(1) / 10.0;
@@ -262,6 +291,7 @@ BENCHMARK(BM_UpdateGradientHessian)->ArgsProduct({{0, 1, 2}, {1, 0}})->Unit(benc
 BENCHMARK(BM_BroadPhase)->ArgsProduct({{0, 1, 2}, {1, 0}})->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Gradient)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_Hessian)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_PairHessianProjection)->ArgsProduct({{0, 1}, {0, 1, 2}})->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_MaxStep)->Args({0, 1})->Args({0, 5})->Args({1, 1})->Args({1, 5})->Args({2, 1})->Args({2, 5})->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_NoContact)->Unit(benchmark::kMicrosecond);
 BENCHMARK(BM_NoContactAllPairs)->Unit(benchmark::kMicrosecond);

@@ -291,3 +291,75 @@ TEST(Barrier, ZeroBeyondDhatAndPsdProjection) {
   }
   EXPECT_GT(indefinite, 5);  // the barrier Hessian is often indefinite: the projection matters
 }
+
+// The pair Hessian annihilates translations, so its projection in the
+// 9-dimensional complement equals the full 12 by 12 projection up to
+// round-off, for crossing and nearly parallel (mollified) pairs alike.
+TEST(Barrier, TranslationInvariantProjectionEqualsTheFullOne) {
+  std::mt19937_64 rng(9);
+  Eigen::Matrix<double, 12, 3> T;
+  for (int p = 0; p < 4; ++p) T.block<3, 3>(3 * p, 0).setIdentity();
+  int indefinite = 0;
+  for (int k = 0; k < 200; ++k) {
+    X12 x = join(rand_vec(rng), rand_vec(rng), rand_vec(rng), rand_vec(rng));
+    if (k % 4 == 0) {  // nearly parallel: eb = ea shifted by a small offset, slightly tilted
+      const auto v = split(x);
+      const Vec3 off = 0.1 * rand_vec(rng);
+      x = join(v[0], v[1], v[0] + off, v[1] + off + 1e-3 * rand_vec(rng));
+    }
+    const auto v = split(x);
+    PairBarrierParams q;
+    q.dhat = 2.0 * std::sqrt(edge_edge_closest(v[0], v[1], v[2], v[3]).distance_squared);
+    const Mat12 H = pair_hessian(x, q);
+    ASSERT_TRUE(H.allFinite());
+    EXPECT_LT((H * T).norm(), 1e-9 * H.norm()) << k;
+    if (Eigen::SelfAdjointEigenSolver<Mat12>(H).eigenvalues().minCoeff() < -1e-9 * H.norm()) ++indefinite;
+    Mat12 full = H, reduced = H;
+    project_to_psd(full);
+    project_translation_invariant_to_psd(reduced);
+    EXPECT_LT((reduced - full).norm(), 1e-10 * H.norm()) << k;
+    EXPECT_LT((reduced * T).norm(), 1e-10 * H.norm()) << k;
+    EXPECT_LT((reduced - reduced.transpose()).norm(), 1e-12 * H.norm()) << k;
+  }
+  EXPECT_GT(indefinite, 50);
+}
+
+// The projected pair Hessian (computed in the at most 5-dimensional range of
+// the structured Hessian, or in the translation complement in the nearly
+// parallel band) equals project_to_psd of the exact Hessian up to round-off,
+// for every closest-feature type: random pairs (mostly interior–interior),
+// pairs whose closest points are endpoints (edge b beyond the end of a,
+// sideways), nearly parallel pairs; the gradient and value are unchanged.
+TEST(Barrier, ProjectedHessianEqualsTheProjectionOfTheExactOne) {
+  std::mt19937_64 rng(21);
+  std::array<int, 6> types{};
+  for (int k = 0; k < 400; ++k) {
+    X12 x = join(rand_vec(rng), rand_vec(rng), rand_vec(rng), rand_vec(rng));
+    auto v = split(x);
+    if (k % 4 == 1) {  // b starts beyond a's end: vertex–edge or vertex–vertex closest features
+      const Vec3 a = v[1] - v[0];
+      x = join(v[0], v[1], v[1] + 0.3 * a + 0.2 * rand_vec(rng), v[1] + 1.5 * a + rand_vec(rng));
+    } else if (k % 4 == 2) {  // nearly parallel (mollified band)
+      const Vec3 off = 0.1 * rand_vec(rng);
+      x = join(v[0], v[1], v[0] + off, v[1] + off + 1e-3 * rand_vec(rng));
+    }
+    v = split(x);
+    const EdgeEdgeClosest cl = edge_edge_closest(v[0], v[1], v[2], v[3]);
+    ++types[static_cast<size_t>(cl.type) % types.size()];
+    PairBarrierParams q;
+    q.dhat = 2.0 * std::sqrt(cl.distance_squared);
+    Vec12 g0, g1;
+    Mat12 H0, H1;
+    const double e0 = edge_edge_barrier_derivatives(v[0], v[1], v[2], v[3], q, &g0, &H0, 3.0);
+    const double e1 = edge_edge_barrier_derivatives(v[0], v[1], v[2], v[3], q, &g1, &H1, 3.0, true);
+    EXPECT_EQ(e0, e1);
+    EXPECT_EQ(g0, g1);
+    Mat12 P = H0;
+    project_to_psd(P);
+    EXPECT_LT((H1 - P).norm(), 1e-9 * H0.norm()) << k;
+    EXPECT_GE(Eigen::SelfAdjointEigenSolver<Mat12>(H1).eigenvalues().minCoeff(), -1e-10 * H0.norm()) << k;
+  }
+  int kinds = 0;
+  for (int c : types) kinds += c > 0;
+  EXPECT_GE(kinds, 3);  // interior–interior and at least two endpoint cases
+}

@@ -221,14 +221,69 @@ DistanceStructure distance_structure(const Vec3* x, EdgeEdgeDistanceType type) {
 }
 
 // weight · B(s(x)) with its gradient / Hessian written (not added) from the structure.
+/// The Hessian of structured_barrier() is U S Uᵀ with U = [c ⊗ e₁, c ⊗ e₂,
+/// c ⊗ e₃, G] (12 by 3 + rank) and S = diag(K, −b1 M): its range has at most
+/// 5 dimensions. Its nearest positive semidefinite matrix is Q P₊(R S Rᵀ) Qᵀ
+/// for U = Q R (thin QR): a 5 by 5 eigen-decomposition instead of 12 by 12.
+/// (Columns of U past 3 + rank are zero, and so are their rows of R.)
+void projected_structured_hessian(const DistanceStructure& d, const Mat3& K, double b1, Mat12& hess) {
+  using Mat5 = Eigen::Matrix<double, 5, 5>;
+  Eigen::Matrix<double, 12, 5> U = Eigen::Matrix<double, 12, 5>::Zero();
+  for (int i = 0; i < 4; ++i)
+    for (int k = 0; k < 3; ++k) U(3 * i + k, k) = d.c[static_cast<size_t>(i)];
+  Mat5 S = Mat5::Zero();
+  S.topLeftCorner<3, 3>() = K;
+  if (d.rank >= 1) U.col(3) = d.G.col(0);
+  if (d.rank == 2) U.col(4) = d.G.col(1);
+  if (d.rank == 1) S(3, 3) = -b1 * d.M(0, 0);
+  if (d.rank == 2) S.bottomRightCorner<2, 2>() = -b1 * d.M;
+  // Thin QR by Gram-Schmidt: the columns c ⊗ e_k are orthogonal with norm |c|
+  // (> 0: the weights of a closest-point pair sum to 1 on each edge); the G
+  // columns are orthogonalised against them and each other (twice, for
+  // round-off), a column that vanishes in the process is dropped (zero row
+  // of R).
+  Eigen::Matrix<double, 12, 5> Q = Eigen::Matrix<double, 12, 5>::Zero();
+  Mat5 R = Mat5::Zero();
+  const double cn = U.col(0).norm();
+  for (int k = 0; k < 3; ++k) {
+    Q.col(k) = U.col(k) / cn;
+    R(k, k) = cn;
+  }
+  for (int j = 3; j < 3 + d.rank; ++j) {
+    Vec12 q = U.col(j);
+    const double scale = q.norm();
+    for (int pass = 0; pass < 2; ++pass)
+      for (int k = 0; k < j; ++k) {
+        const double r = Q.col(k).dot(q);
+        R(k, j) += r;
+        q -= r * Q.col(k);
+      }
+    const double qn = q.norm();
+    if (qn > 1e-12 * scale) {
+      Q.col(j) = q / qn;
+      R(j, j) = qn;
+    }
+  }
+  const Mat5 T = R.lazyProduct(S).lazyProduct(R.transpose());
+  const Eigen::SelfAdjointEigenSolver<Mat5> es(0.5 * (T + T.transpose()));
+  const Eigen::Matrix<double, 5, 1> lambda = es.eigenvalues().cwiseMax(0.0);
+  const Eigen::Matrix<double, 12, 5> V = Q.lazyProduct(es.eigenvectors());
+  const Eigen::Matrix<double, 12, 5> VL = V * lambda.asDiagonal();
+  hess = VL.lazyProduct(V.transpose());
+}
+
 double structured_barrier(const Vec3* x, EdgeEdgeDistanceType type, double dhat, double weight, Vec12* grad,
-                          Mat12* hess) {
+                          Mat12* hess, bool project_psd = false) {
   const DistanceStructure d = distance_structure(x, type);
   const SquaredBarrier B = squared_barrier(d.s, dhat, grad || hess);
   const double b1 = weight * B.first, b2 = weight * B.second;
   if (grad)
     for (int i = 0; i < 4; ++i) grad->segment<3>(3 * i) = (2.0 * b1 * d.c[static_cast<size_t>(i)]) * d.w;
-  if (hess) {
+  if (hess && project_psd) {
+    Mat3 K = (4.0 * b2) * d.w * d.w.transpose();
+    K.diagonal().array() += 2.0 * b1;
+    projected_structured_hessian(d, K, b1, *hess);
+  } else if (hess) {
     Mat3 K = (4.0 * b2) * d.w * d.w.transpose();
     K.diagonal().array() += 2.0 * b1;
     for (int i = 0; i < 4; ++i)
@@ -251,6 +306,12 @@ double structured_barrier(const Vec3* x, EdgeEdgeDistanceType type, double dhat,
 
 double edge_edge_barrier_derivatives(const Vec3& ea0, const Vec3& ea1, const Vec3& eb0, const Vec3& eb1,
                                      const PairBarrierParams& params, Vec12* grad, Mat12* hess, double weight) {
+  return edge_edge_barrier_derivatives(ea0, ea1, eb0, eb1, params, grad, hess, weight, false);
+}
+
+double edge_edge_barrier_derivatives(const Vec3& ea0, const Vec3& ea1, const Vec3& eb0, const Vec3& eb1,
+                                     const PairBarrierParams& params, Vec12* grad, Mat12* hess, double weight,
+                                     bool project_psd) {
   const EdgeEdgeClosest closest = edge_edge_closest(ea0, ea1, eb0, eb1);
   const double dhat = params.dhat;
   if (closest.distance_squared >= dhat * dhat || !(closest.distance_squared > 0.0)) {
@@ -262,7 +323,7 @@ double edge_edge_barrier_derivatives(const Vec3& ea0, const Vec3& ea1, const Vec
   const double eps = params.parallel_threshold;
   const double A = (ea1 - ea0).squaredNorm(), B = (eb1 - eb0).squaredNorm();
   const double c = (A > 0.0 && B > 0.0 && eps > 0.0) ? edge_edge_sin2(ea0, ea1, eb0, eb1) : 1.0;
-  if (c >= eps) return structured_barrier(x, closest.type, dhat, weight, grad, hess);  // the common case: e = b(f)
+  if (c >= eps) return structured_barrier(x, closest.type, dhat, weight, grad, hess, project_psd);  // the common case: e = b(f)
   if (grad) grad->setZero();
   if (hess) hess->setZero();
 
@@ -290,6 +351,7 @@ double edge_edge_barrier_derivatives(const Vec3& ea0, const Vec3& ea1, const Vec
       hess->noalias() += (m2 * diff) * gc * gc.transpose();
       *hess += (m1 * diff) * Hc;
       *hess *= weight;
+      if (project_psd) project_translation_invariant_to_psd(*hess);
     }
   }
   return weight * (P + m * diff);
@@ -310,6 +372,42 @@ Mat12 edge_edge_barrier_hessian(const Vec3& ea0, const Vec3& ea1, const Vec3& eb
   Mat12 H;
   edge_edge_barrier_derivatives(ea0, ea1, eb0, eb1, params, nullptr, &H);
   return H;
+}
+
+namespace {
+
+/// Q = C ⊗ I₃: an orthonormal basis (12 by 9) of the complement of the
+/// translations (t, t, t, t), from the Helmert contrasts of four points
+/// (1, −1, 0, 0)/√2, (1, 1, −2, 0)/√6, (1, 1, 1, −3)/√12.
+const Eigen::Matrix<double, 12, 9>& translation_complement() {
+  static const Eigen::Matrix<double, 12, 9> Q = [] {
+    Eigen::Matrix<double, 4, 3> C;
+    C << 1, 1, 1, -1, 1, 1, 0, -2, 1, 0, 0, -3;
+    C.col(0) /= std::sqrt(2.0);
+    C.col(1) /= std::sqrt(6.0);
+    C.col(2) /= std::sqrt(12.0);
+    Eigen::Matrix<double, 12, 9> M = Eigen::Matrix<double, 12, 9>::Zero();
+    for (int p = 0; p < 4; ++p)
+      for (int c = 0; c < 3; ++c)
+        for (int k = 0; k < 3; ++k) M(3 * p + k, 3 * c + k) = C(p, c);
+    return M;
+  }();
+  return Q;
+}
+
+}  // namespace
+
+void project_translation_invariant_to_psd(Mat12& H) {
+  using Mat9 = Eigen::Matrix<double, 9, 9>;
+  const Eigen::Matrix<double, 12, 9>& Q = translation_complement();
+  // (coefficient-based lazy products: the GEMM kernel is slower at these sizes)
+  const Eigen::Matrix<double, 9, 12> QtH = Q.transpose().lazyProduct(H);
+  const Mat9 R = QtH.lazyProduct(Q);
+  Eigen::SelfAdjointEigenSolver<Mat9> es(R);
+  const Eigen::Matrix<double, 9, 1> lambda = es.eigenvalues().cwiseMax(0.0);
+  const Eigen::Matrix<double, 12, 9> V = Q.lazyProduct(es.eigenvectors());
+  const Eigen::Matrix<double, 12, 9> VL = V * lambda.asDiagonal();
+  H = VL.lazyProduct(V.transpose());
 }
 
 void project_to_psd(Mat12& H) {

@@ -222,8 +222,8 @@ void ContactPotential::add_hessian(const Points& x, SparseAssembler& A, bool pro
   Mat12 H;
   for (size_t p = 0; p < active_.size(); ++p) {
     const ContactPair& c = active_[p];
-    edge_edge_barrier_derivatives(row(x, c.a0), row(x, c.a1), row(x, c.b0), row(x, c.b1), params, nullptr, &H, w);
-    if (project_psd) project_to_psd(H);
+    edge_edge_barrier_derivatives(row(x, c.a0), row(x, c.a1), row(x, c.b0), row(x, c.b1), params, nullptr, &H, w,
+                                  project_psd);
     const auto& plan = pair_blocks_[static_cast<size_t>(active_slot_[p])];
     int slot = 0;
     for (int k = 0; k < 4; ++k)

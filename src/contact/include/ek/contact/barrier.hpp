@@ -74,9 +74,27 @@ Mat12 edge_edge_barrier_hessian(const Vec3& ea0, const Vec3& ea1, const Vec3& eb
 /// null; they are set to zero when the pair is farther than d̂).
 double edge_edge_barrier_derivatives(const Vec3& ea0, const Vec3& ea1, const Vec3& eb0, const Vec3& eb1,
                                      const PairBarrierParams& params, Vec12* grad, Mat12* hess, double weight = 1.0);
+/// The same with the Hessian projected to the nearest positive semidefinite
+/// matrix when project_psd (equal to project_to_psd(hess) up to round-off).
+/// Outside the nearly parallel band the Hessian is U S Uᵀ with U of at most 5
+/// columns (the closest points' weights c ⊗ I₃ and the at most 2 directions
+/// in which the closest-point parameters move), so the projection is a 5 by
+/// 5 eigen-decomposition; in the band, project_translation_invariant_to_psd.
+double edge_edge_barrier_derivatives(const Vec3& ea0, const Vec3& ea1, const Vec3& eb0, const Vec3& eb1,
+                                     const PairBarrierParams& params, Vec12* grad, Mat12* hess, double weight,
+                                     bool project_psd);
 
 /// Projects a symmetric 12 by 12 matrix to the nearest positive semidefinite
 /// one (eigenvalues clamped at 0), in place.
 void project_to_psd(Mat12& H);
+
+/// The same for a matrix that annihilates translations (H·(t, t, t, t) = 0
+/// for every t ∈ R³), as every pair Hessian above does (the pair energy
+/// depends on differences of the four points only): H = Q (Qᵀ H Q) Qᵀ with
+/// Q = C ⊗ I₃ (12 by 9), C the 4 by 3 orthonormal Helmert contrasts, so the
+/// eigenvalues are clamped in the 9 by 9 matrix Qᵀ H Q (about a third of the
+/// cost of the 12 by 12 eigen-decomposition). Equal to project_to_psd(H)
+/// up to round-off; the result annihilates translations too.
+void project_translation_invariant_to_psd(Mat12& H);
 
 }  // namespace ek
