@@ -249,6 +249,40 @@ TEST(ContactPotential, SkinReuseKeepsTheActiveSetExact) {
   EXPECT_EQ(active_as_pairs(fresh), edge_pairs_within_brute_force(x, t, 1, o.dhat));
 }
 
+// A line search: after max_step(x, dx), trials x + t·dx (t = 1, 1/2, ...,
+// and off the path by less than skin/2) reuse the pairs of the collision
+// detection's broad phase, and their active sets equal brute force; a point
+// farther off the path runs the broad phase again. The collision detection
+// gives the same step with the skin as without (its own broad phase).
+TEST(ContactPotential, LineSearchTrialsReuseTheCollisionDetectionPairs) {
+  std::mt19937_64 rng(41);
+  const Points x = twisted_pair(200, 7, 16.0, 0.33);
+  const CurveTopology t = CurveTopology::single(200);
+  ContactOptions o;
+  Points dx(200, 3);
+  for (int i = 0; i < 200; ++i) dx.row(i) = rand_vec(rng, 0.3).transpose();
+  ContactPotential cp(t, o);
+  cp.update(x);
+  const size_t runs = cp.num_broad_phase_runs();
+  ContactOptions no_skin = o;
+  no_skin.broad_phase_skin = 0.0;
+  EXPECT_EQ(cp.max_step(x, dx), ContactPotential(t, no_skin).max_step(x, dx));
+  int trials = 0;
+  for (double s = 1.0; s > 1e-3; s *= 0.5, ++trials) {
+    Points y = x + s * dx;
+    for (int i = 0; i < 200; ++i) y.row(i) += rand_vec(rng, 0.02).transpose();  // within skin/2 = 0.05 of the path
+    cp.update(y);
+    ASSERT_EQ(active_as_pairs(cp), edge_pairs_within_brute_force(y, t, 1, o.dhat)) << s;
+  }
+  EXPECT_EQ(cp.num_broad_phase_runs(), runs) << "trials on the path ran a broad phase";
+  EXPECT_GT(trials, 5);
+  Points far = x + 0.5 * dx;
+  far.row(17) += Vec3(0.3, 0, 0).transpose();
+  cp.update(far);
+  EXPECT_EQ(cp.num_broad_phase_runs(), runs + 1);
+  EXPECT_EQ(active_as_pairs(cp), edge_pairs_within_brute_force(far, t, 1, o.dhat));
+}
+
 TEST(ContactPotential, NoContactCostsNothing) {
   const Points C = fixtures::circle(400, 400 / (2 * M_PI));
   ContactPotential cp(CurveTopology::single(400), ContactOptions{});

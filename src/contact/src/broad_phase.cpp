@@ -128,6 +128,18 @@ const std::vector<EdgePair>& EdgeBroadPhase::swept_pairs(const Points& x, const 
   return pairs_;
 }
 
+const std::vector<EdgePair>& EdgeBroadPhase::swept_subset(const std::vector<EdgePair>& candidates, const Points& x,
+                                                          const Points& dx, double inflation) {
+  check_points(x, topology_, "EdgeBroadPhase::swept_subset");
+  if (dx.rows() != x.rows()) require(false, "EdgeBroadPhase::swept_subset: x and dx differ in size");
+  swept_boxes(x, dx, next_, inflation, box_);
+  pairs_.clear();
+  for (const EdgePair& p : candidates)
+    if (boxes_overlap(box_.data() + 6 * static_cast<size_t>(p.a), box_.data() + 6 * static_cast<size_t>(p.b)))
+      pairs_.push_back(p);
+  return pairs_;
+}
+
 void EdgeBroadPhase::find_pairs() {
   const int n = topology_.num_vertices();
   raw_.clear();

@@ -54,11 +54,26 @@ void ContactPotential::update(const Points& x) {
                        std::to_string(x.rows()));
   const double dhat = options_.dhat;
   const double skin = options_.broad_phase_skin;
-  // Reuse the pairs of the last broad phase while no vertex has moved skin/2.
+  // Reuse the pairs of the last broad phase while no vertex has moved skin/2,
+  // or those of the last collision detection's motion while every vertex is
+  // within skin/2 of its path (the line search's trials lie on that path).
+  const double limit = 0.25 * skin * skin * (1.0 - 1e-9);
   bool reuse = verlet_valid_ && skin > 0.0;
-  if (reuse) {
-    const double limit = 0.25 * skin * skin * (1.0 - 1e-9);
+  if (reuse)
     for (int i = 0; i < n_ && reuse; ++i) reuse = (x.row(i) - x_ref_.row(i)).squaredNorm() < limit;
+  const std::vector<EdgePair>* list = &verlet_;
+  if (!reuse && path_valid_ && skin > 0.0) {
+    bool on_path = true;
+    for (int i = 0; i < n_ && on_path; ++i) {
+      const Vec3 p = (x.row(i) - path_x_.row(i)).transpose(), u = path_dx_.row(i).transpose();
+      const double uu = u.squaredNorm();
+      const double s = uu > 0.0 ? std::clamp(p.dot(u) / uu, 0.0, 1.0) : 0.0;
+      on_path = (p - s * u).squaredNorm() < limit;
+    }
+    if (on_path) {
+      list = &path_pairs_;
+      reuse = true;
+    }
   }
   if (!reuse) {
     // pairs within d̂ + hessian_margin now, and (with the skin) until a vertex has moved skin/2
@@ -74,7 +89,7 @@ void ContactPotential::update(const Points& x) {
   double min_d2 = std::numeric_limits<double>::infinity();
   const double r = 0.5 * (dhat + margin);
   const double near2 = (dhat + margin) * (dhat + margin);
-  for (const EdgePair& p : verlet_) {
+  for (const EdgePair& p : *list) {
     const int a1 = broad_.edge_end(p.a), b1 = broad_.edge_end(p.b);
     if (skin > 0.0) {  // the boxes of the current segments, inflated by (d̂ + margin)/2, must overlap
       const double *pa0 = x.data() + 3 * p.a, *pa1 = x.data() + 3 * a1, *pb0 = x.data() + 3 * p.b,
@@ -255,7 +270,20 @@ StepReport ContactPotential::max_step_report(const Points& x, const Points& dx) 
     require(false, "ContactPotential::max_step: x and dx need " + std::to_string(n_) + " rows");
   StepReport rep;
   const double sep = options_.ccd_separation;
-  const auto& pairs = ccd_broad_.swept_pairs(x, dx, 0.5 * sep * options_.dhat);
+  const double skin = options_.broad_phase_skin;
+  // With a skin, the broad phase collects the pairs whose swept boxes come
+  // within d̂ + hessian_margin + skin: update() reuses them at any point
+  // within skin/2 of the path (the line search's trials), and the pairs
+  // tested here are their subset within ccd_separation·d̂ (the same list as a
+  // broad phase of its own).
+  if (skin > 0.0) {
+    path_pairs_ = ccd_broad_.swept_pairs(x, dx, 0.5 * (options_.dhat + options_.hessian_margin + skin));
+    path_x_ = x;
+    path_dx_ = dx;
+    path_valid_ = true;
+  }
+  const auto& pairs = skin > 0.0 ? ccd_broad_.swept_subset(path_pairs_, x, dx, 0.5 * sep * options_.dhat)
+                                 : ccd_broad_.swept_pairs(x, dx, 0.5 * sep * options_.dhat);
   rep.candidates = static_cast<int>(pairs.size());
   CcdParams params;
   params.separation = sep;

@@ -48,6 +48,12 @@ class EdgeBroadPhase {
   const std::vector<EdgePair>& static_pairs(const Points& x, double inflation);
   /// Non-excluded pairs whose swept boxes overlap (x, dx: n by 3).
   const std::vector<EdgePair>& swept_pairs(const Points& x, const Points& dx, double inflation);
+  /// The pairs of `candidates` whose swept boxes overlap, in their order: when
+  /// `candidates` holds every pair of swept_pairs(x, dx, inflation) (for
+  /// example swept_pairs(x, dx, r) for some r >= inflation), the same list as
+  /// swept_pairs(x, dx, inflation), in O(n + candidates) without the grid.
+  const std::vector<EdgePair>& swept_subset(const std::vector<EdgePair>& candidates, const Points& x,
+                                            const Points& dx, double inflation);
 
   const CurveTopology& topology() const { return topology_; }
   int excluded_neighbors() const { return excluded_; }

@@ -41,7 +41,11 @@
 /// while every vertex stays within skin/2 of where it was then (checked in
 /// O(n) by update()), no other pair can come within d̂ (segment points move at
 /// most skin/2 each), so update() re-filters that list instead of rerunning
-/// the broad phase. Newton iterations near convergence move far less.
+/// the broad phase. Newton iterations near convergence move far less. The
+/// same holds along the last max_step(x, dx) query: its broad phase collects
+/// the pairs whose swept boxes come within d̂ + hessian_margin + skin, and update() reuses
+/// them while every vertex is within skin/2 of its path x_i + s·dx_i (so the
+/// line search's trials x + t·dx run no broad phase).
 ///
 /// Hessian pattern: add_hessian() writes into a fixed set of vertex blocks,
 /// identified by hessian_structure(), so that a solver keeps its symbolic
@@ -172,6 +176,11 @@ class ContactPotential {
   Points x_ref_;                   // positions at the last broad phase
   std::vector<EdgePair> verlet_;   // its pairs (boxes within d̂ + skin)
   bool verlet_valid_ = false;
+  // the last max_step()'s motion x + s·dx, s ∈ [0, 1], and the pairs whose
+  // swept boxes come within d̂ + hessian_margin + skin (a second Verlet list)
+  mutable Points path_x_, path_dx_;
+  mutable std::vector<EdgePair> path_pairs_;
+  mutable bool path_valid_ = false;
   double min_distance_ = 0.0;
   std::uint64_t structure_ = 0;
   // Hessian plan, a cache rebuilt by add_hessian() after the pattern changed:
