@@ -41,6 +41,8 @@ SKIPS = [
      "BM_MaxStep/0/5", "BM_MaxStepAllPairs/0/5"),
     ("broad phase reused while no vertex moved skin/2 (knot13)",
      "BM_BroadPhase/0/0", "BM_BroadPhase/0/1"),  # second argument 1: skin 0 (fresh)
+    ("projected pair Hessians in their <= 5-dim range, not 12x12 eigen-decompositions (knot13, 52 pairs)",
+     "BM_PairHessianProjection/0/2", "BM_PairHessianProjection/0/0"),
     ("symbolic factorisation reused while the contact set is unchanged (simplicial, ordering kept)",
      "BM_FactorizeNumericOnly/0", "BM_FactorizeSymbolicAndNumeric/0/1"),
     ("eigen-analysis (stiffness attribute) only when asked: relaxations of the fixed samples (total)",
