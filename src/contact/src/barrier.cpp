@@ -220,7 +220,6 @@ DistanceStructure distance_structure(const Vec3* x, EdgeEdgeDistanceType type) {
   return d;
 }
 
-// weight · B(s(x)) with its gradient / Hessian written (not added) from the structure.
 /// The Hessian of structured_barrier() is U S Uᵀ with U = [c ⊗ e₁, c ⊗ e₂,
 /// c ⊗ e₃, G] (12 by 3 + rank) and S = diag(K, −b1 M): its range has at most
 /// 5 dimensions. Its nearest positive semidefinite matrix is Q P₊(R S Rᵀ) Qᵀ
@@ -272,20 +271,21 @@ void projected_structured_hessian(const DistanceStructure& d, const Mat3& K, dou
   hess = VL.lazyProduct(V.transpose());
 }
 
+// weight · B(s(x)) with its gradient / Hessian written (not added) from the
+// structure; the Hessian projected to positive semidefinite when project_psd.
 double structured_barrier(const Vec3* x, EdgeEdgeDistanceType type, double dhat, double weight, Vec12* grad,
-                          Mat12* hess, bool project_psd = false) {
+                          Mat12* hess, bool project_psd) {
   const DistanceStructure d = distance_structure(x, type);
   const SquaredBarrier B = squared_barrier(d.s, dhat, grad || hess);
   const double b1 = weight * B.first, b2 = weight * B.second;
   if (grad)
     for (int i = 0; i < 4; ++i) grad->segment<3>(3 * i) = (2.0 * b1 * d.c[static_cast<size_t>(i)]) * d.w;
-  if (hess && project_psd) {
-    Mat3 K = (4.0 * b2) * d.w * d.w.transpose();
-    K.diagonal().array() += 2.0 * b1;
+  if (!hess) return weight * B.value;
+  Mat3 K = (4.0 * b2) * d.w * d.w.transpose();
+  K.diagonal().array() += 2.0 * b1;
+  if (project_psd) {
     projected_structured_hessian(d, K, b1, *hess);
-  } else if (hess) {
-    Mat3 K = (4.0 * b2) * d.w * d.w.transpose();
-    K.diagonal().array() += 2.0 * b1;
+  } else {
     for (int i = 0; i < 4; ++i)
       for (int j = 0; j < 4; ++j)
         hess->block<3, 3>(3 * i, 3 * j) = (d.c[static_cast<size_t>(i)] * d.c[static_cast<size_t>(j)]) * K;
@@ -398,7 +398,6 @@ const Eigen::Matrix<double, 12, 9>& translation_complement() {
 }  // namespace
 
 void project_translation_invariant_to_psd(Mat12& H) {
-  using Mat9 = Eigen::Matrix<double, 9, 9>;
   const Eigen::Matrix<double, 12, 9>& Q = translation_complement();
   // (coefficient-based lazy products: the GEMM kernel is slower at these sizes)
   const Eigen::Matrix<double, 9, 12> QtH = Q.transpose().lazyProduct(H);

@@ -190,7 +190,6 @@ void ContactPotential::build_hessian_plan() const {
   }
   block_values_.resize(blocks_.size());
   plan_structure_ = structure_;
-  plan_valid_ = true;
 }
 
 double ContactPotential::energy(const Points& x) const {
@@ -229,7 +228,7 @@ void ContactPotential::add_hessian(const Points& x, SparseAssembler& A) const {
 
 void ContactPotential::add_hessian(const Points& x, SparseAssembler& A, bool project_psd) const {
   if (x.rows() != n_) require(false, "ContactPotential::add_hessian: wrong number of points");
-  if (!plan_valid_ || plan_structure_ != structure_ || pair_blocks_.size() != pattern_.size()) build_hessian_plan();
+  if (plan_structure_ != structure_ || pair_blocks_.size() != pattern_.size()) build_hessian_plan();
   if (blocks_.empty()) return;
   const PairBarrierParams params = pair_params();
   const double w = options_.stiffness;

@@ -95,15 +95,15 @@ bool SparseAssembler::end() {
   size_t r = 0;
   for (const Segment& s : segments_)
     if (!s.replay) r += s.recorded.size();
-  std::vector<Index>& rec_start = scratch_start_;
+  std::vector<Index>& rec_start = scratch_rec_start_;
   rec_start.assign(static_cast<size_t>(dofs_) + 1, 0);
   for (const Segment& s : segments_)
     if (!s.replay)
       for (const auto& t : s.recorded) ++rec_start[static_cast<size_t>(t.col()) + 1];
   for (Index c = 0; c < dofs_; ++c) rec_start[static_cast<size_t>(c) + 1] += rec_start[static_cast<size_t>(c)];
-  std::vector<Index>& rec_row = scratch_row_;   // by sorted position
-  std::vector<Index>& rec_call = scratch_col_;  // call number (over the recorded segments, in order)
-  std::vector<double>& rec_val = scratch_val_;
+  std::vector<Index>& rec_row = scratch_rec_row_;    // by sorted position
+  std::vector<Index>& rec_call = scratch_rec_call_;  // call number (over the recorded segments, in order)
+  std::vector<double>& rec_val = scratch_rec_val_;
   rec_row.resize(r);
   rec_call.resize(r);
   rec_val.resize(r);
@@ -138,7 +138,7 @@ bool SparseAssembler::end() {
     }
   }
   // merge
-  std::vector<Index>& call_pos = scratch_at_;  // new position of each recorded call
+  std::vector<Index>& call_pos = scratch_call_pos_;  // new position of each recorded call
   call_pos.resize(r);
   std::vector<Index>& outer = scratch_outer_;
   std::vector<Index>& inner = scratch_inner_;
@@ -161,17 +161,16 @@ bool SparseAssembler::end() {
                             ? old_inner[p]
                             : rec_row[static_cast<size_t>(q)];
       const Index pos = static_cast<Index>(inner.size());
-      double v = 0.0;
-      bool first = true;
+      double v;  // the first add's value, then the others added in call order
       if (has_old && old_inner[p] == row) {
         v = old_value[p];
-        first = false;
-        old_to_new[static_cast<size_t>(p)] = pos;
-        ++p;
+        old_to_new[static_cast<size_t>(p++)] = pos;
+      } else {
+        v = rec_val[static_cast<size_t>(q)];
+        call_pos[static_cast<size_t>(rec_call[static_cast<size_t>(q++)])] = pos;
       }
       for (; q < q_end && rec_row[static_cast<size_t>(q)] == row; ++q) {
-        v = first ? rec_val[static_cast<size_t>(q)] : v + rec_val[static_cast<size_t>(q)];
-        first = false;
+        v += rec_val[static_cast<size_t>(q)];
         call_pos[static_cast<size_t>(rec_call[static_cast<size_t>(q)])] = pos;
       }
       inner.push_back(row);

@@ -190,8 +190,7 @@ class ContactPotential {
   mutable std::vector<std::pair<int, int>> blocks_;
   mutable std::vector<std::array<int, 10>> pair_blocks_;
   mutable std::vector<Mat3> block_values_;
-  mutable bool plan_valid_ = false;
-  mutable std::uint64_t plan_structure_ = 0;  // structure_ the plan was built for
+  mutable std::uint64_t plan_structure_ = 0;  // structure_ the plan was built for (0: none yet)
   void build_hessian_plan() const;
   PairBarrierParams pair_params() const { return {options_.dhat, options_.parallel_threshold}; }
 };

@@ -93,9 +93,9 @@ class SparseAssembler {
   void add_slow(Index i, Index j, double v);
   Matrix H_;
   // end()'s rebuild buffers, kept between rebuilds (no allocation once grown)
-  std::vector<Index> scratch_old_to_new_, scratch_start_, scratch_next_, scratch_row_, scratch_col_, scratch_at_,
-      scratch_outer_, scratch_inner_;
-  std::vector<double> scratch_val_, scratch_values_;
+  std::vector<Index> scratch_old_to_new_, scratch_rec_start_, scratch_next_, scratch_rec_row_, scratch_rec_call_,
+      scratch_call_pos_, scratch_outer_, scratch_inner_;
+  std::vector<double> scratch_rec_val_, scratch_values_;
   std::vector<Segment> segments_;
   int current_ = -1;
   int used_segments_ = 0;
