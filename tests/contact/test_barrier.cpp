@@ -66,6 +66,13 @@ X12 parallel_pair(const Vec3& u, const Vec3& v, double off, double hgt, double a
   return join(Vec3::Zero(), u, mid - 0.5 * lb * dir, mid + 0.5 * lb * dir);
 }
 
+// A random nearly parallel pair (in the mollified band): b is a = [a0, a1]
+// shifted by up to 0.1 and tilted by about 1e-3.
+X12 random_nearly_parallel(std::mt19937_64& rng, const Vec3& a0, const Vec3& a1) {
+  const Vec3 off = 0.1 * rand_vec(rng);
+  return join(a0, a1, a0 + off, a1 + off + 1e-3 * rand_vec(rng));
+}
+
 }  // namespace
 
 TEST(Barrier, ScalarBarrierAndDerivatives) {
@@ -297,28 +304,27 @@ TEST(Barrier, ZeroBeyondDhatAndPsdProjection) {
 // round-off, for crossing and nearly parallel (mollified) pairs alike.
 TEST(Barrier, TranslationInvariantProjectionEqualsTheFullOne) {
   std::mt19937_64 rng(9);
-  Eigen::Matrix<double, 12, 3> T;
-  for (int p = 0; p < 4; ++p) T.block<3, 3>(3 * p, 0).setIdentity();
+  Eigen::Matrix<double, 12, 3> translations;
+  for (int p = 0; p < 4; ++p) translations.block<3, 3>(3 * p, 0).setIdentity();
   int indefinite = 0;
   for (int k = 0; k < 200; ++k) {
     X12 x = join(rand_vec(rng), rand_vec(rng), rand_vec(rng), rand_vec(rng));
-    if (k % 4 == 0) {  // nearly parallel: eb = ea shifted by a small offset, slightly tilted
+    if (k % 4 == 0) {
       const auto v = split(x);
-      const Vec3 off = 0.1 * rand_vec(rng);
-      x = join(v[0], v[1], v[0] + off, v[1] + off + 1e-3 * rand_vec(rng));
+      x = random_nearly_parallel(rng, v[0], v[1]);
     }
     const auto v = split(x);
     PairBarrierParams q;
     q.dhat = 2.0 * std::sqrt(edge_edge_closest(v[0], v[1], v[2], v[3]).distance_squared);
     const Mat12 H = pair_hessian(x, q);
     ASSERT_TRUE(H.allFinite());
-    EXPECT_LT((H * T).norm(), 1e-9 * H.norm()) << k;
+    EXPECT_LT((H * translations).norm(), 1e-9 * H.norm()) << k;
     if (Eigen::SelfAdjointEigenSolver<Mat12>(H).eigenvalues().minCoeff() < -1e-9 * H.norm()) ++indefinite;
     Mat12 full = H, reduced = H;
     project_to_psd(full);
     project_translation_invariant_to_psd(reduced);
     EXPECT_LT((reduced - full).norm(), 1e-10 * H.norm()) << k;
-    EXPECT_LT((reduced * T).norm(), 1e-10 * H.norm()) << k;
+    EXPECT_LT((reduced * translations).norm(), 1e-10 * H.norm()) << k;
     EXPECT_LT((reduced - reduced.transpose()).norm(), 1e-12 * H.norm()) << k;
   }
   EXPECT_GT(indefinite, 50);
@@ -339,9 +345,8 @@ TEST(Barrier, ProjectedHessianEqualsTheProjectionOfTheExactOne) {
     if (k % 4 == 1) {  // b starts beyond a's end: vertex–edge or vertex–vertex closest features
       const Vec3 a = v[1] - v[0];
       x = join(v[0], v[1], v[1] + 0.3 * a + 0.2 * rand_vec(rng), v[1] + 1.5 * a + rand_vec(rng));
-    } else if (k % 4 == 2) {  // nearly parallel (mollified band)
-      const Vec3 off = 0.1 * rand_vec(rng);
-      x = join(v[0], v[1], v[0] + off, v[1] + off + 1e-3 * rand_vec(rng));
+    } else if (k % 4 == 2) {
+      x = random_nearly_parallel(rng, v[0], v[1]);
     }
     v = split(x);
     const EdgeEdgeClosest cl = edge_edge_closest(v[0], v[1], v[2], v[3]);

@@ -341,11 +341,12 @@ TEST(ContactPotential, HessianFollowsTheLastUpdateAcrossTrials) {
   Points w = x;
   w.row(50) += Vec3(0, 0, 10).transpose();  // other pairs drop out
   ContactPotential cp(CurveTopology::single(200), ContactOptions{});
-  auto fresh = [&](const Points& y) {
+  auto fresh_at = [](const Points& y) {  // a new object updated at y
     ContactPotential other(CurveTopology::single(200), ContactOptions{});
     other.update(y);
-    return dense_hessian(other, y);
+    return other;
   };
+  auto fresh = [&](const Points& y) { return dense_hessian(fresh_at(y), y); };
   cp.update(x);
   EXPECT_EQ(dense_hessian(cp, x), fresh(x));
   // trials with other active sets, then back to x without assembling between
@@ -358,11 +359,7 @@ TEST(ContactPotential, HessianFollowsTheLastUpdateAcrossTrials) {
   ASSERT_NE(cp.num_active(), 0u);
   EXPECT_EQ(dense_hessian(cp, w), fresh(w));
   // the three active sets differ, so each assembly above needed its own plan
-  auto active_at = [](const Points& y) {
-    ContactPotential other(CurveTopology::single(200), ContactOptions{});
-    other.update(y);
-    return active_as_pairs(other);
-  };
+  auto active_at = [&](const Points& y) { return active_as_pairs(fresh_at(y)); };
   EXPECT_NE(active_at(x), active_at(z));
   EXPECT_NE(active_at(x), active_at(w));
   EXPECT_NE(active_at(z), active_at(w));
