@@ -46,6 +46,22 @@ void expect_bad_input(const std::string& args, const std::string& needle) {
 
 }  // namespace
 
+// `--continuation` reaches every relaxation of a data set and is recorded in
+// it with the iteration cap; the relaxations still end converged-stable.
+TEST(DatasetCli, ContinuationIsRecorded) {
+  const std::string dir = temp_dir("ds_cont");
+  const std::string file = dir + "/c.h5";
+  const auto r = run("explore 3_1 --samples 2 --continuation 1e-3 --max-iter 4000" + kSmall + "-o " + file);
+  ASSERT_EQ(r.status, 0) << r.err;
+  ek::DatasetReader d(file);
+  EXPECT_EQ(d.metadata().contact_continuation, std::vector<double>{1e-3});
+  EXPECT_EQ(d.metadata().max_iterations, 4000);
+  const ek::KnotEntry k = d.read("3_1");
+  ASSERT_EQ(k.runs.size(), 2u);
+  for (const auto& run : k.runs) EXPECT_EQ(run.status, "converged-stable") << run.message;
+  fs::remove_all(dir);
+}
+
 // Issue 8: a small end-to-end run (3_1, 4_1, 5_1, 5_2; 20 samples each; 2 jobs)
 // gives a valid data set that the query and cluster commands read.
 TEST(DatasetCli, EndToEndQueryClusterExport) {
@@ -175,6 +191,13 @@ TEST(DatasetCli, BadInputOverwritesNothing) {
   expect_bad_input("explore 4_1 --samples 2 --burn-in 3" + kSmall + "-o " + file,
                    "different sampling (fixed:2 vs fixed:2,burn-in=3)");
   expect_bad_input("dataset --names 3_1 --shard 3/2" + kSmall + "-o " + file, "1 <= I <= N");
+  expect_bad_input("explore 4_1 --samples 2 --continuation 1e-3" + kSmall + "-o " + file,
+                   "contact_continuation off vs 0.001");
+  expect_bad_input("explore 4_1 --samples 2 --max-iter 300" + kSmall + "-o " + file, "max_iterations 5000 vs 300");
+  expect_bad_input("explore 4_1 --samples 2 --continuation 1" + kSmall + "-o " + file,
+                   "contact_continuation factors must be in (0, 1)");
+  expect_bad_input("explore 4_1 --samples 2 --continuation 1e-3," + kSmall + "-o " + file,
+                   "--continuation: '' is not a number");
   EXPECT_EQ(slurp(file), before);
   // a second explore of the same knot is a no-op; another knot extends the file
   const auto again = run("explore 3_1 --samples 2" + kSmall + "-o " + file + " --json");

@@ -1,9 +1,11 @@
 #include <gtest/gtest.h>
+#include <hdf5.h>
 
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 
 #include "ek/core/errors.hpp"
 #include "ek/dataset/dataset_file.hpp"
@@ -119,4 +121,73 @@ TEST(DatasetFile, MetadataDifference) {
   b = a;
   b.vertices = 200;
   EXPECT_EQ(a.difference(b), "vertices 400 vs 200");
+  // the iteration cap counts only when both files record it
+  b = a;
+  a.max_iterations = 5000;
+  EXPECT_EQ(a.difference(b), "");
+  b.max_iterations = 2000;
+  EXPECT_EQ(a.difference(b), "max_iterations 5000 vs 2000");
+  // the continuation always counts (it changes which equilibria a walk reaches)
+  b = a;
+  b.contact_continuation = {1e-3};
+  EXPECT_EQ(a.difference(b), "contact_continuation off vs 0.001");
+  a.contact_continuation = {1e-3, 0.1};
+  EXPECT_EQ(a.difference(b), "contact_continuation 0.001,0.10000000000000001 vs 0.001");
+}
+
+// The solver's iteration cap and continuation factors are file attributes;
+// files written before they existed read as "not recorded" and "off", and a
+// malformed continuation attribute is an input error.
+TEST(DatasetFile, SolverCapAndContinuationAttributes) {
+  const std::string path = ::testing::TempDir() + "solver_meta.h5";
+  DatasetMetadata meta;
+  meta.sampling = "fixed:1";
+  meta.max_iterations = 3000;
+  meta.contact_continuation = {1e-3, 0.1 / 3.0};
+  {
+    DatasetWriter w(path, meta);
+    w.add(sample_entry("3_1", 1, 40));
+    w.commit();
+  }
+  {
+    DatasetReader r(path);
+    EXPECT_EQ(r.metadata().max_iterations, 3000);
+    EXPECT_EQ(r.metadata().contact_continuation, meta.contact_continuation);  // bit for bit (17 digits)
+    EXPECT_EQ(r.metadata().difference(meta), "");
+  }
+  auto edit_attributes = [&](const std::function<void(hid_t)>& f) {
+    const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+    ASSERT_GE(file, 0);
+    f(file);
+    H5Fclose(file);
+  };
+  edit_attributes([](hid_t f) {
+    ASSERT_GE(H5Adelete(f, "max_iterations"), 0);
+    ASSERT_GE(H5Adelete(f, "contact_continuation"), 0);
+  });
+  {
+    DatasetReader r(path);
+    EXPECT_EQ(r.metadata().max_iterations, -1);
+    EXPECT_TRUE(r.metadata().contact_continuation.empty());
+  }
+  edit_attributes([](hid_t f) {
+    const char* bad = "0.5,,2";  // a variable-length string, as the writer stores text
+    const hid_t type = H5Tcopy(H5T_C_S1);
+    H5Tset_size(type, H5T_VARIABLE);
+    const hid_t space = H5Screate(H5S_SCALAR);
+    const hid_t a = H5Acreate2(f, "contact_continuation", type, space, H5P_DEFAULT, H5P_DEFAULT);
+    ASSERT_GE(a, 0);
+    H5Awrite(a, type, &bad);
+    H5Aclose(a);
+    H5Sclose(space);
+    H5Tclose(type);
+  });
+  try {
+    DatasetReader r(path);
+    ADD_FAILURE() << "a malformed contact_continuation attribute was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("malformed contact_continuation attribute '0.5,,2'"), std::string::npos)
+        << e.what();
+  }
+  std::remove(path.c_str());
 }

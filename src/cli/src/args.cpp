@@ -1,5 +1,6 @@
 #include "args.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <iostream>
@@ -18,6 +19,17 @@ double parse_number(const std::string& text, const std::string& what) {
   if (text.empty() || ec != std::errc() || p != e) throw InputError(what + ": '" + text + "' is not a number");
   if (!std::isfinite(v)) throw InputError(what + ": '" + text + "' is not a finite number");
   return v;
+}
+
+std::vector<double> parse_number_list(const std::string& text, const std::string& what) {
+  std::vector<double> out;
+  for (size_t pos = 0; !text.empty();) {
+    const size_t end = std::min(text.find(',', pos), text.size());
+    out.push_back(parse_number(text.substr(pos, end - pos), what));
+    if (end == text.size()) break;
+    pos = end + 1;
+  }
+  return out;
 }
 
 long long parse_integer(const std::string& text, const std::string& what) {

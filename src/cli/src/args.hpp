@@ -58,5 +58,8 @@ class ArgParser {
 /// Parses a number, throwing InputError("<what>: '<text>' is not a number").
 double parse_number(const std::string& text, const std::string& what);
 long long parse_integer(const std::string& text, const std::string& what);
+/// Parses comma-separated numbers ("1e-3" or "1e-2,1e-1"); an empty item is
+/// not a number. The empty text gives an empty list.
+std::vector<double> parse_number_list(const std::string& text, const std::string& what);
 
 }  // namespace ek::cli

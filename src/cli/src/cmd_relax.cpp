@@ -91,14 +91,8 @@ int cmd_relax(int argc, char** argv) {
   } else if (method != "default") {
     throw InputError("--method must be default, exact or paper, not '" + method + "'");
   }
-  // comma-separated factors; an empty one ("0.1,") is not a number. Their
-  // range (0, 1) is checked by RelaxOptions::validate() in relax().
-  for (size_t pos = 0; !continuation.empty();) {
-    const size_t end = std::min(continuation.find(',', pos), continuation.size());
-    opt.contact_continuation.push_back(parse_number(continuation.substr(pos, end - pos), "--continuation"));
-    if (end == continuation.size()) break;
-    pos = end + 1;
-  }
+  // the factors' range (0, 1) is checked by RelaxOptions::validate() in relax()
+  opt.contact_continuation = parse_number_list(continuation, "--continuation");
   if (!out.empty()) check_writable(out);
   if (release && !planar) throw InputError("--release needs --planar H");
   opt.link = link;

@@ -13,6 +13,7 @@ struct ExploreArgs {
   std::optional<int> samples;
   bool no_stiffness = false;
   bool quiet = false;
+  std::string continuation;
 };
 
 inline void add_explore_options(ArgParser& args, ExploreArgs& a) {
@@ -31,6 +32,9 @@ inline void add_explore_options(ArgParser& args, ExploreArgs& a) {
   args.option("--tol", &a.options.relax.tolerance, "gradient tolerance (default 1e-8 for the default material)");
   args.option("--max-iter", &a.options.relax.max_iterations,
               "Newton iterations per relaxation (default " + std::to_string(RelaxOptions{}.max_iterations) + ")");
+  args.option("--continuation", &a.continuation,
+              "contact-stiffness continuation F[,F...]: each relaxation first solves with the stiffness times each "
+              "factor in (0, 1), then at the stiffness (default: off; recorded in the data set)");
   args.flag("--no-stiffness", &a.no_stiffness, "skip the stiffness attribute (an eigenvalue per equilibrium)");
   args.flag("--quiet", &a.quiet, "no progress output");
 }
@@ -42,6 +46,7 @@ inline void finish_explore_options(ExploreArgs& a) {
   a.options.adaptive = a.adaptive;
   if (a.samples) a.options.samples = *a.samples;
   a.options.stiffness = !a.no_stiffness;
+  a.options.relax.contact_continuation = parse_number_list(a.continuation, "--continuation");
   if (a.adaptive && a.options.max_samples < a.options.initial_samples) a.options.initial_samples = a.options.max_samples;
   a.options.validate();
 }

@@ -6,6 +6,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <sstream>
 
 #include "ek/core/atomic_file.hpp"
@@ -25,6 +26,28 @@ std::string fmt(double x) {
   return s.str();
 }
 
+/// "1e-3,0.1" (17 significant digits, so the text reads back exactly); "" when off.
+std::string continuation_text(const std::vector<double>& factors) {
+  std::ostringstream s;
+  s.precision(17);
+  for (size_t k = 0; k < factors.size(); ++k) s << (k ? "," : "") << factors[k];
+  return s.str();
+}
+
+std::vector<double> parse_continuation(const std::string& text, const std::string& path) {
+  std::vector<double> out;
+  std::istringstream s(text);
+  std::string item;
+  while (std::getline(s, item, ',')) {
+    char* end = nullptr;
+    const double f = std::strtod(item.c_str(), &end);
+    if (item.empty() || end != item.c_str() + item.size() || !(f > 0.0 && f < 1.0))
+      throw InputError("'" + path + "' has a malformed contact_continuation attribute '" + text + "'");
+    out.push_back(f);
+  }
+  return out;
+}
+
 void write_meta(hid_t f, const DatasetMetadata& m) {
   h5::set_attr(f, "format", std::string(kFormat));
   h5::set_attr(f, "format_version", kFormatVersion);
@@ -42,6 +65,8 @@ void write_meta(hid_t f, const DatasetMetadata& m) {
   h5::set_attr(f, "twist_model", m.twist_model);
   h5::set_attr(f, "sampling", m.sampling);
   h5::set_attr(f, "seed", static_cast<std::int64_t>(m.seed));
+  h5::set_attr(f, "max_iterations", static_cast<std::int64_t>(m.max_iterations));
+  h5::set_attr(f, "contact_continuation", continuation_text(m.contact_continuation));
 }
 
 DatasetMetadata read_meta(hid_t f, const std::string& path) {
@@ -66,6 +91,10 @@ DatasetMetadata read_meta(hid_t f, const std::string& path) {
   m.twist_model = h5::get_attr_string(f, "twist_model");
   m.sampling = h5::get_attr_string(f, "sampling");
   m.seed = static_cast<std::uint64_t>(h5::get_attr_int(f, "seed"));
+  // optional (absent in files written before they were recorded)
+  if (h5::has_attr(f, "max_iterations")) m.max_iterations = static_cast<int>(h5::get_attr_int(f, "max_iterations"));
+  if (h5::has_attr(f, "contact_continuation"))
+    m.contact_continuation = parse_continuation(h5::get_attr_string(f, "contact_continuation"), path);
   return m;
 }
 
@@ -82,6 +111,12 @@ std::string DatasetMetadata::difference(const DatasetMetadata& o) const {
                  num("contact_stiffness", contact_stiffness, o.contact_stiffness), num("dhat", dhat, o.dhat)})
     if (!d.empty()) return d;
   if (twist_model != o.twist_model) return "twist_model " + twist_model + " vs " + o.twist_model;
+  if (max_iterations >= 0 && o.max_iterations >= 0 && max_iterations != o.max_iterations)
+    return "max_iterations " + std::to_string(max_iterations) + " vs " + std::to_string(o.max_iterations);
+  if (contact_continuation != o.contact_continuation) {
+    auto text = [](const std::vector<double>& f) { return f.empty() ? std::string("off") : continuation_text(f); };
+    return "contact_continuation " + text(contact_continuation) + " vs " + text(o.contact_continuation);
+  }
   return "";
 }
 

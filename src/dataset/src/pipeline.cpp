@@ -31,6 +31,11 @@ std::string options_text(const std::string& knot, const ExploreOptions& o) {
     << " grow=" << o.sampling.grow_fugacity << " shrink=" << o.sampling.shrink_fugacity
     << " growth=" << o.sampling.growth_factor << " decorrelation=" << o.sampling.decorrelation_moves
     << " seed=" << o.seed << " stiffness=" << o.stiffness;
+  // only when on, so that the keys of journals written before it existed stay valid
+  if (!o.relax.contact_continuation.empty()) {
+    s << " continuation=";
+    for (size_t k = 0; k < o.relax.contact_continuation.size(); ++k) s << (k ? "," : "") << o.relax.contact_continuation[k];
+  }
   return s.str();
 }
 
@@ -108,6 +113,8 @@ DatasetMetadata dataset_metadata(const ExploreOptions& o) {
       o.relax.contact_stiffness > 0.0 ? o.relax.contact_stiffness : 1e3 * (mat.young / 2000.0) * rs * rs * rs;
   m.dhat = o.relax.dhat > 0.0 ? o.relax.dhat : 2.0 * mat.radius;
   m.twist_model = o.relax.full_model ? "free-theta" : "twist-free";
+  m.max_iterations = o.relax.max_iterations;
+  m.contact_continuation = o.relax.contact_continuation;
   m.sampling = o.sampling_description();
   m.seed = o.seed;
   m.project_version = project_version();

@@ -127,6 +127,8 @@ DatasetRunSummary run_dataset(const DatasetRunOptions& o) {
                        " vs " + std::to_string(meta.seed) + ")");
     existing = old.knot_names();
     meta.created = old.metadata().created;
+    // knots of a file that did not record the cap were run at an unknown one
+    if (old.metadata().max_iterations < 0) meta.max_iterations = -1;
   }
   std::vector<const KnotRecord*> mine;
   for (size_t k = 0; k < o.knots.size(); ++k)
@@ -222,6 +224,7 @@ void merge_datasets(const std::vector<std::string>& inputs, const std::string& o
     if (m.sampling != meta.sampling || m.seed != meta.seed)
       throw InputError("merge: '" + inputs[k] + "' has different sampling or seed from '" + inputs[0] + "'");
     if (m.created < meta.created) meta.created = m.created;
+    if (m.max_iterations < 0) meta.max_iterations = -1;  // not recorded by one input: unknown for the merge
     for (const auto& name : readers[k]->knot_names()) {
       const auto key = std::make_pair(table_index(name), name);
       if (order.count(key))

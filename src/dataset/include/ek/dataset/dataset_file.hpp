@@ -41,6 +41,12 @@ struct DatasetMetadata {
   double contact_stiffness = 1e3;    ///< [1] ω
   double dhat = 0.4;                 ///< [length] barrier distance
   std::string twist_model = "twist-free";
+  /// [1] Newton iterations per relaxation phase (RelaxOptions::max_iterations);
+  /// -1: not recorded (files written before this attribute existed).
+  int max_iterations = -1;
+  /// [1] contact-stiffness continuation factors (RelaxOptions::contact_continuation),
+  /// in order; empty: off (also for files written before this attribute existed).
+  std::vector<double> contact_continuation;
   std::string sampling;              ///< e.g. "fixed:50" or "adaptive:50+10,max=500,S>0.1"
   std::uint64_t seed = 1;
   std::string project_version;
@@ -49,6 +55,8 @@ struct DatasetMetadata {
 
   /// Empty when the physical and numerical parameters equal o's; otherwise a
   /// one-line description of the first difference ("radius 0.2 vs 0.1").
+  /// The iteration cap is compared only when both record it; the
+  /// continuation always (it changes which equilibria a walk reaches).
   std::string difference(const DatasetMetadata& o) const;
 };
 
