@@ -117,7 +117,7 @@ struct Summary {
   std::map<std::string, int> statuses;
   double median_seconds = 0.0, mean_seconds = 0.0, max_seconds = 0.0, median_iterations = 0.0;
   double assembly = 0.0, factorization = 0.0, collision = 0.0, line_search = 0.0, eigen = 0.0, other = 0.0;
-  double symbolic = 0.0, numeric = 0.0;  // per run (mean)
+  double symbolic = 0.0, numeric = 0.0, failed = 0.0;  // per run (mean); failed: shift-ladder rungs
 };
 
 Summary summarize(const std::string& name, const std::vector<const Run*>& runs) {
@@ -141,6 +141,7 @@ Summary summarize(const std::string& name, const std::vector<const Run*>& runs) 
     s.eigen += rep.time_eigen;
     s.symbolic += rep.symbolic_factorizations;
     s.numeric += rep.numeric_factorizations;
+    s.failed += rep.failed_factorizations;
   }
   s.median_seconds = median(secs);
   s.median_iterations = median(its);
@@ -148,6 +149,7 @@ Summary summarize(const std::string& name, const std::vector<const Run*>& runs) 
     s.mean_seconds = total / s.runs;
     s.symbolic /= s.runs;
     s.numeric /= s.runs;
+    s.failed /= s.runs;
   }
   // time split as fractions of the summed wall time
   if (total > 0.0) {
@@ -300,26 +302,26 @@ int main(int argc, char** argv) {
     std::ostringstream csv;
     csv << "knot,method,runs,converged_stable,statuses,median_seconds,mean_seconds,max_seconds,median_iterations,"
            "symbolic_per_run,numeric_per_run,frac_assembly,frac_factorization,frac_collision,frac_line_search,"
-           "frac_eigen,frac_other\n";
+           "frac_eigen,frac_other,failed_per_run\n";
     std::printf("solver macro benchmark (n = 400, %d samples per knot, method %s)\n", count, method.c_str());
-    std::printf("%-9s %5s %7s %9s %9s %9s %7s %7s %7s | %6s %6s %6s %6s %6s %6s | %s\n", "knot", "runs", "stable",
-                "median s", "mean s", "max s", "med it", "sym/run", "num/run", "asm", "fact", "ccd", "ls", "eig",
-                "other", "statuses");
+    std::printf("%-9s %5s %7s %9s %9s %9s %7s %7s %7s %8s | %6s %6s %6s %6s %6s %6s | %s\n", "knot", "runs",
+                "stable", "median s", "mean s", "max s", "med it", "sym/run", "num/run", "fail/run", "asm", "fact", "ccd",
+                "ls", "eig", "other", "statuses");
     for (const Summary& s : table) {
-      std::printf("%-9s %5d %7d %9.3f %9.3f %9.3f %7.0f %7.0f %7.0f | %5.1f%% %5.1f%% %5.1f%% %5.1f%% %5.1f%% %5.1f%% | %s\n",
+      std::printf("%-9s %5d %7d %9.3f %9.3f %9.3f %7.0f %7.0f %7.0f %8.0f | %5.1f%% %5.1f%% %5.1f%% %5.1f%% %5.1f%% %5.1f%% | %s\n",
                   s.name.c_str(), s.runs, s.stable, s.median_seconds, s.mean_seconds, s.max_seconds,
-                  s.median_iterations, s.symbolic, s.numeric, 100 * s.assembly, 100 * s.factorization,
+                  s.median_iterations, s.symbolic, s.numeric, s.failed, 100 * s.assembly, 100 * s.factorization,
                   100 * s.collision, 100 * s.line_search, 100 * s.eigen, 100 * s.other, statuses_text(s).c_str());
       csv << s.name << "," << method << "," << s.runs << "," << s.stable << "," << statuses_text(s) << ","
           << fmt(s.median_seconds, "%.6g") << "," << fmt(s.mean_seconds, "%.6g") << "," << fmt(s.max_seconds, "%.6g")
           << "," << s.median_iterations << "," << fmt(s.symbolic, "%.6g") << "," << fmt(s.numeric, "%.6g") << ","
           << fmt(s.assembly, "%.4f") << "," << fmt(s.factorization, "%.4f") << "," << fmt(s.collision, "%.4f")
           << "," << fmt(s.line_search, "%.4f") << "," << fmt(s.eigen, "%.4f") << "," << fmt(s.other, "%.4f")
-          << "\n";
+          << "," << fmt(s.failed, "%.6g") << "\n";
     }
     std::ostringstream runs_csv;
     runs_csv << "knot,sample,method,status,seconds,iterations,energy,gradient_norm,contacts,min_distance,writhe,"
-                "symbolic,numeric,line_search_trials,saddle_escapes,marginal\n";
+                "symbolic,numeric,line_search_trials,saddle_escapes,marginal,failed\n";
     for (const Run& r : runs) {
       const ek::NewtonReport rep = r.result.all_phases();
       runs_csv << r.knot << "," << r.sample << "," << method << "," << r.result.status() << ","
@@ -327,7 +329,8 @@ int main(int argc, char** argv) {
                << fmt(rep.gradient_norm, "%.3e") << "," << r.result.contacts << ","
                << fmt(r.result.min_distance, "%.6g") << "," << fmt(r.result.writhe, "%.6g") << ","
                << rep.symbolic_factorizations << "," << rep.numeric_factorizations << "," << rep.line_search_trials
-               << "," << rep.saddle_escapes << "," << (rep.marginal ? 1 : 0) << "\n";
+               << "," << rep.saddle_escapes << "," << (rep.marginal ? 1 : 0) << "," << rep.failed_factorizations
+               << "\n";
     }
     write_atomic(out + "/solver_macro.csv", csv.str());
     write_atomic(out + "/solver_macro_runs.csv", runs_csv.str());

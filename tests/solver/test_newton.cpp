@@ -119,6 +119,22 @@ TEST(Newton, ReportsMaxIterations) {
   EXPECT_EQ(to_string(r.status), "max-iterations");
 }
 
+// The report counts the failed rungs of the shift ladder: at x = (0.1, 0)
+// without coupling, H = diag(12·0.01 − 4, 4) = diag(−3.88, 4), and with
+// ε·λ_min = 1e-4 the shifts 1e-4, 1e-3, 1e-2, 0.1 and 1 fail; 10 succeeds.
+TEST(Newton, CountsFailedFactorisations) {
+  DoubleWell f(1, 0.0);
+  f.set_dofs((VecX(2) << 0.1, 0.0).finished());
+  NewtonOptions o;
+  o.lambda_min = 1.0;
+  o.max_iterations = 0;  // one factorisation search, no step
+  const NewtonReport r = minimize(f, o);
+  EXPECT_EQ(r.status, SolverStatus::MaxIterations);
+  EXPECT_EQ(r.failed_factorizations, 5);
+  EXPECT_EQ(r.numeric_factorizations, 6);
+  EXPECT_NEAR(r.final_shift, 10.0, 1e-9);
+}
+
 TEST(Newton, RejectsBadOptionsAndInfeasibleStart) {
   DoubleWell f(2);
   NewtonOptions o;

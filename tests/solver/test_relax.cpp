@@ -294,6 +294,8 @@ TEST(Relax, ContinuationEndsAtTheStiffModel) {
   EXPECT_EQ(all.iterations, c.report.iterations + c.continuation_reports[0].iterations);
   EXPECT_EQ(all.numeric_factorizations,
             c.report.numeric_factorizations + c.continuation_reports[0].numeric_factorizations);
+  EXPECT_EQ(all.failed_factorizations,
+            c.report.failed_factorizations + c.continuation_reports[0].failed_factorizations);
   EXPECT_NEAR(all.seconds, c.report.seconds + c.continuation_reports[0].seconds, 1e-12);
   EXPECT_EQ(all.status, c.report.status);
   EXPECT_EQ(all.gradient_norm, c.report.gradient_norm);

@@ -36,6 +36,7 @@ Json report_json(const NewtonReport& r) {
   j["marginal"] = r.marginal;
   j["symbolic_factorizations"] = r.symbolic_factorizations;
   j["numeric_factorizations"] = r.numeric_factorizations;
+  j["failed_factorizations"] = r.failed_factorizations;
   j["line_search_trials"] = r.line_search_trials;
   j["time_assembly"] = number(r.time_assembly);
   j["time_factorization"] = number(r.time_factorization);

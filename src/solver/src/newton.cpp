@@ -99,6 +99,7 @@ NewtonReport minimize(Objective& f, const NewtonOptions& o) {
         report.final_shift = shift;
         return shift;
       }
+      ++report.failed_factorizations;
       shift *= o.shift_growth;
     }
     report.time_factorization += since(t0);

@@ -130,6 +130,7 @@ NewtonReport RelaxResult::all_phases() const {
     sum.symbolic_factorizations += r.symbolic_factorizations;
     sum.orderings += r.orderings;
     sum.numeric_factorizations += r.numeric_factorizations;
+    sum.failed_factorizations += r.failed_factorizations;
     sum.line_search_trials += r.line_search_trials;
     sum.saddle_escapes += r.saddle_escapes;
     sum.exact_iterations += r.exact_iterations;

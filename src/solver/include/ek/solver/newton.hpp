@@ -150,6 +150,9 @@ struct NewtonReport {
   int symbolic_factorizations = 0;
   int orderings = 0;                    ///< fill-reducing orderings (AMD), <= symbolic_factorizations
   int numeric_factorizations = 0;
+  /// Numeric factorisations that failed (H + shift·I not positive definite:
+  /// a rung of the shift ladder; part of numeric_factorizations).
+  int failed_factorizations = 0;
   int line_search_trials = 0;
   double time_assembly = 0.0;           ///< [s] gradient and Hessian
   double time_factorization = 0.0;      ///< [s] symbolic + numeric + solves
