@@ -26,14 +26,6 @@ std::string fmt(double x) {
   return s.str();
 }
 
-/// "1e-3,0.1" (17 significant digits, so the text reads back exactly); "" when off.
-std::string continuation_text(const std::vector<double>& factors) {
-  std::ostringstream s;
-  s.precision(17);
-  for (size_t k = 0; k < factors.size(); ++k) s << (k ? "," : "") << factors[k];
-  return s.str();
-}
-
 std::vector<double> parse_continuation(const std::string& text, const std::string& path) {
   std::vector<double> out;
   std::istringstream s(text);
@@ -99,6 +91,13 @@ DatasetMetadata read_meta(hid_t f, const std::string& path) {
 }
 
 }  // namespace
+
+std::string continuation_text(const std::vector<double>& factors) {
+  std::ostringstream s;
+  s.precision(17);
+  for (size_t k = 0; k < factors.size(); ++k) s << (k ? "," : "") << factors[k];
+  return s.str();
+}
 
 std::string DatasetMetadata::difference(const DatasetMetadata& o) const {
   auto num = [](const char* name, double a, double b) -> std::string {

@@ -32,10 +32,7 @@ std::string options_text(const std::string& knot, const ExploreOptions& o) {
     << " growth=" << o.sampling.growth_factor << " decorrelation=" << o.sampling.decorrelation_moves
     << " seed=" << o.seed << " stiffness=" << o.stiffness;
   // only when on, so that the keys of journals written before it existed stay valid
-  if (!o.relax.contact_continuation.empty()) {
-    s << " continuation=";
-    for (size_t k = 0; k < o.relax.contact_continuation.size(); ++k) s << (k ? "," : "") << o.relax.contact_continuation[k];
-  }
+  if (!meta.contact_continuation.empty()) s << " continuation=" << continuation_text(meta.contact_continuation);
   return s.str();
 }
 

@@ -60,6 +60,11 @@ struct DatasetMetadata {
   std::string difference(const DatasetMetadata& o) const;
 };
 
+/// The continuation factors as stored in the file's contact_continuation
+/// attribute: "0.001,0.10000000000000001" (17 significant digits, so the text
+/// reads back bit for bit); "" when off.
+std::string continuation_text(const std::vector<double>& factors);
+
 /// One relaxation run (successful or not).
 struct RunRecord {
   int sample = 0;                ///< index of the lattice sample within the knot
