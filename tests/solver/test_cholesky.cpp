@@ -55,6 +55,28 @@ TEST(Cholesky, DetectsIndefiniteAndAppliesShift) {
   EXPECT_EQ(chol.symbolic_count(), 2);
 }
 
+// A failed attempt leaves the last good factor in place: recall() makes it
+// current again (same shift, no analysis since), in both modes; a failed
+// attempt alone leaves no factor to solve with, and a new pattern forgets it.
+TEST(Cholesky, FailedAttemptKeepsTheLastGoodFactor) {
+  for (CholeskyMode mode : {CholeskyMode::Simplicial, CholeskyMode::Supernodal}) {
+    CholeskySolver chol(mode);
+    const auto H = tridiagonal(30, 1.0);  // eigenvalues 1 - 2 cos(k π/31): the lowest ≈ -0.99
+    ASSERT_TRUE(chol.factorize(H, 1.5, 3));
+    EXPECT_FALSE(chol.factorize(H, 0.5, 3));
+    EXPECT_THROW(chol.solve(VecX::Ones(30)), std::invalid_argument);
+    EXPECT_FALSE(chol.recall(0.5));  // not the good factor's shift
+    ASSERT_TRUE(chol.recall(1.5));
+    const VecX b = VecX::LinSpaced(30, -1, 2);
+    const VecX x = chol.solve(b);
+    const Eigen::MatrixXd full = Eigen::MatrixXd(H).selfadjointView<Eigen::Upper>();
+    EXPECT_LT(((full + 1.5 * Eigen::MatrixXd::Identity(30, 30)) * x - b).norm(), 1e-12 * b.norm());
+    EXPECT_EQ(chol.numeric_count(), 2);  // recall factorises nothing
+    EXPECT_FALSE(chol.factorize(tridiagonal(30, 0.5), 0.0, 4));  // a new analysis
+    EXPECT_FALSE(chol.recall(1.5));
+  }
+}
+
 TEST(Cholesky, RejectsNonFinite) {
   CholeskySolver chol;
   auto H = tridiagonal(5, 3.0);

@@ -3,6 +3,7 @@
 #include <cholmod.h>
 
 #include <chrono>
+#include <utility>
 #include <cmath>
 #include <string>
 
@@ -12,7 +13,8 @@ namespace ek {
 
 struct CholeskySolver::Cholmod {
   cholmod_common c;
-  cholmod_factor* L = nullptr;
+  cholmod_factor* L = nullptr;      // the current factor (the last successful factorisation)
+  cholmod_factor* spare = nullptr;  // same symbolic analysis; each factorisation is computed here first
   cholmod_dense* X = nullptr;  // solve2 workspaces, reused
   cholmod_dense* Y = nullptr;
   cholmod_dense* E = nullptr;
@@ -26,6 +28,7 @@ struct CholeskySolver::Cholmod {
   }
   ~Cholmod() {
     if (L) cholmod_free_factor(&L, &c);
+    if (spare) cholmod_free_factor(&spare, &c);
     if (X) cholmod_free_dense(&X, &c);
     if (Y) cholmod_free_dense(&Y, &c);
     if (E) cholmod_free_dense(&E, &c);
@@ -137,6 +140,8 @@ void CholeskySolver::analyse(const Matrix& upper) {
   build_permuted_pattern(upper);
   cholmod_common& c = cm_->c;
   if (cm_->L) cholmod_free_factor(&cm_->L, &c);
+  if (cm_->spare) cholmod_free_factor(&cm_->spare, &c);
+  good_ = false;
   cholmod_sparse B = view(n, Bp_.data(), Bi_.data(), nullptr,
                           options_.mode == CholeskyMode::Supernodal ? -1 : 1);
   c.nmethods = 1;
@@ -145,6 +150,8 @@ void CholeskySolver::analyse(const Matrix& upper) {
   c.supernodal = options_.mode == CholeskyMode::Supernodal ? CHOLMOD_SUPERNODAL : CHOLMOD_SIMPLICIAL;
   cm_->L = cholmod_analyze(&B, &c);
   require(cm_->L != nullptr, "CholeskySolver: CHOLMOD analysis failed (status " + std::to_string(c.status) + ")");
+  cm_->spare = cholmod_copy_factor(cm_->L, &c);
+  require(cm_->spare != nullptr, "CholeskySolver: CHOLMOD could not copy the symbolic factor (out of memory)");
   ++symbolic_count_;
   const long long fill = factor_nonzeros();
   reorder_ = false;
@@ -180,10 +187,21 @@ bool CholeskySolver::factorize(const Matrix& upper, double shift, std::uint64_t 
   cholmod_common& c = cm_->c;
   cholmod_sparse B = view(n, Bp_.data(), Bi_.data(), Bx_.data(), options_.mode == CholeskyMode::Supernodal ? -1 : 1);
   double beta[2] = {shift, 0.0};
-  cholmod_factorize_p(&B, beta, nullptr, 0, cm_->L, &c);
+  cholmod_factorize_p(&B, beta, nullptr, 0, cm_->spare, &c);
   ++numeric_count_;
-  ok_ = c.status == CHOLMOD_OK && cm_->L->minor == cm_->L->n;
+  ok_ = c.status == CHOLMOD_OK && cm_->spare->minor == cm_->spare->n;
+  if (ok_) {
+    std::swap(cm_->L, cm_->spare);  // the failed attempts in between never touch the good factor
+    good_ = true;
+    good_shift_ = shift;
+  }
   return ok_;
+}
+
+bool CholeskySolver::recall(double shift) {
+  if (!good_ || shift != good_shift_) return false;
+  ok_ = true;
+  return true;
 }
 
 VecX CholeskySolver::solve(const VecX& b) const {

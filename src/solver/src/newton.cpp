@@ -86,25 +86,53 @@ NewtonReport minimize(Objective& f, const NewtonOptions& o) {
   // used (infinity if every attempt failed); `base_ok` tells whether the
   // factorisation at exactly ε·λ_min succeeded (H + ε λ_min I positive
   // definite), which is decided here only when that shift was tried.
+  //
+  // The result is the lowest rung first·growth^j (j >= 0) that factorises.
+  // With NewtonOptions::shift_hint the search does not climb from `first`
+  // but probes the rung below `hint` (the shift the same kind of Hessian
+  // needed last time) first: if it fails, every lower rung fails too (H +
+  // s·I is positive definite for every s above its smallest eigenvalue's
+  // negative) and the climb goes on from there; if it succeeds, the search
+  // steps down while the rung below factorises and, when one fails, takes
+  // the last good rung's factor back (CholeskySolver::recall). The rung
+  // found is the same.
   double start_shift = base_shift, last_shift = base_shift;
   int backoff = 0, wait = 0;
-  auto factorize = [&](double first, bool& base_ok) {
+  auto rung = [&](double first, int j) {
+    double s = first;  // by repeated multiplication, as the climb makes it
+    for (int k = 0; k < j; ++k) s *= o.shift_growth;
+    return s;
+  };
+  auto factorize = [&](double first, bool& base_ok, double hint) {
     const auto t0 = Clock::now();
-    double shift = first;
-    base_ok = false;
-    for (int attempt = 0; attempt < o.max_shift_attempts; ++attempt) {
-      if (cholesky.factorize(assembler.matrix(), shift, assembler.pattern_version())) {
-        base_ok = first <= base_shift && attempt == 0;
-        report.time_factorization += since(t0);
-        report.final_shift = shift;
-        return shift;
-      }
-      ++report.failed_factorizations;
-      shift *= o.shift_growth;
+    auto attempt = [&](int j) {
+      const bool ok = cholesky.factorize(assembler.matrix(), rung(first, j), assembler.pattern_version());
+      if (!ok) ++report.failed_factorizations;
+      return ok;
+    };
+    const int attempts = o.max_shift_attempts;
+    int probe = 0;  // the hint's rung minus one
+    if (o.shift_hint && hint > first) {
+      int j = 0;
+      for (double s = first; s < hint * (1.0 - 1e-12) && j < attempts; s *= o.shift_growth) ++j;
+      probe = std::min(j, attempts) - 1;
+    }
+    int found = -1;
+    if (probe > 0 && attempt(probe)) {
+      found = probe;
+      while (found > 0 && attempt(found - 1)) --found;
+      if (found > 0 && !cholesky.recall(rung(first, found))) found = -1;  // (cannot fail: same analysis, same H)
+    } else {
+      for (int j = probe > 0 ? probe + 1 : 0; j < attempts && found < 0; ++j)
+        if (attempt(j)) found = j;
     }
     report.time_factorization += since(t0);
-    return std::numeric_limits<double>::infinity();
+    base_ok = found == 0 && first <= base_shift;
+    if (found < 0) return std::numeric_limits<double>::infinity();
+    report.final_shift = rung(first, found);
+    return report.final_shift;
   };
+  double hint[2] = {0.0, 0.0};  // last shift of the projected [0] and the exact [1] Hessian
 
   // Hybrid mode: after exact_after_full_steps consecutive full projected steps the iterate is
   // in a region where the quadratic model is good, and the exact Hessian
@@ -132,7 +160,8 @@ NewtonReport minimize(Objective& f, const NewtonOptions& o) {
       report.time_assembly += since(t0);
       bool psd = false;
       const double first = converged || !o.shift_warm_start ? base_shift : start_shift;
-      shift = factorize(first, psd);
+      shift = factorize(first, psd, hint[exact ? 1 : 0]);
+      if (std::isfinite(shift)) hint[exact ? 1 : 0] = shift;
       if (!std::isfinite(shift)) return finish(SolverStatus::Stalled);
       // Warm start: next time try one factor lower, unless that level has
       // just failed; then wait 1, 2, 4, ... factorisations before retrying

@@ -23,7 +23,10 @@
 ///    (Supernodal) of B + shift·I (cholmod_factorize_p with beta = shift),
 ///    stopping at the first non-positive pivot (quick_return_if_not_posdef),
 ///    so a matrix that is not positive definite is detected at the cost of
-///    the columns before the failing pivot.
+///    the columns before the failing pivot. Each factorisation is computed
+///    into a second factor object (same symbolic analysis) that replaces the
+///    current one only on success: a failed attempt leaves the last good
+///    factor in place, and recall() makes it current again.
 #include <Eigen/SparseCore>
 #include <cstdint>
 #include <memory>
@@ -64,7 +67,16 @@ class CholeskySolver {
   /// Throws std::invalid_argument for non-finite entries or a non-square matrix.
   bool factorize(const Matrix& upper, double shift, std::uint64_t pattern_version);
 
-  /// Solves (H + shift·I) x = b with the last successful factorisation.
+  /// Makes the last successful factorisation current again (so that solve()
+  /// uses it) when it was of H + shift·I with this shift and no symbolic
+  /// analysis happened since; the caller guarantees that H's values are those
+  /// it factorised. Returns false, changing nothing, otherwise. Costs no
+  /// factorisation: a search over shifts that stepped below a good one and
+  /// failed gets the good one back.
+  bool recall(double shift);
+
+  /// Solves (H + shift·I) x = b with the current factorisation (the last
+  /// factorize() must have succeeded, or recall()).
   VecX solve(const VecX& b) const;
 
   /// Statistics.
@@ -91,7 +103,9 @@ class CholeskySolver {
   std::vector<int> slot_;     // slot_[k] = index in Bx_ of H's k-th stored value
   long long ordered_fill_ = 0;  // nnz(L) right after the last AMD ordering
   bool reorder_ = true;
-  bool ok_ = false;
+  bool ok_ = false;             // the current factor may be used (the last factorize() or recall() succeeded)
+  bool good_ = false;           // the current factor holds a successful factorisation of the current analysis
+  double good_shift_ = 0.0;     // its shift
   int symbolic_count_ = 0;
   int ordering_count_ = 0;
   int numeric_count_ = 0;

@@ -89,7 +89,12 @@ struct NewtonOptions {
   /// factor, far fewer failed factorisations). The search always starts at
   /// ε·λ_min when the gradient is below tolerance (stability test).
   bool shift_warm_start = true;
-  int max_shift_attempts = 40;      ///< [1]
+  int max_shift_attempts = 40;      ///< [1] rungs of the shift ladder above the first one tried
+  /// Search the shift ladder from the rung below the shift that the same
+  /// kind of Hessian (projected or exact) needed last time, stepping up or
+  /// down from there, instead of climbing from the first rung: the same
+  /// shift (the lowest rung that factorises), fewer failed factorisations.
+  bool shift_hint = true;
   HessianMode hessian = HessianMode::Hybrid;  ///< see HessianMode
   double hybrid_switch = 1e3;       ///< [1] Hybrid: exact Hessian once ||g|| <= hybrid_switch · gradient_tolerance
   /// [1] Hybrid: exact Hessian after this many consecutive full (t = 1)
