@@ -3,9 +3,9 @@
 #include <cholmod.h>
 
 #include <chrono>
-#include <utility>
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "ek/core/errors.hpp"
 

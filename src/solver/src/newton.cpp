@@ -115,7 +115,7 @@ NewtonReport minimize(Objective& f, const NewtonOptions& o) {
     if (o.shift_hint && hint > first) {
       int j = 0;
       for (double s = first; s < hint * (1.0 - 1e-12) && j < attempts; s *= o.shift_growth) ++j;
-      probe = std::min(j, attempts) - 1;
+      probe = j - 1;
     }
     int found = -1;
     if (probe > 0 && attempt(probe)) {
