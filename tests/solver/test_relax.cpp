@@ -322,8 +322,9 @@ TEST(Relax, ContinuationEndsAtTheStiffModel) {
 // NewtonOptions::shift_hint searches the shift ladder from the rung below the
 // last shift of the same kind of Hessian instead of climbing from the first
 // rung; it finds the same (lowest) rung, so the iterates are the same bit for
-// bit, with fewer failed factorisations. Checked on the trefoil braid coil
-// (its projected and exact Hessians need shifts up to ~1e7 ε λ_min).
+// bit, with fewer failed factorisations. Checked on the trefoil braid coil,
+// whose Hessians need raised shifts (measured: 29 iterations, 27 failed rungs
+// without the hint, 18 with it).
 TEST(Relax, ShiftHintFindsTheSameShiftsWithFewerFactorisations) {
   EmbeddingOptions eo;
   eo.vertices = 200;
