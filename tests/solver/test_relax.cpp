@@ -342,3 +342,32 @@ TEST(Relax, ShiftHintFindsTheSameShiftsWithFewerFactorisations) {
               a.report.iterations, a.report.numeric_factorizations, a.report.failed_factorizations,
               b.report.numeric_factorizations, b.report.failed_factorizations);
 }
+
+// resolve_model() is the one place where the model's defaults are computed:
+// the paper's values at the paper's material (ω = 1e3, d̂ = 2r, tolerance
+// 1e-8 for unit edges), ω ∝ E r³, tolerance ∝ EI / ℓ², and given values kept.
+TEST(Relax, ResolveModelComputesThePapersDefaultsAndTheirScaling) {
+  RelaxOptions o;
+  const ResolvedModel paper = resolve_model(o, 1.0);
+  EXPECT_DOUBLE_EQ(paper.contact_stiffness, 1e3);
+  EXPECT_DOUBLE_EQ(paper.dhat, 0.4);
+  EXPECT_NEAR(paper.tolerance, 1e-8, 1e-22);
+  EXPECT_EQ(paper.model, TwistModel::TwistFree);
+  o.material.radius = 0.4;
+  o.material.young = 4000.0;
+  const ResolvedModel scaled = resolve_model(o, 2.0);
+  EXPECT_NEAR(scaled.contact_stiffness, 1e3 * 2.0 * 8.0, 1e-9);         // (E/2000)(r/0.2)³
+  EXPECT_NEAR(scaled.tolerance, 1e-8 * 2.0 * 16.0 / 4.0, 1e-20);         // (EI/EI_ref)/ℓ²
+  EXPECT_DOUBLE_EQ(scaled.dhat, 0.8);
+  EXPECT_DOUBLE_EQ(default_contact_stiffness(o.material), scaled.contact_stiffness);
+  o.contact_stiffness = 7.0;
+  o.dhat = 0.3;
+  o.tolerance = 1e-6;
+  o.link = 2.0;
+  const ResolvedModel given = resolve_model(o, 1.0);
+  EXPECT_EQ(given.contact_stiffness, 7.0);
+  EXPECT_EQ(given.dhat, 0.3);
+  EXPECT_EQ(given.tolerance, 1e-6);
+  EXPECT_EQ(given.model, TwistModel::FixedLink);
+  EXPECT_THROW(resolve_model(o, 0.0), std::exception);
+}

@@ -21,6 +21,7 @@
 #include "ek/core/errors.hpp"
 #include "ek/geometry/curve_io.hpp"
 #include "ek/rod/elastic_rod.hpp"
+#include "ek/solver/relax.hpp"
 #include "output.hpp"
 
 namespace ek::cli {
@@ -75,10 +76,9 @@ int cmd_energy(int argc, char** argv) {
   };
   // Self-contact (paper eq. 1): ω E_contact with d̂ = 2r and ω scaled with E and r
   // exactly as `knots relax` does (1e3 at the paper's material).
-  const double rs = material.radius / 0.2;
   ContactOptions co;
   co.dhat = 2.0 * material.radius;
-  co.stiffness = 1e3 * (material.young / 2000.0) * rs * rs * rs;
+  co.stiffness = default_contact_stiffness(material);
   ContactPotential contact(CurveTopology::single(n), co);
   contact.update(P);
   terms.push_back({"energy_contact", "contact", contact.energy(P)});

@@ -103,12 +103,10 @@ DatasetMetadata dataset_metadata(const ExploreOptions& o) {
   m.radius = mat.radius;
   m.vertices = o.sampling.vertices;
   m.edge_length = 1.0;
-  const double EI = mat.bending_stiffness();
-  m.tolerance = o.relax.tolerance > 0.0 ? o.relax.tolerance : 1e-8 * EI / kReferenceBendingStiffness;
-  const double rs = mat.radius / 0.2;
-  m.contact_stiffness =
-      o.relax.contact_stiffness > 0.0 ? o.relax.contact_stiffness : 1e3 * (mat.young / 2000.0) * rs * rs * rs;
-  m.dhat = o.relax.dhat > 0.0 ? o.relax.dhat : 2.0 * mat.radius;
+  const ResolvedModel resolved = resolve_model(o.relax, m.edge_length);
+  m.tolerance = resolved.tolerance;
+  m.contact_stiffness = resolved.contact_stiffness;
+  m.dhat = resolved.dhat;
   m.twist_model = o.relax.full_model ? "free-theta" : "twist-free";
   m.max_iterations = o.relax.max_iterations;
   m.contact_continuation = o.relax.contact_continuation;

@@ -122,6 +122,25 @@ void RelaxOptions::validate() const {
   }
 }
 
+double default_contact_stiffness(const RodMaterial& m) {
+  const double r_scale = m.radius / 0.2;
+  return kDefaultContactStiffness * (m.young / 2000.0) * r_scale * r_scale * r_scale;
+}
+
+ResolvedModel resolve_model(const RelaxOptions& options, double mean_edge_length) {
+  require(mean_edge_length > 0.0 && std::isfinite(mean_edge_length), "resolve_model: edge length must be positive");
+  const RodMaterial& mat = options.material;
+  ResolvedModel r;
+  r.dhat = options.dhat > 0.0 ? options.dhat : 2.0 * mat.radius;
+  r.contact_stiffness = options.contact_stiffness > 0.0 ? options.contact_stiffness : default_contact_stiffness(mat);
+  r.tolerance = options.tolerance > 0.0
+                    ? options.tolerance
+                    : 1e-8 * (mat.bending_stiffness() / kReferenceBendingStiffness) / (mean_edge_length * mean_edge_length);
+  if (options.link) r.model = TwistModel::FixedLink;
+  else if (options.full_model) r.model = TwistModel::FreeTheta;
+  return r;
+}
+
 NewtonReport RelaxResult::all_phases() const {
   NewtonReport sum = report;
   auto add = [&sum](const NewtonReport& r) {
@@ -187,17 +206,12 @@ RelaxResult relax(const Points& curve, const RelaxOptions& options) {
   }
   const RodMaterial& mat = options.material;
   const double edge = rest.mean();
-  const double EI = mat.bending_stiffness();
-  const double r_scale = mat.radius / 0.2;
+  const ResolvedModel resolved = resolve_model(options, edge);
   ContactOptions co;
-  co.dhat = options.dhat > 0.0 ? options.dhat : 2.0 * mat.radius;
-  co.stiffness =
-      options.contact_stiffness > 0.0 ? options.contact_stiffness : 1e3 * (mat.young / 2000.0) * r_scale * r_scale * r_scale;
-  const double tol = options.tolerance > 0.0 ? options.tolerance : 1e-8 * (EI / kReferenceBendingStiffness) / (edge * edge);
-
-  TwistModel model = TwistModel::TwistFree;
-  if (options.link) model = TwistModel::FixedLink;
-  else if (options.full_model) model = TwistModel::FreeTheta;
+  co.dhat = resolved.dhat;
+  co.stiffness = resolved.contact_stiffness;
+  const double tol = resolved.tolerance;
+  const TwistModel model = resolved.model;
   result.model = model_name(model);
 
   ElasticRod rod(curve, rest, mat, model);

@@ -77,6 +77,23 @@ struct RelaxOptions {
   void validate() const;
 };
 
+/// The model's parameters with every "<= 0 means default" field of
+/// RelaxOptions resolved. The only place where these defaults are computed:
+/// relax(), the data-set metadata and `knots energy` call it.
+struct ResolvedModel {
+  double dhat = 0.0;               ///< [length] d̂ = 2r unless given
+  double contact_stiffness = 0.0;  ///< [energy/length²] ω = 1e3 · (E/2000) · (r/0.2)³ unless given
+  /// [energy/length] 1e-8 · (EI/EI_ref) / ℓ² unless given (ℓ: mean rest edge length)
+  double tolerance = 0.0;
+  TwistModel model = TwistModel::TwistFree;  ///< FixedLink with a link, FreeTheta with full_model
+};
+/// Resolves the defaults of `options` for rest edges of mean length
+/// `mean_edge_length` [length] (> 0).
+ResolvedModel resolve_model(const RelaxOptions& options, double mean_edge_length);
+/// ω that keeps the paper's relative penetration for another material:
+/// 1e3 · (E/2000) · (r/0.2)³ (contact_potential.hpp, "Stiffness scaling").
+double default_contact_stiffness(const RodMaterial& material);
+
 /// Energy breakdown at a configuration.
 struct EnergyParts {
   double total = 0.0, stretch = 0.0, bend = 0.0, twist = 0.0, contact = 0.0, slab = 0.0;
