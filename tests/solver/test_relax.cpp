@@ -1,5 +1,6 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <vector>
@@ -142,8 +143,20 @@ TEST(Relax, PlanaritySlabFlattensAndReleaseKeepsLink) {
   s.half_thickness = 1.2 * P.col(2).cwiseAbs().maxCoeff() + 0.4;
   o.slab = s;
   o.release_slab = true;
+  o.newton.record_trace = true;
   const RelaxResult r = relax(P, o);
   ASSERT_TRUE(r.slab_report.has_value());
+  // the two phases share one solver and one trace
+  ASSERT_EQ(r.phases, (std::vector<std::string>{"slab", "final"}));
+  const auto in_phase = [&](int p) {
+    return std::count_if(r.trace.begin(), r.trace.end(), [p](const IterationRecord& i) { return i.phase == p; });
+  };
+  EXPECT_EQ(in_phase(0), r.slab_report->iterations + 1);
+  EXPECT_EQ(in_phase(1), r.report.iterations + 1);
+  EXPECT_EQ(r.trace.front().parts.back().name, "slab");  // the slab is a term of the first phase only
+  EXPECT_EQ(r.trace.back().parts.size(), 4u);
+  EXPECT_EQ(r.report.symbolic_factorizations + r.slab_report->symbolic_factorizations,
+            r.all_phases().symbolic_factorizations);
   EXPECT_TRUE(r.alexander_preserved);
   EXPECT_NEAR(r.link, *o.link, 1e-6);  // issue 10: the link stays Lk_B throughout (1e-6)
   EXPECT_EQ(to_string(r.slab_report->status), "converged-stable");

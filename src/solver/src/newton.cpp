@@ -1,5 +1,6 @@
 #include "ek/solver/newton.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -7,6 +8,7 @@
 
 #include "ek/core/errors.hpp"
 #include "ek/solver/eigen_analysis.hpp"
+#include "shift_search.hpp"
 
 namespace ek {
 namespace {
@@ -56,282 +58,332 @@ void NewtonOptions::validate() const {
   require(max_expansion >= 1.0 && expansion_ratio > 0.0, "NewtonOptions: max_expansion must be >= 1, expansion_ratio > 0");
 }
 
-NewtonReport minimize(Objective& f, const NewtonOptions& o) {
-  o.validate();
-  const auto t_start = Clock::now();
-  NewtonReport report;
+std::string to_string(IterationKind kind) {
+  switch (kind) {
+    case IterationKind::Step: return "step";
+    case IterationKind::SaddleEscape: return "saddle-escape";
+    case IterationKind::Final: return "final";
+  }
+  return "unknown";
+}
+
+namespace {
+
+/// Hybrid mode (HessianMode::Hybrid): after exact_after_full_steps
+/// consecutive full projected steps the iterate is in a region where the
+/// quadratic model is good, and the exact Hessian takes over (projected
+/// directions converge only linearly when the projection removed real
+/// curvature, e.g. of compressed edges); it hands back to the projected
+/// Hessian when an exact step must backtrack or the exact Hessian needed a
+/// shift above 10⁶·ε·λ_min (indefinite).
+class HessianSchedule {
+ public:
+  explicit HessianSchedule(const NewtonOptions& o) : o_(o) {}
+  bool exact(double gnorm) const {
+    return o_.hessian == HessianMode::Exact || exact_region_ || gnorm <= o_.hybrid_switch * o_.gradient_tolerance;
+  }
+  void after_step(bool exact, double t, double shift) {
+    if (o_.hessian != HessianMode::Hybrid) return;
+    if (!exact) {
+      full_projected_steps_ = t >= 1.0 ? full_projected_steps_ + 1 : 0;
+      exact_region_ = o_.exact_after_full_steps > 0 && full_projected_steps_ >= o_.exact_after_full_steps;
+    } else if (exact_region_ && (t < 1.0 || shift > 1e6 * o_.shift_epsilon * o_.lambda_min)) {
+      exact_region_ = false;  // backtracked, or the exact Hessian is indefinite (a large shift: tiny steps)
+      full_projected_steps_ = 0;
+    }
+  }
+
+ private:
+  const NewtonOptions& o_;
+  bool exact_region_ = false;
+  int full_projected_steps_ = 0;
+};
+
+}  // namespace
+
+/// Shared by successive minimisations.
+struct NewtonSolver::State {
+  explicit State(const NewtonOptions& o) : cholesky(o.cholesky) {}
   SparseAssembler assembler;
-  CholeskySolver cholesky(o.cholesky);
-  const double base_shift = o.shift_epsilon * o.lambda_min;
+  CholeskySolver cholesky;
+  ShiftSearch shifts;
+};
 
-  VecX x = f.dofs();
-  double E = f.energy();
-  require(std::isfinite(E), "minimize: the starting point is infeasible (energy is not finite)");
+/// One minimisation.
+struct NewtonSolver::Run {
+  Run(const NewtonOptions& o, const CholeskySolver& c)
+      : schedule(o),
+        symbolic0(c.symbolic_count()),
+        numeric0(c.numeric_count()),
+        orderings0(c.ordering_count()),
+        symbolic_seconds0(c.symbolic_seconds()) {}
+  Clock::time_point t_start = Clock::now();
+  NewtonReport report;
+  HessianSchedule schedule;
+  VecX x;
+  double E = 0.0;
+  double gnorm = 0.0;
+  double shift = 0.0;
+  bool exact = false;
+  IterationRecord rec;
+  Clock::time_point t_iteration;
+  int symbolic0, numeric0, orderings0;
+  double symbolic_seconds0;
+};
 
-  auto finish = [&](SolverStatus status) {
-    report.status = status;
-    report.energy = E;
-    report.symbolic_factorizations = cholesky.symbolic_count();
-    report.numeric_factorizations = cholesky.numeric_count();
-    report.orderings = cholesky.ordering_count();
-    report.time_symbolic = cholesky.symbolic_seconds();
-    report.seconds = since(t_start);
-    return report;
-  };
+NewtonSolver::NewtonSolver(const NewtonOptions& options) : options_(options), state_(std::make_unique<State>(options)) {
+  options_.validate();
+}
 
-  // Factorises H + shift·I, escalating the shift ×growth until it succeeds.
-  // The paper starts every attempt at ε·λ_min; starting one step below the
-  // last successful shift gives the same shift up to a factor `growth` and
-  // saves most failed factorisations far from equilibrium. Returns the shift
-  // used (infinity if every attempt failed); `base_ok` tells whether the
-  // factorisation at exactly ε·λ_min succeeded (H + ε λ_min I positive
-  // definite), which is decided here only when that shift was tried.
-  //
-  // The result is the lowest rung first·growth^j (j >= 0) that factorises.
-  // With NewtonOptions::shift_hint the search does not climb from `first`
-  // but probes the rung below `hint` (the shift the same kind of Hessian
-  // needed last time) first: if it fails, every lower rung fails too (H +
-  // s·I is positive definite for every s above its smallest eigenvalue's
-  // negative) and the climb goes on from there; if it succeeds, the search
-  // steps down while the rung below factorises and, when one fails, takes
-  // the last good rung's factor back (CholeskySolver::recall). The rung
-  // found is the same.
-  double start_shift = base_shift, last_shift = base_shift;
-  int backoff = 0, wait = 0;
-  auto rung = [&](double first, int j) {
-    double s = first;  // by repeated multiplication, as the climb makes it
-    for (int k = 0; k < j; ++k) s *= o.shift_growth;
-    return s;
-  };
-  auto factorize = [&](double first, bool& base_ok, double hint) {
-    const auto t0 = Clock::now();
-    auto attempt = [&](int j) {
-      const bool ok = cholesky.factorize(assembler.matrix(), rung(first, j), assembler.pattern_version());
-      if (!ok) ++report.failed_factorizations;
-      return ok;
-    };
-    const int attempts = o.max_shift_attempts;
-    int probe = 0;  // the hint's rung minus one
-    if (o.shift_hint && hint > first) {
-      int j = 0;
-      for (double s = first; s < hint * (1.0 - 1e-12) && j < attempts; s *= o.shift_growth) ++j;
-      probe = j - 1;
+NewtonSolver::~NewtonSolver() = default;
+
+void NewtonSolver::set_options(const NewtonOptions& options) {
+  options.validate();
+  options_ = options;
+}
+
+NewtonReport NewtonSolver::finish(Run& run, SolverStatus status) {
+  const CholeskySolver& c = state_->cholesky;
+  NewtonReport& r = run.report;
+  r.status = status;
+  r.energy = run.E;
+  r.symbolic_factorizations = c.symbolic_count() - run.symbolic0;
+  r.numeric_factorizations = c.numeric_count() - run.numeric0;
+  r.orderings = c.ordering_count() - run.orderings0;
+  r.time_symbolic = c.symbolic_seconds() - run.symbolic_seconds0;
+  r.seconds = since(run.t_start);
+  ++phase_;
+  return r;
+}
+
+void NewtonSolver::record(Run& run) {
+  IterationRecord& rec = run.rec;
+  rec.seconds = since(run.t_iteration);
+  if (options_.verbose)
+    std::fprintf(stderr, "newton %d:%5d %-13s E %.12g  |g| %.3e  shift %.2e  ccd %.3e  t %.3e  %s%s\n", rec.phase,
+                 rec.iteration, to_string(rec.kind).c_str(), rec.energy, rec.gradient_norm, rec.shift, rec.max_step,
+                 rec.step, rec.exact ? "exact" : "proj", rec.pattern_changed ? " pattern" : "");
+  if (options_.record_trace) trace_.push_back(rec);
+}
+
+// Assembles the Hessian of the kind asked for and factorises it with the
+// shift search. False when no rung factorises.
+bool NewtonSolver::factorize(Objective& f, Run& run, bool exact, bool converged) {
+  auto t0 = Clock::now();
+  f.assemble_hessian(state_->assembler, exact);
+  run.report.time_assembly += since(t0);
+  t0 = Clock::now();
+  const SparseAssembler& A = state_->assembler;
+  const ShiftSearch::Result s = state_->shifts.factorize(state_->cholesky, A.matrix(), A.pattern_version(), exact,
+                                                         converged);
+  run.report.time_factorization += since(t0);
+  run.report.failed_factorizations += s.failed;
+  run.report.hessian_psd = s.base_ok;
+  run.rec.factorizations = s.attempts;
+  run.rec.failed_factorizations = s.failed;
+  run.rec.pattern_changed = A.pattern_changed();
+  run.rec.exact = exact;
+  if (!std::isfinite(s.shift)) return false;
+  run.shift = run.rec.shift = run.report.final_shift = s.shift;
+  return true;
+}
+
+// At ||g|| <= tolerance with H + ε λ_min I not positive definite: leaves the
+// saddle along the eigenvector of the most negative eigenvalue. True when it
+// moved; false when the point is a minimum to working precision (the
+// negative eigenvalue is noise on a neutral mode: report.marginal) or the
+// eigen-solve finds no negative eigenvalue.
+bool NewtonSolver::stability_test(Objective& f, Run& run, const VecX& g) {
+  NewtonReport& report = run.report;
+  const double base_shift = options_.shift_epsilon * options_.lambda_min;
+  const auto te = Clock::now();
+  EigenOptions eo;
+  eo.count = 1;
+  eo.exclude_rigid = false;
+  const EigenResult eig = smallest_eigenpairs(state_->assembler.matrix(), Eigen::MatrixXd(), base_shift, eo);
+  report.time_eigen += since(te);
+  if (eig.converged) report.smallest_eigenvalue = eig.values(0);
+  if (!eig.converged || eig.values(0) >= 0.0) return false;  // failed only by a hair: stable within the shift
+  VecX v = eig.vectors.col(0);
+  if (g.dot(v) > 0.0) v = -v;
+  const auto tc = Clock::now();
+  double t = std::min(1.0, f.max_step(run.x, v));
+  report.time_collision += since(tc);
+  run.rec.max_step = t;
+  const auto tl = Clock::now();
+  for (; t >= options_.min_step; t *= options_.backtrack) {
+    const VecX trial = run.x + t * v;
+    f.set_dofs(trial);
+    ++report.line_search_trials;
+    ++run.rec.line_search_trials;
+    const double Et = f.energy();
+    if (std::isfinite(Et) && Et < run.E) {
+      run.x = trial;
+      run.E = Et;
+      run.rec.step = t;
+      report.time_line_search += since(tl);
+      return true;
     }
-    int found = -1;
-    if (probe > 0 && attempt(probe)) {
-      found = probe;
-      while (found > 0 && attempt(found - 1)) --found;
-      if (found > 0 && !cholesky.recall(rung(first, found))) found = -1;  // (cannot fail: same analysis, same H)
-    } else {
-      for (int j = probe > 0 ? probe + 1 : 0; j < attempts && found < 0; ++j)
-        if (attempt(j)) found = j;
-    }
-    report.time_factorization += since(t0);
-    base_ok = found == 0 && first <= base_shift;
-    if (found < 0) return std::numeric_limits<double>::infinity();
-    report.final_shift = rung(first, found);
-    return report.final_shift;
-  };
-  double hint[2] = {0.0, 0.0};  // last shift of the projected [0] and the exact [1] Hessian
+  }
+  report.time_line_search += since(tl);
+  f.set_dofs(run.x);
+  report.marginal = true;
+  return false;
+}
 
-  // Hybrid mode: after exact_after_full_steps consecutive full projected steps the iterate is
-  // in a region where the quadratic model is good, and the exact Hessian
-  // takes over (projected directions converge only linearly when the
-  // projection removed real curvature, e.g. of compressed edges); it hands
-  // back to the projected Hessian when an exact step must backtrack or the
-  // exact Hessian needed a shift above 10⁶·ε·λ_min (indefinite).
-  bool exact_region = false;
-  int full_projected_steps = 0;
-  double shift = base_shift;
+// The Newton direction -(H + shift·I)⁻¹ g without its rigid-motion part.
+VecX NewtonSolver::direction(Objective& f, Run& run, const VecX& g) {
+  const auto t0 = Clock::now();
+  VecX d = -state_->cholesky.solve(g);
+  run.report.time_factorization += since(t0);
+  if (options_.remove_rigid_motions) {
+    const Eigen::MatrixXd Q = f.rigid_modes();
+    if (Q.cols() > 0) d -= Q * (Q.transpose() * d);
+  }
+  return d;
+}
+
+// Armijo backtracking on the total energy from min(1, collision-free
+// bound). Near convergence the decrease c t g·d can fall below the round-off
+// of E; then a step that lowers the gradient norm is accepted instead.
+bool NewtonSolver::line_search(Objective& f, Run& run, const VecX& d, double gd) {
+  const NewtonOptions& o = options_;
+  auto t0 = Clock::now();
+  const double t_max = f.max_step(run.x, d);
+  run.report.time_collision += since(t0);
+  run.rec.max_step = t_max;
+  t0 = Clock::now();
+  const double roundoff = 64.0 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::fabs(run.E));
+  bool accepted = false;
+  for (double t = std::min(1.0, t_max); t >= o.min_step && !accepted; t *= o.backtrack) {
+    const VecX trial = run.x + t * d;
+    f.set_dofs(trial);
+    ++run.report.line_search_trials;
+    ++run.rec.line_search_trials;
+    const double Et = f.energy();
+    if (!std::isfinite(Et)) continue;
+    accepted = Et <= run.E + o.armijo * t * gd ||
+               (std::fabs(t * gd) < roundoff && Et <= run.E + roundoff && f.gradient().norm() < run.gnorm);
+    if (accepted) {
+      run.x = trial;
+      run.E = Et;
+      run.rec.step = t;
+    }
+  }
+  run.report.time_line_search += since(t0);
+  return accepted;
+}
+
+// Expansion: the full step met the Armijo condition and lowered E by nearly
+// its first-order prediction (the model overestimates the curvature along d,
+// as a large shift or a projected Hessian does): try 2, 4, ... times the
+// step within the collision-free bound while E keeps decreasing.
+void NewtonSolver::expand(Objective& f, Run& run, const VecX& x0, double E0, const VecX& d, double gd) {
+  const NewtonOptions& o = options_;
+  if (!(run.rec.step == 1.0 && o.max_expansion > 1.0 && E0 - run.E >= -o.expansion_ratio * gd)) return;
+  const auto t0 = Clock::now();
+  const double T = o.max_expansion;
+  const double t_ext = T * f.max_step(x0, T * d);
+  run.report.time_collision += since(t0);
+  const auto tl = Clock::now();
+  double tb = 1.0, Eb = run.E;
+  for (double tt = 2.0; tt <= t_ext && tt <= T; tt *= 2.0) {
+    f.set_dofs(x0 + tt * d);
+    ++run.report.line_search_trials;
+    ++run.rec.line_search_trials;
+    const double Et = f.energy();
+    if (!(Et < Eb)) break;
+    tb = tt;
+    Eb = Et;
+  }
+  if (tb > 1.0) {
+    run.x = x0 + tb * d;
+    run.E = Eb;
+    run.rec.step = tb;
+    ++run.report.expansions;
+  }
+  f.set_dofs(run.x);
+  run.report.time_line_search += since(tl);
+}
+
+NewtonReport NewtonSolver::minimize(Objective& f) {
+  const NewtonOptions& o = options_;
+  Run run(o, state_->cholesky);
+  state_->shifts.restart(o);
+  run.x = f.dofs();
+  run.E = f.energy();
+  require(std::isfinite(run.E), "minimize: the starting point is infeasible (energy is not finite)");
+  NewtonReport& report = run.report;
   for (;;) {
+    run.t_iteration = Clock::now();
+    run.rec = IterationRecord{};
+    run.rec.phase = phase_;
+    run.rec.iteration = report.iterations;
+    run.rec.energy = run.E;
+    if (o.record_trace || o.verbose) {
+      run.rec.parts = f.energy_parts();
+      run.rec.active_pairs = f.active_pairs();
+    }
     auto t0 = Clock::now();
     const VecX g = f.gradient();
     report.time_assembly += since(t0);
-    const double gnorm = g.norm();
-    report.gradient_norm = gnorm;
-    require(std::isfinite(gnorm), "minimize: the gradient is not finite");
-    const bool converged = gnorm <= o.gradient_tolerance;
-    const bool exact =
-        o.hessian == HessianMode::Exact || exact_region || gnorm <= o.hybrid_switch * o.gradient_tolerance;
-
-    {
-      t0 = Clock::now();
-      f.assemble_hessian(assembler, exact);
-      report.time_assembly += since(t0);
-      bool psd = false;
-      const double first = converged || !o.shift_warm_start ? base_shift : start_shift;
-      shift = factorize(first, psd, hint[exact ? 1 : 0]);
-      if (std::isfinite(shift)) hint[exact ? 1 : 0] = shift;
-      if (!std::isfinite(shift)) return finish(SolverStatus::Stalled);
-      // Warm start: next time try one factor lower, unless that level has
-      // just failed; then wait 1, 2, 4, ... factorisations before retrying
-      // it (a shift that stays needed costs no failed attempts).
-      if (shift > first) {
-        backoff = std::min(2 * backoff + 1, 64);
-        wait = backoff;
-      } else if (shift < last_shift) {
-        backoff = 0;
-      }
-      last_shift = shift;
-      if (wait > 0) {
-        --wait;
-        start_shift = shift;
-      } else {
-        start_shift = std::max(base_shift, shift / o.shift_growth);
-      }
-      report.hessian_psd = psd;
-
-      if (converged) {
-        if (psd) return finish(SolverStatus::ConvergedStable);
-        if (o.stop_at_critical_point) return finish(SolverStatus::ConvergedUnstable);
-        if (report.saddle_escapes >= o.max_saddle_escapes) return finish(SolverStatus::Stalled);
-        // Leave the saddle along the eigenvector of the most negative eigenvalue.
-        const auto te = Clock::now();
-        EigenOptions eo;
-        eo.count = 1;
-        eo.exclude_rigid = false;
-        const EigenResult eig = smallest_eigenpairs(assembler.matrix(), Eigen::MatrixXd(), base_shift, eo);
-        report.time_eigen += since(te);
-        if (eig.converged) report.smallest_eigenvalue = eig.values(0);
-        if (!eig.converged || eig.values(0) >= 0.0) {
-          // The factorisation failed only by a hair: treat as stable within the shift.
-          return finish(o.stop_at_critical_point ? SolverStatus::ConvergedUnstable : SolverStatus::ConvergedStable);
-        }
-        VecX v = eig.vectors.col(0);
-        if (g.dot(v) > 0.0) v = -v;
-        const auto tc = Clock::now();
-        double t = std::min(1.0, f.max_step(x, v));
-        report.time_collision += since(tc);
-        bool moved = false;
-        const auto tl = Clock::now();
-        for (; t >= o.min_step; t *= o.backtrack) {
-          const VecX trial = x + t * v;
-          f.set_dofs(trial);
-          ++report.line_search_trials;
-          const double Et = f.energy();
-          if (std::isfinite(Et) && Et < E) {
-            x = trial;
-            E = Et;
-            moved = true;
-            break;
-          }
-        }
-        report.time_line_search += since(tl);
-        if (!moved) {
-          // No step along the direction of negative curvature lowers the
-          // energy by more than its round-off: the negative eigenvalue is
-          // numerical noise on a flat (neutral) mode, and the point is a
-          // minimum to working precision.
-          f.set_dofs(x);
-          report.marginal = true;
-          return finish(SolverStatus::ConvergedStable);
-        }
-        f.accept();
-        ++report.saddle_escapes;
-        ++report.iterations;
-        if (report.iterations >= o.max_iterations) return finish(SolverStatus::MaxIterations);
-        continue;
-      }
+    run.gnorm = report.gradient_norm = run.rec.gradient_norm = g.norm();
+    require(std::isfinite(run.gnorm), "minimize: the gradient is not finite");
+    const bool converged = run.gnorm <= o.gradient_tolerance;
+    run.exact = run.schedule.exact(run.gnorm);
+    if (!factorize(f, run, run.exact, converged)) {
+      record(run);
+      return finish(run, SolverStatus::Stalled);
     }
-    if (report.iterations >= o.max_iterations) return finish(SolverStatus::MaxIterations);
-
-    t0 = Clock::now();
-    VecX d = -cholesky.solve(g);
-    report.time_factorization += since(t0);
-    if (exact) ++report.exact_iterations;
-    if (o.remove_rigid_motions) {
-      const Eigen::MatrixXd Q = f.rigid_modes();
-      if (Q.cols() > 0) d -= Q * (Q.transpose() * d);
+    if (converged) {
+      if (report.hessian_psd || o.stop_at_critical_point || report.saddle_escapes >= o.max_saddle_escapes) {
+        run.rec.kind = IterationKind::Final;
+        record(run);
+        if (report.hessian_psd) return finish(run, SolverStatus::ConvergedStable);
+        return finish(run, o.stop_at_critical_point ? SolverStatus::ConvergedUnstable : SolverStatus::Stalled);
+      }
+      run.rec.kind = IterationKind::SaddleEscape;
+      if (!stability_test(f, run, g)) {
+        run.rec.kind = IterationKind::Final;
+        record(run);
+        return finish(run, SolverStatus::ConvergedStable);
+      }
+      f.accept();
+      record(run);
+      ++report.saddle_escapes;
+      if (++report.iterations >= o.max_iterations) return finish(run, SolverStatus::MaxIterations);
+      continue;
     }
+    if (report.iterations >= o.max_iterations) {
+      run.rec.kind = IterationKind::Final;
+      record(run);
+      return finish(run, SolverStatus::MaxIterations);
+    }
+    if (run.exact) ++report.exact_iterations;
+    VecX d = direction(f, run, g);
     double gd = g.dot(d);
     if (!(gd < 0.0) || !d.allFinite()) {
       d = -g;  // cannot happen for a positive definite shifted H; guard against round-off
-      gd = -gnorm * gnorm;
+      gd = -run.gnorm * run.gnorm;
     }
-    t0 = Clock::now();
-    const double t_max = f.max_step(x, d);
-    double t = std::min(1.0, t_max);
-    report.time_collision += since(t0);
-
-    // Armijo backtracking on the total energy. Near convergence the decrease
-    // c t g·d can fall below the round-off of E; then a step that lowers the
-    // gradient norm is accepted instead.
-    t0 = Clock::now();
-    bool accepted = false;
-    const VecX x0 = x;
-    const double E0 = E;
-    const double roundoff = 64.0 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::fabs(E));
-    for (; t >= o.min_step; t *= o.backtrack) {
-      const VecX trial = x + t * d;
-      f.set_dofs(trial);
-      ++report.line_search_trials;
-      const double Et = f.energy();
-      if (!std::isfinite(Et)) continue;
-      if (Et <= E + o.armijo * t * gd) {
-        x = trial;
-        E = Et;
-        accepted = true;
-        break;
-      }
-      if (std::fabs(t * gd) < roundoff && Et <= E + roundoff) {
-        const double gt = f.gradient().norm();
-        if (gt < gnorm) {
-          x = trial;
-          E = Et;
-          accepted = true;
-          break;
-        }
-      }
-    }
-    // Expansion: the full step met the Armijo condition and lowered E by
-    // nearly its first-order prediction (the model overestimates the
-    // curvature along d, as a large shift or a projected Hessian does):
-    // try 2, 4, ... times the step within the collision-free bound while E
-    // keeps decreasing.
-    if (accepted && t == 1.0 && o.max_expansion > 1.0 && E0 - E >= -o.expansion_ratio * gd) {
-      const auto tc = Clock::now();
-      const double T = o.max_expansion;
-      const double t_ext = T * f.max_step(x0, T * d);
-      report.time_collision += since(tc);
-      double tb = 1.0, Eb = E;
-      for (double tt = 2.0; tt <= t_ext && tt <= T; tt *= 2.0) {
-        f.set_dofs(x0 + tt * d);
-        ++report.line_search_trials;
-        const double Et = f.energy();
-        if (!(Et < Eb)) break;
-        tb = tt;
-        Eb = Et;
-      }
-      if (tb > 1.0) {
-        x = x0 + tb * d;
-        E = Eb;
-        t = tb;
-        ++report.expansions;
-      }
-      f.set_dofs(x);
-    }
-    report.time_line_search += since(t0);
-    if (o.verbose)
-      std::fprintf(stderr, "newton %5d  E %.12g  |g| %.3e  shift %.2e  |d|inf %.2e  ccd %.3e  t %.3e  %s %s\n",
-                   report.iterations, E, gnorm, shift, d.lpNorm<Eigen::Infinity>(), t_max, accepted ? t : 0.0,
-                   exact ? "exact" : "proj", assembler.pattern_changed() ? "pattern" : "");
+    const VecX x0 = run.x;
+    const double E0 = run.E;
+    const bool accepted = line_search(f, run, d, gd);
+    if (accepted) expand(f, run, x0, E0, d, gd);
+    record(run);
     if (!accepted) {
-      f.set_dofs(x);
-      return finish(SolverStatus::Stalled);
+      f.set_dofs(run.x);
+      return finish(run, SolverStatus::Stalled);
     }
-    if (o.hessian == HessianMode::Hybrid) {
-      if (!exact) {
-        full_projected_steps = t >= 1.0 ? full_projected_steps + 1 : 0;
-        exact_region = o.exact_after_full_steps > 0 && full_projected_steps >= o.exact_after_full_steps;
-      } else if (exact_region && (t < 1.0 || shift > 1e6 * base_shift)) {
-        // backtracked, or the exact Hessian is indefinite (a large shift: tiny steps)
-        exact_region = false;
-        full_projected_steps = 0;
-      }
-    }
+    run.schedule.after_step(run.exact, run.rec.step, run.shift);
     f.accept();
     ++report.iterations;
   }
+}
+
+NewtonReport minimize(Objective& objective, const NewtonOptions& options) {
+  NewtonSolver solver(options);
+  return solver.minimize(objective);
 }
 
 }  // namespace ek

@@ -12,88 +12,10 @@
 #include "ek/geometry/polyline.hpp"
 #include "ek/knots/alexander.hpp"
 #include "ek/solver/eigen_analysis.hpp"
+#include "ek/solver/knot_terms.hpp"
 
 namespace ek {
 namespace {
-
-/// E_rod + ω E_contact (+ E_slab) over the rod's dofs (positions first).
-class KnotObjective : public Objective {
- public:
-  KnotObjective(ElasticRod& rod, ContactPotential& contact, const PlanaritySlab* slab, double max_rotation)
-      : rod_(rod), contact_(contact), slab_(slab), max_rotation_(max_rotation) {
-    contact_.update(rod_.positions());
-  }
-  void set_slab(const PlanaritySlab* slab) { slab_ = slab; }
-
-  int num_dofs() const override { return rod_.num_dofs(); }
-  VecX dofs() const override { return rod_.dofs(); }
-  void set_dofs(const VecX& x) override {
-    rod_.set_dofs(x);
-    contact_.update(rod_.positions());
-  }
-  double energy() override { return parts().total; }
-  EnergyParts parts() const {
-    EnergyParts p;
-    const Points& x = rod_.positions();
-    p.stretch = rod_.energy(EnergyTerm::Stretch);
-    p.bend = rod_.energy(EnergyTerm::Bend);
-    p.twist = rod_.model() == TwistModel::TwistFree ? 0.0 : rod_.energy(EnergyTerm::Twist);
-    p.contact = contact_.energy(x);
-    p.slab = slab_ ? slab_->energy(x) : 0.0;
-    p.total = p.stretch + p.bend + p.twist + p.contact + p.slab;
-    return p;
-  }
-  VecX gradient() override {
-    VecX g = rod_.gradient();
-    const Points& x = rod_.positions();
-    contact_.add_gradient(x, g.head(x.size()));
-    if (slab_) g.head(x.size()) += slab_->gradient(x);
-    return g;
-  }
-  /// exact = false: the contact pairs' barrier Hessians and the stretching
-  /// Hessians of compressed edges projected to positive semidefinite
-  /// (bending and twisting stay exact; see NewtonOptions::hessian).
-  void assemble_hessian(SparseAssembler& A, bool exact) override {
-    const Points& x = rod_.positions();
-    A.begin(num_dofs());
-    A.segment(0, rod_.hessian_structure());
-    rod_.add_hessian(A, EnergyTerm::All, !exact);
-    A.segment(1, contact_.hessian_structure());
-    contact_.add_hessian(x, A, !exact);
-    A.segment(2, slab_ ? 1 : 0);
-    if (slab_) slab_->add_hessian(x, A);
-    A.end();
-  }
-  Eigen::MatrixXd rigid_modes() override {
-    return ek::rigid_modes(rod_.positions(), rod_.num_dofs(),
-                           rod_.model() == TwistModel::TwistFree ? -1 : 3 * rod_.num_vertices(), slab_ != nullptr);
-  }
-  double max_step(const VecX& x, const VecX& dx) override {
-    const Eigen::Index m = rod_.positions().size();
-    const Points X = as_points(x.head(m)), D = as_points(dx.head(m));
-    double t = contact_.max_step(X, D);
-    if (slab_) t = std::min(t, slab_->max_step(X, D));
-    if (rod_.model() != TwistModel::TwistFree) {
-      // keep every tangent within max_rotation of its source: |s·de| <= sin(α)|e|
-      const double s = std::sin(max_rotation_);
-      const auto n = X.rows();
-      for (Eigen::Index j = 0; j < n; ++j) {
-        const Vec3 e = (X.row((j + 1) % n) - X.row(j)).transpose();
-        const Vec3 de = (D.row((j + 1) % n) - D.row(j)).transpose();
-        const double len = de.norm();
-        if (len > 0.0) t = std::min(t, s * e.norm() / len);
-      }
-    }
-    return t;
-  }
-  void accept() override { rod_.update_reference_frames(); }
-
- private:
-  ElasticRod& rod_;
-  ContactPotential& contact_;
-  const PlanaritySlab* slab_;
-  double max_rotation_;
-};
 
 std::string model_name(TwistModel m) {
   switch (m) {
@@ -102,6 +24,145 @@ std::string model_name(TwistModel m) {
     case TwistModel::FixedLink: return "fixed-link";
   }
   return "?";
+}
+
+/// The input's rest edge lengths, after checking the curve (InputError).
+VecX checked_rest_lengths(const Points& curve, const RelaxOptions& options) {
+  const auto n = curve.rows();
+  require_input(n >= 4, "relax: a closed curve needs at least 4 vertices");
+  require_input(curve.allFinite(), "relax: the curve has non-finite coordinates");
+  require_input(edge_lengths(curve).minCoeff() > 0.0, "relax: the curve has a zero-length edge");
+  const VecX rest = options.rest_lengths ? *options.rest_lengths : edge_lengths(curve);
+  require_input(rest.size() == n && rest.minCoeff() > 0.0 && rest.allFinite(),
+                "relax: rest lengths must be n positive numbers");
+  return rest;
+}
+
+AlexanderPolynomial input_alexander(const Points& curve) {
+  try {
+    return alexander(curve);
+  } catch (const InputError& e) {
+    throw InputError(std::string("relax: the input curve is not simple: ") + e.what());
+  }
+}
+
+EnergyParts parts_of(Objective& objective) {
+  EnergyParts p;
+  for (const EnergyPart& part : objective.energy_parts()) {
+    if (part.name == "stretch") p.stretch = part.value;
+    else if (part.name == "bend") p.bend = part.value;
+    else if (part.name == "twist") p.twist = part.value;
+    else if (part.name == "contact") p.contact = part.value;
+    else if (part.name == "slab") p.slab = part.value;
+  }
+  p.total = p.stretch + p.bend + p.twist + p.contact + p.slab;
+  return p;
+}
+
+/// Everything one relaxation works on: the rod, its contact and slab, and
+/// the solver that every phase shares.
+struct Relaxation {
+  const RelaxOptions& options;
+  ElasticRod rod;
+  ContactOptions contact_options;
+  ContactPotential contact;
+  std::optional<PlanaritySlab> slab;
+  NewtonSolver solver;
+
+  KnotObjective objective(ContactPotential& c, bool with_slab) {
+    return KnotObjective(rod, c, with_slab && slab ? &*slab : nullptr, options.max_tangent_rotation);
+  }
+};
+
+ElasticRod make_rod(const Points& curve, const VecX& rest, const RelaxOptions& options, TwistModel model) {
+  ElasticRod rod(curve, rest, options.material, model);
+  if (options.link) {
+    rod.set_link(*options.link);
+    rod.relax_twist();
+  }
+  return rod;
+}
+
+ContactOptions contact_options(const ResolvedModel& model) {
+  ContactOptions co;
+  co.dhat = model.dhat;
+  co.stiffness = model.contact_stiffness;
+  return co;
+}
+
+NewtonOptions newton_options(const RelaxOptions& options, const ResolvedModel& model, double lambda_min) {
+  NewtonOptions no = options.newton;
+  no.gradient_tolerance = model.tolerance;
+  no.max_iterations = options.max_iterations;
+  no.stop_at_critical_point = options.stop_at_critical_point;
+  no.lambda_min = lambda_min;
+  return no;
+}
+
+/// The phases: contact-stiffness continuation (each factor with a softer
+/// barrier; every accepted step is still collision-free, the barrier being
+/// singular at d = 0 for any ω), the solve at ω (under the slab when there
+/// is one), and after release the solve without the slab.
+void run_phases(Relaxation& r, RelaxResult& result) {
+  for (const double f : r.options.contact_continuation) {
+    ContactOptions soft = r.contact_options;
+    soft.stiffness = f * r.contact_options.stiffness;
+    ContactPotential soft_contact(CurveTopology::single(r.rod.num_vertices()), soft);
+    KnotObjective soft_objective = r.objective(soft_contact, true);
+    result.continuation_reports.push_back(r.solver.minimize(soft_objective));
+    result.phases.push_back("continuation " + std::to_string(f));
+  }
+  KnotObjective objective = r.objective(r.contact, true);
+  result.report = r.solver.minimize(objective);
+  result.phases.push_back(r.slab ? "slab" : "final");
+  result.energy = parts_of(objective);
+  if (r.slab && r.options.release_slab) {
+    result.slab_report = result.report;
+    result.slab_energy = result.energy;
+    KnotObjective released = r.objective(r.contact, false);
+    result.report = r.solver.minimize(released);
+    result.phases.push_back("final");
+    result.energy = parts_of(released);
+  }
+  result.trace = r.solver.trace();
+}
+
+/// The smallest eigenvalue of H with every rigid motion excluded: all six
+/// even under a kept slab (where no vertex is within the slab's activation
+/// distance of a plane, the z translation and the tilts are (near-)zero
+/// modes of H too, and the stiffness is meant to describe the shape).
+std::optional<double> stiffness(Relaxation& r, const NewtonOptions& no) {
+  KnotObjective objective = r.objective(r.contact, !r.options.release_slab);
+  SparseAssembler A;
+  objective.assemble_hessian(A, true);
+  const int n = r.rod.num_vertices();
+  const int theta_begin = r.rod.model() == TwistModel::TwistFree ? -1 : 3 * n;
+  const Eigen::MatrixXd Q = rigid_modes(r.rod.positions(), r.rod.num_dofs(), theta_begin);
+  EigenOptions eo;
+  eo.count = 1;
+  const EigenResult eig = smallest_eigenpairs(A.matrix(), Q, no.shift_epsilon * no.lambda_min, eo);
+  if (!eig.converged) return std::nullopt;
+  return eig.values(0);
+}
+
+/// Positions, angles, contacts, twist, writhe, link and the Alexander check.
+void describe_result(Relaxation& r, RelaxResult& result) {
+  result.positions = r.rod.positions();
+  result.theta = r.rod.thetas();
+  result.Theta = r.rod.model() == TwistModel::TwistFree ? 0.0 : r.rod.theta_total();
+  r.contact.update(result.positions);
+  result.contacts = static_cast<int>(r.contact.num_active());
+  result.min_distance = clearance(result.positions).distance;
+  result.twist = r.rod.twist();
+  result.writhe = r.rod.writhe();
+  result.link = result.twist + result.writhe;
+  if (!r.options.check_topology) return;
+  try {
+    result.result_alexander = alexander(result.positions);
+  } catch (const InputError&) {
+    result.result_alexander = AlexanderPolynomial{{0}};
+  }
+  result.alexander_preserved = (result.result_alexander == result.alexander);
 }
 
 }  // namespace
@@ -189,105 +250,28 @@ double cached_lambda_min(int n, double edge_length, const RodMaterial& m, TwistM
 
 RelaxResult relax(const Points& curve, const RelaxOptions& options) {
   options.validate();
+  const VecX rest = checked_rest_lengths(curve, options);
   const int n = static_cast<int>(curve.rows());
-  require_input(n >= 4, "relax: a closed curve needs at least 4 vertices");
-  require_input(curve.allFinite(), "relax: the curve has non-finite coordinates");
-  require_input(edge_lengths(curve).minCoeff() > 0.0, "relax: the curve has a zero-length edge");
-  const VecX rest = options.rest_lengths ? *options.rest_lengths : edge_lengths(curve);
-  require_input(rest.size() == n && rest.minCoeff() > 0.0 && rest.allFinite(),
-                "relax: rest lengths must be n positive numbers");
   RelaxResult result;
-  if (options.check_topology) {
-    try {
-      result.alexander = alexander(curve);
-    } catch (const InputError& e) {
-      throw InputError(std::string("relax: the input curve is not simple: ") + e.what());
-    }
-  }
-  const RodMaterial& mat = options.material;
-  const double edge = rest.mean();
-  const ResolvedModel resolved = resolve_model(options, edge);
-  ContactOptions co;
-  co.dhat = resolved.dhat;
-  co.stiffness = resolved.contact_stiffness;
-  const double tol = resolved.tolerance;
-  const TwistModel model = resolved.model;
-  result.model = model_name(model);
-
-  ElasticRod rod(curve, rest, mat, model);
-  if (options.link) {
-    rod.set_link(*options.link);
-    rod.relax_twist();
-  }
-  ContactPotential contact(CurveTopology::single(n), co);
-  contact.update(curve);
-  if (contact.min_distance() <= 0.0) throw InputError("relax: the input curve touches itself");
-  std::optional<PlanaritySlab> slab;
+  if (options.check_topology) result.alexander = input_alexander(curve);
+  const ResolvedModel model = resolve_model(options, rest.mean());
+  result.model = model_name(model.model);
+  result.lambda_min = cached_lambda_min(n, rest.mean(), options.material, model.model);
+  const NewtonOptions no = newton_options(options, model, result.lambda_min);
+  const ContactOptions co = contact_options(model);
+  Relaxation r{options, make_rod(curve, rest, options, model.model), co,
+               ContactPotential(CurveTopology::single(n), co), std::nullopt, NewtonSolver(no)};
+  r.contact.update(curve);
+  if (r.contact.min_distance() <= 0.0) throw InputError("relax: the input curve touches itself");
   if (options.slab) {
-    slab.emplace(*options.slab);
-    if (!slab->inside(curve))
+    r.slab.emplace(*options.slab);
+    if (!r.slab->inside(curve))
       throw InputError("relax: the input curve is not strictly inside the planarity slab |z| < " +
                        std::to_string(options.slab->half_thickness));
   }
-  KnotObjective objective(rod, contact, slab ? &*slab : nullptr, options.max_tangent_rotation);
-
-  NewtonOptions no = options.newton;
-  no.gradient_tolerance = tol;
-  no.max_iterations = options.max_iterations;
-  no.stop_at_critical_point = options.stop_at_critical_point;
-  result.lambda_min = cached_lambda_min(n, edge, mat, model);
-  no.lambda_min = result.lambda_min;
-
-  // Contact-stiffness continuation (RelaxOptions::contact_continuation): the
-  // same rod, slab and tolerance with a softer barrier; every accepted step
-  // is still collision-free (the barrier is singular at d = 0 for any ω).
-  for (const double f : options.contact_continuation) {
-    ContactOptions soft = co;
-    soft.stiffness = f * co.stiffness;
-    ContactPotential soft_contact(CurveTopology::single(n), soft);
-    KnotObjective soft_objective(rod, soft_contact, slab ? &*slab : nullptr, options.max_tangent_rotation);
-    result.continuation_reports.push_back(minimize(soft_objective, no));
-  }
-  if (!options.contact_continuation.empty()) objective.set_dofs(rod.dofs());
-  result.report = minimize(objective, no);
-  if (slab && options.release_slab) {
-    result.slab_report = result.report;
-    result.slab_energy = objective.parts();
-    objective.set_slab(nullptr);
-    result.report = minimize(objective, no);
-  }
-  result.positions = rod.positions();
-  result.theta = rod.thetas();
-  result.Theta = model == TwistModel::TwistFree ? 0.0 : rod.theta_total();
-  result.energy = objective.parts();
-  contact.update(result.positions);
-  result.contacts = static_cast<int>(contact.num_active());
-  result.min_distance = clearance(result.positions).distance;
-  result.twist = rod.twist();
-  result.writhe = rod.writhe();
-  result.link = result.twist + result.writhe;
-  if (options.check_topology) {
-    try {
-      result.result_alexander = alexander(result.positions);
-    } catch (const InputError&) {
-      result.result_alexander = AlexanderPolynomial{{0}};
-    }
-    result.alexander_preserved = (result.result_alexander == result.alexander);
-  }
-  if (options.smallest_eigenvalue) {
-    SparseAssembler A;
-    objective.assemble_hessian(A, true);
-    const int theta_begin = model == TwistModel::TwistFree ? -1 : 3 * n;
-    // All six rigid motions are excluded even under a kept slab: where no
-    // vertex is within the slab's activation distance of a plane, the z
-    // translation and the tilts are (near-)zero modes of H too, and the
-    // stiffness is meant to describe the shape.
-    const Eigen::MatrixXd Q = rigid_modes(result.positions, rod.num_dofs(), theta_begin);
-    EigenOptions eo;
-    eo.count = 1;
-    const EigenResult eig = smallest_eigenpairs(A.matrix(), Q, no.shift_epsilon * no.lambda_min, eo);
-    if (eig.converged) result.smallest_eigenvalue = eig.values(0);
-  }
+  run_phases(r, result);
+  describe_result(r, result);
+  if (options.smallest_eigenvalue) result.smallest_eigenvalue = stiffness(r, no);
   return result;
 }
 

@@ -1,53 +1,30 @@
 #pragma once
 /// Newton's method with a Hessian shift, CHOLMOD factorisation with symbolic
 /// reuse, a collision-free step bound and Armijo backtracking (paper Section 6,
-/// "Numerical Solver"), on an abstract objective.
+/// "Numerical Solver"), on an abstract objective (objective.hpp).
+///
+/// One iteration of NewtonSolver::minimize():
+///  1. gradient g; the Hessian kind (exact or projected, HessianSchedule);
+///  2. assemble H and factorise H + shift·I, the shift from the ladder
+///     ε·λ_min·growth^j searched by ShiftSearch;
+///  3. at ||g|| <= tolerance: stable when H + ε·λ_min·I factorised, else
+///     leave the saddle along the most negative eigenvector;
+///  4. direction d = -(H + shift·I)⁻¹ g without its rigid-motion part;
+///  5. line search: t <= the collision-free bound, Armijo backtracking
+///     (and the optional expansion);
+///  6. accept, update the Hessian schedule, record the iteration.
 #include <Eigen/Dense>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "ek/core/sparse_assembler.hpp"
 #include "ek/geometry/types.hpp"
 #include "ek/solver/cholesky.hpp"
+#include "ek/solver/objective.hpp"
 
 namespace ek {
-
-/// A smooth objective E(x) with exact gradient and sparse Hessian.
-///
-/// set_dofs() may be called with trial points (line search) and must make
-/// energy()/gradient()/assemble_hessian() describe that point; accept() is
-/// called once a point is accepted as the new iterate (for example to
-/// parallel-transport reference frames or refresh contact sets).
-class Objective {
- public:
-  virtual ~Objective() = default;
-  virtual int num_dofs() const = 0;
-  virtual VecX dofs() const = 0;
-  virtual void set_dofs(const VecX& x) = 0;
-  /// E at the current dofs; +infinity when the point is infeasible.
-  virtual double energy() = 0;
-  virtual VecX gradient() = 0;
-  /// Fills A with the Hessian's upper triangle (A.begin() ... A.end()).
-  /// With exact = false an objective may return a modified Hessian that is
-  /// closer to positive semidefinite (for example with per-element
-  /// projections) to get better Newton directions; the stability test at
-  /// convergence always asks for the exact Hessian.
-  virtual void assemble_hessian(SparseAssembler& A, bool exact) = 0;
-  /// Largest t in (0, 1] such that x + s·dx is feasible for all s <= t
-  /// (continuous collision detection). Default: unconstrained.
-  virtual double max_step(const VecX& x, const VecX& dx) {
-    (void)x;
-    (void)dx;
-    return 1.0;
-  }
-  virtual void accept() {}
-  /// Orthonormal basis (num_dofs by k, k >= 0) of the motions that leave E
-  /// invariant at the current dofs to first order (rigid motions). With
-  /// NewtonOptions::remove_rigid_motions their components are removed from
-  /// each Newton step. Default: none.
-  virtual Eigen::MatrixXd rigid_modes() { return {}; }
-};
 
 /// Outcome of a minimisation.
 enum class SolverStatus {
@@ -125,14 +102,16 @@ struct NewtonOptions {
   bool stop_at_critical_point = false;
   int max_saddle_escapes = 50;      ///< [1]
   CholeskyOptions cholesky;         ///< factorisation mode and ordering reuse (cholesky.hpp)
-  /// Print one line per iteration to stderr (iteration, energy, ||g||, shift,
-  /// collision-free bound, accepted step, pattern changes).
+  /// Keep an IterationRecord per iteration (NewtonSolver::trace()).
+  bool record_trace = false;
+  /// Print each iteration's record to stderr (iteration, energy, ||g||,
+  /// shift, collision-free bound, accepted step, pattern changes).
   bool verbose = false;
   void validate() const;
 
-  /// The paper's method as issue 6 describes it: exact Hessian in every
-  /// iteration, no rigid-motion removal (the shift alone suppresses rigid
-  /// motions), warm-started shift search.
+  /// The paper's method: exact Hessian in every iteration, no rigid-motion
+  /// removal (the shift alone suppresses rigid motions), warm-started shift
+  /// search.
   static NewtonOptions paper();
 };
 
@@ -169,7 +148,75 @@ struct NewtonReport {
   int exact_iterations = 0;             ///< iterations whose direction used the exact Hessian
 };
 
-/// Minimises the objective from its current dofs; leaves it at the result.
+/// What an iteration did.
+enum class IterationKind {
+  Step,          ///< a Newton step (accepted, or the line search stalled: step = 0)
+  SaddleEscape,  ///< a step along the most negative eigenvector at a saddle
+  Final,         ///< the convergence test at the result (no step)
+};
+std::string to_string(IterationKind kind);  ///< "step", "saddle-escape", "final"
+
+/// One iteration of NewtonSolver::minimize() (NewtonOptions::record_trace).
+/// Values describe the iterate before the step unless they say otherwise.
+struct IterationRecord {
+  int phase = 0;                  ///< which minimize() call of the solver (0, 1, ...)
+  int iteration = 0;              ///< iterations taken before this one, in the phase
+  IterationKind kind = IterationKind::Step;
+  double energy = 0.0;            ///< [energy] E
+  std::vector<EnergyPart> parts;  ///< Objective::energy_parts()
+  double gradient_norm = 0.0;     ///< [energy/length] ||g||₂
+  bool exact = false;             ///< the exact Hessian (else the projected one)
+  double shift = 0.0;             ///< [energy/length²] shift of the factorisation used
+  int factorizations = 0;         ///< numeric factorisations in this iteration (failed included)
+  int failed_factorizations = 0;  ///< rungs of the shift ladder that failed
+  bool pattern_changed = false;   ///< the Hessian's sparsity pattern changed
+  double max_step = 1.0;          ///< [1] collision-free bound of the step
+  double step = 0.0;              ///< [1] accepted step fraction t (0: none; > 1 expanded)
+  int line_search_trials = 0;
+  int active_pairs = 0;           ///< Objective::active_pairs() at the iterate
+  double seconds = 0.0;           ///< [s] wall time of the iteration
+};
+
+/// Newton's method (see the file comment). One solver serves successive
+/// minimisations (the phases of a relaxation): they share the assembler's
+/// sparsity pattern, CHOLMOD's ordering and symbolic analysis and the shift
+/// search's hints; the warm start of the shift and the Hessian schedule
+/// start afresh each time, so a phase's iterates are those of a new solver
+/// up to the round-off of another elimination order.
+class NewtonSolver {
+ public:
+  explicit NewtonSolver(const NewtonOptions& options = {});
+  ~NewtonSolver();
+  NewtonSolver(const NewtonSolver&) = delete;
+  NewtonSolver& operator=(const NewtonSolver&) = delete;
+
+  const NewtonOptions& options() const { return options_; }
+  /// Validates and sets the options of the following minimisations.
+  void set_options(const NewtonOptions& options);
+  /// Minimises from the objective's current dofs; leaves it at the result.
+  /// The report counts this call only.
+  NewtonReport minimize(Objective& objective);
+  /// Every iteration of every minimize() call so far (record_trace).
+  const std::vector<IterationRecord>& trace() const { return trace_; }
+
+ private:
+  struct Run;
+  bool factorize(Objective& f, Run& run, bool exact, bool converged);
+  bool stability_test(Objective& f, Run& run, const VecX& g);
+  VecX direction(Objective& f, Run& run, const VecX& g);
+  bool line_search(Objective& f, Run& run, const VecX& d, double gd);
+  void expand(Objective& f, Run& run, const VecX& x0, double E0, const VecX& d, double gd);
+  NewtonReport finish(Run& run, SolverStatus status);
+  void record(Run& run);
+
+  struct State;
+  NewtonOptions options_;
+  std::unique_ptr<State> state_;
+  std::vector<IterationRecord> trace_;
+  int phase_ = 0;
+};
+
+/// One-shot: NewtonSolver(options).minimize(objective).
 NewtonReport minimize(Objective& objective, const NewtonOptions& options);
 
 }  // namespace ek

@@ -104,6 +104,12 @@ struct RelaxResult {
   VecX theta;                       ///< material angles (n; zeros for the fast path)
   double Theta = 0.0;               ///< injected twist Θ
   NewtonReport report;              ///< of the last phase (after release when released)
+  /// Every phase's name in order: "continuation F" per factor, then "slab"
+  /// (under the slab) or "final", and "final" after a release.
+  std::vector<std::string> phases;
+  /// Every Newton iteration of every phase (NewtonOptions::record_trace;
+  /// IterationRecord::phase indexes `phases`).
+  std::vector<IterationRecord> trace;
   std::optional<NewtonReport> slab_report;  ///< of the phase under the slab, when released
   /// Of the continuation solves (RelaxOptions::contact_continuation), in order.
   std::vector<NewtonReport> continuation_reports;

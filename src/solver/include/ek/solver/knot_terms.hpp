@@ -1,0 +1,101 @@
+#pragma once
+/// The terms of the knot relaxation (paper Section 6, eq. 1) as Potentials
+/// (objective.hpp) over the rod's dofs [x (3n) | θ (n) | Θ]:
+///
+///   RodTerm      E_stretch + E_bend + E_twist        (elastic_rod.hpp)
+///   ContactTerm  ω Σ b(d_ij) over close edge pairs   (contact_potential.hpp)
+///   SlabTerm     κ Σ b(h ∓ z_i), the planarity slab  (slab.hpp)
+///
+/// Each wraps an object it does not own; the contact and slab terms act on
+/// the position dofs only. knot_objective() sums them.
+#include <memory>
+#include <optional>
+
+#include "ek/contact/contact_potential.hpp"
+#include "ek/rod/elastic_rod.hpp"
+#include "ek/solver/objective.hpp"
+#include "ek/solver/slab.hpp"
+
+namespace ek {
+
+/// The elastic rod. Parts "stretch", "bend", "twist" (0 in TwistFree).
+/// max_step keeps every tangent within `max_rotation` [rad] of its source
+/// when the model has material frames (time-parallel transport stays well
+/// defined); accept() transports the reference frames.
+class RodTerm : public Potential {
+ public:
+  RodTerm(ElasticRod& rod, double max_rotation) : rod_(rod), max_rotation_(max_rotation) {}
+  void set_dofs(const VecX& x) override { rod_.set_dofs(x); }
+  double energy() const override;
+  void add_energy_parts(std::vector<EnergyPart>& parts) const override;
+  void add_gradient(Eigen::Ref<VecX> g) const override { g += rod_.gradient(); }
+  std::uint64_t hessian_structure() const override { return rod_.hessian_structure(); }
+  /// project_psd: the stretching Hessians of compressed edges projected.
+  void add_hessian(SparseAssembler& A, bool project_psd) const override {
+    rod_.add_hessian(A, EnergyTerm::All, project_psd);
+  }
+  double max_step(const VecX& x, const VecX& dx) const override;
+  void accept() override { rod_.update_reference_frames(); }
+
+ private:
+  ElasticRod& rod_;
+  double max_rotation_;
+};
+
+/// Self-contact. Part "contact". project_psd: each pair's barrier Hessian
+/// projected to positive semidefinite. max_step: the certified collision
+/// detection, so no accepted step lets two edges touch.
+class ContactTerm : public Potential {
+ public:
+  /// `x` (n by 3): the positions to start from (the active set is built there).
+  ContactTerm(ContactPotential& contact, const Points& x);
+  void set_dofs(const VecX& x) override;
+  double energy() const override { return contact_.energy(x_); }
+  void add_energy_parts(std::vector<EnergyPart>& parts) const override { parts.push_back({"contact", energy()}); }
+  void add_gradient(Eigen::Ref<VecX> g) const override { contact_.add_gradient(x_, g.head(x_.size())); }
+  std::uint64_t hessian_structure() const override { return contact_.hessian_structure(); }
+  void add_hessian(SparseAssembler& A, bool project_psd) const override {
+    contact_.add_hessian(x_, A, project_psd);
+  }
+  double max_step(const VecX& x, const VecX& dx) const override;
+  int active_pairs() const override { return static_cast<int>(contact_.num_active()); }
+
+ private:
+  ContactPotential& contact_;
+  Points x_;
+};
+
+/// The planarity slab |z| < h. Part "slab".
+class SlabTerm : public Potential {
+ public:
+  SlabTerm(const PlanaritySlab& slab, const Points& x) : slab_(slab), x_(x) {}
+  void set_dofs(const VecX& x) override { x_ = as_points(x.head(x_.size())); }
+  double energy() const override { return slab_.energy(x_); }
+  void add_energy_parts(std::vector<EnergyPart>& parts) const override { parts.push_back({"slab", energy()}); }
+  void add_gradient(Eigen::Ref<VecX> g) const override { g.head(x_.size()) += slab_.gradient(x_); }
+  std::uint64_t hessian_structure() const override { return 1; }
+  void add_hessian(SparseAssembler& A, bool) const override { slab_.add_hessian(x_, A); }
+  double max_step(const VecX& x, const VecX& dx) const override;
+
+ private:
+  const PlanaritySlab& slab_;
+  Points x_;
+};
+
+/// E_rod + ω E_contact [+ E_slab] over the rod's dofs, with the rod's rigid
+/// motions (only the slab's own symmetries when the slab is present; see
+/// rigid_modes() in eigen_analysis.hpp). Owns its terms; the rod, contact
+/// and slab must outlive it.
+class KnotObjective : public CompositeObjective {
+ public:
+  KnotObjective(ElasticRod& rod, ContactPotential& contact, const PlanaritySlab* slab, double max_rotation);
+
+ private:
+  KnotObjective(ElasticRod& rod, std::unique_ptr<RodTerm> r, std::unique_ptr<ContactTerm> c,
+                std::unique_ptr<SlabTerm> s);
+  std::unique_ptr<RodTerm> rod_term_;
+  std::unique_ptr<ContactTerm> contact_term_;
+  std::unique_ptr<SlabTerm> slab_term_;
+};
+
+}  // namespace ek

@@ -1,0 +1,138 @@
+#pragma once
+/// What the Newton solver minimises (paper Section 6, eq. 1):
+///
+///   E(x) = Σ_k E_k(x)
+///
+/// over one vector of degrees of freedom x, as a sum of potentials E_k (the
+/// elastic rod, ω times the contact barrier, the planarity slab, ...). The
+/// solver sees only the Objective interface; CompositeObjective builds one
+/// from Potential terms, so a new term (an external force, a soft
+/// constraint, a second rod) is a new Potential class, not a change of the
+/// solver or of relax().
+#include <Eigen/Dense>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "ek/core/sparse_assembler.hpp"
+#include "ek/geometry/types.hpp"
+
+namespace ek {
+
+/// One named part of an energy (for breakdowns and the iteration trace).
+struct EnergyPart {
+  std::string name;    ///< e.g. "stretch", "bend", "twist", "contact", "slab"
+  double value = 0.0;  ///< [energy]
+};
+
+/// A smooth objective E(x) with exact gradient and sparse Hessian.
+///
+/// set_dofs() may be called with trial points (line search) and must make
+/// energy()/gradient()/assemble_hessian() describe that point; accept() is
+/// called once a point is accepted as the new iterate (for example to
+/// parallel-transport reference frames or refresh contact sets).
+class Objective {
+ public:
+  virtual ~Objective() = default;
+  virtual int num_dofs() const = 0;
+  virtual VecX dofs() const = 0;
+  virtual void set_dofs(const VecX& x) = 0;
+  /// E at the current dofs; +infinity when the point is infeasible.
+  virtual double energy() = 0;
+  virtual VecX gradient() = 0;
+  /// Fills A with the Hessian's upper triangle (A.begin() ... A.end()).
+  /// With exact = false an objective may return a modified Hessian that is
+  /// closer to positive semidefinite (for example with per-element
+  /// projections) to get better Newton directions; the stability test at
+  /// convergence always asks for the exact Hessian.
+  virtual void assemble_hessian(SparseAssembler& A, bool exact) = 0;
+  /// Largest t in (0, 1] such that x + s·dx is feasible for all s <= t
+  /// (continuous collision detection). Default: unconstrained.
+  virtual double max_step(const VecX& x, const VecX& dx) {
+    (void)x;
+    (void)dx;
+    return 1.0;
+  }
+  virtual void accept() {}
+  /// Orthonormal basis (num_dofs by k, k >= 0) of the motions that leave E
+  /// invariant at the current dofs to first order (rigid motions). With
+  /// NewtonOptions::remove_rigid_motions their components are removed from
+  /// each Newton step. Default: none.
+  virtual Eigen::MatrixXd rigid_modes() { return {}; }
+  /// The parts of E at the current dofs, summing to energy() (iteration
+  /// trace, energy breakdowns). Default: none.
+  virtual std::vector<EnergyPart> energy_parts() { return {}; }
+  /// Contact pairs active at the current dofs (iteration trace). Default 0.
+  virtual int active_pairs() const { return 0; }
+};
+
+/// One term E_k of a CompositeObjective. It is evaluated at the point given
+/// to its last set_dofs() call (the objective's whole dof vector; a term
+/// over positions reads its first 3n entries).
+class Potential {
+ public:
+  virtual ~Potential() = default;
+  /// Moves the term to x (the objective's dofs, every trial point).
+  virtual void set_dofs(const VecX& x) = 0;
+  /// E_k at the current point [energy]; +infinity when infeasible.
+  virtual double energy() const = 0;
+  /// The parts of E_k (one part named after the term by default).
+  virtual void add_energy_parts(std::vector<EnergyPart>& parts) const = 0;
+  /// Adds ∇E_k to g (length: the objective's dofs).
+  virtual void add_gradient(Eigen::Ref<VecX> g) const = 0;
+  /// Identifies the sequence of positions add_hessian() writes (for
+  /// SparseAssembler::segment): equal ids replay the same pattern.
+  virtual std::uint64_t hessian_structure() const = 0;
+  /// Adds the Hessian's upper triangle to A; with project_psd a positive
+  /// semidefinite modification of the strongly indefinite parts (the same
+  /// sequence of positions either way).
+  virtual void add_hessian(SparseAssembler& A, bool project_psd) const = 0;
+  /// Largest certified t in (0, 1] such that x + s·dx, s <= t, keeps the term
+  /// finite (collision detection). Default 1.
+  virtual double max_step(const VecX& x, const VecX& dx) const {
+    (void)x;
+    (void)dx;
+    return 1.0;
+  }
+  /// Called once a point is accepted as the new iterate.
+  virtual void accept() {}
+  /// Active contact pairs (terms without contact: 0).
+  virtual int active_pairs() const { return 0; }
+};
+
+/// E = Σ_k E_k over dofs owned by a state object (the rod): dofs() and
+/// num_dofs() come from the callbacks given at construction; set_dofs()
+/// moves every term. Each term's Hessian is one SparseAssembler segment,
+/// numbered in the order of the terms, so a term whose structure is
+/// unchanged replays its pattern. The terms are not owned.
+class CompositeObjective : public Objective {
+ public:
+  struct Dofs {
+    std::function<int()> count;                      ///< number of dofs
+    std::function<VecX()> get;                       ///< current dofs
+    std::function<Eigen::MatrixXd()> rigid_modes;    ///< may be empty: none
+  };
+  CompositeObjective(Dofs dofs, std::vector<Potential*> terms);
+
+  int num_dofs() const override { return dofs_.count(); }
+  VecX dofs() const override { return dofs_.get(); }
+  void set_dofs(const VecX& x) override;
+  /// The sum in the order of the terms.
+  double energy() override;
+  VecX gradient() override;
+  void assemble_hessian(SparseAssembler& A, bool exact) override;
+  /// The smallest of the terms' bounds.
+  double max_step(const VecX& x, const VecX& dx) override;
+  void accept() override;
+  Eigen::MatrixXd rigid_modes() override;
+  std::vector<EnergyPart> energy_parts() override;
+  int active_pairs() const override;
+  const std::vector<Potential*>& terms() const { return terms_; }
+
+ private:
+  Dofs dofs_;
+  std::vector<Potential*> terms_;
+};
+
+}  // namespace ek
