@@ -11,7 +11,15 @@
 //
 //   exp_bench_solver [--quick] [--count K] [--knots A,B,...] [--seed S] [--out DIR]
 //                    [--method default|projected|paper] [--continuation F[,F...]] [--max-iter N]
-//                    [--verbose] [--skips]
+//                    [--trace] [--verbose] [--skips]
+//
+// --trace: every relaxation records its iteration trace (NewtonOptions::
+// record_trace; a few percent slower), written to DIR/traces/<knot>-<sample>.csv
+// (trace.hpp), and the benchmark prints where the iterations and the time
+// went per knot (summarize_trace: iterations by excess energy over the end
+// of their phase, full and short steps, steps cut by the collision bound,
+// failed factorisations, time in exact-Hessian iterations), also written to
+// DIR/solver_trace_summary.csv.
 //
 // --skips (issue 11, "skip what a scene does not need", measured on and off):
 // every sample is relaxed three times, one after the other: as by default
@@ -55,6 +63,7 @@
 #include "ek/lattice/lattice_polygon.hpp"
 #include "ek/lattice/sampling.hpp"
 #include "ek/solver/relax.hpp"
+#include "ek/solver/trace.hpp"
 
 namespace {
 
@@ -169,10 +178,52 @@ std::string statuses_text(const Summary& s) {
   return out;
 }
 
+/// Where the iterations and the time went, per knot (from the traces).
+void print_trace_summary(const std::vector<std::string>& knots, const std::vector<Run>& runs, const std::string& out) {
+  std::ostringstream csv;
+  csv << "knot,iterations,excess_above_1e-1,excess_1e-2_1e-1,excess_1e-3_1e-2,excess_1e-4_1e-3,excess_below_1e-4,"
+         "full_steps,short_steps,collision_limited,exact_iterations,factorizations,failed_factorizations,"
+         "pattern_changes,seconds,seconds_exact\n";
+  std::printf("where the iterations went (%% of iterations; excess energy over the end of the phase)\n");
+  std::printf("%-9s %7s | %6s %6s %6s %6s %6s | %6s %6s %6s %6s | %7s %7s\n", "knot", "iters", ">1e-1", ">1e-2",
+              ">1e-3", ">1e-4", "<1e-4", "t=1", "t<1/64", "ccd<1", "exact", "fail/fc", "exact s");
+  auto row = [&](const std::string& name, const ek::TraceSummary& s) {
+    const double it = std::max(1, s.iterations);
+    std::printf("%-9s %7d | %5.1f%% %5.1f%% %5.1f%% %5.1f%% %5.1f%% | %5.1f%% %5.1f%% %5.1f%% %5.1f%% | %6.1f%% %6.1f%%\n",
+                name.c_str(), s.iterations, 100 * s.by_excess[0] / it, 100 * s.by_excess[1] / it,
+                100 * s.by_excess[2] / it, 100 * s.by_excess[3] / it, 100 * s.by_excess[4] / it,
+                100 * s.full_steps / it, 100 * s.short_steps / it, 100 * s.collision_limited / it,
+                100 * s.exact_iterations / it, 100.0 * s.failed_factorizations / std::max(1, s.factorizations),
+                100 * s.seconds_exact / std::max(1e-300, s.seconds));
+    csv << name << "," << s.iterations;
+    for (int b : s.by_excess) csv << "," << b;
+    csv << "," << s.full_steps << "," << s.short_steps << "," << s.collision_limited << "," << s.exact_iterations << ","
+        << s.factorizations << "," << s.failed_factorizations << "," << s.pattern_changes << ","
+        << fmt(s.seconds, "%.6g") << "," << fmt(s.seconds_exact, "%.6g") << "\n";
+  };
+  ek::TraceSummary all;
+  for (const std::string& k : knots) {
+    ek::TraceSummary s;
+    for (const Run& r : runs)
+      if (r.knot == k) s.add(ek::summarize_trace(r.result.trace));
+    row(k, s);
+    all.add(s);
+  }
+  row("all", all);
+  write_atomic(out + "/solver_trace_summary.csv", csv.str());
+}
+
+void write_trace(const std::string& out, const Run& run) {
+  std::ostringstream text;
+  ek::write_trace_csv(text, run.result.trace, run.result.phases);
+  write_atomic(out + "/traces/" + run.knot + "-" + std::to_string(run.sample) + ".csv", text.str());
+}
+
 int usage(const char* msg) {
   if (msg) std::cerr << "exp_bench_solver: " << msg << "\n";
   std::cerr << "usage: exp_bench_solver [--quick] [--count K] [--knots A,B,...] [--seed S] [--out DIR] "
-               "[--method default|projected|paper] [--continuation F[,F...]] [--max-iter N] [--verbose] [--skips]\n";
+               "[--method default|projected|paper] [--continuation F[,F...]] [--max-iter N] [--trace] [--verbose] "
+               "[--skips]\n";
   return 2;
 }
 
@@ -185,7 +236,7 @@ int main(int argc, char** argv) {
   std::string out = "results/bench", method = "default";
   int max_iter = -1;
   std::vector<double> continuation;
-  bool verbose = false, skips = false;
+  bool verbose = false, skips = false, trace = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto value = [&]() -> std::string {
@@ -203,6 +254,7 @@ int main(int argc, char** argv) {
       else if (a == "--continuation")
         for (const std::string& f : split(value(), ',')) continuation.push_back(std::stod(f));
       else if (a == "--verbose") verbose = true;
+      else if (a == "--trace") trace = true;
       else if (a == "--skips") skips = true;
       else if (a == "--help" || a == "-h") return usage(nullptr), 0;
       else return usage(("unknown argument " + a).c_str());
@@ -219,6 +271,7 @@ int main(int argc, char** argv) {
   if (method == "projected") options.newton.exact_after_full_steps = 0;  // hybrid without the exact region
   if (max_iter >= 0) options.max_iterations = max_iter;
   options.newton.verbose = verbose;
+  options.newton.record_trace = trace;
   options.contact_continuation = continuation;
   try {
     options.validate();
@@ -233,6 +286,7 @@ int main(int argc, char** argv) {
 
   try {
     std::filesystem::create_directories(out);
+    if (trace) std::filesystem::create_directories(out + "/traces");
     std::vector<Run> runs;
     const std::vector<std::string> skip_variants = {"default", "full-model", "eigen"};
     std::vector<std::vector<Run>> skip_runs(skip_variants.size());
@@ -263,6 +317,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "%-9s #%02d  %-18s %5d it  %7.3f s  E %.10g  contacts %d\n", run.knot.c_str(), s,
                      run.result.status().c_str(), run.result.all_phases().iterations, run.seconds,
                      run.result.energy.total, run.result.contacts);
+        if (trace) write_trace(out, run);
         runs.push_back(std::move(run));
       }
     }
@@ -332,6 +387,7 @@ int main(int argc, char** argv) {
                << "," << rep.saddle_escapes << "," << (rep.marginal ? 1 : 0) << "," << rep.failed_factorizations
                << "\n";
     }
+    if (trace) print_trace_summary(knots, runs, out);
     write_atomic(out + "/solver_macro.csv", csv.str());
     write_atomic(out + "/solver_macro_runs.csv", runs_csv.str());
     std::printf("wrote %s/solver_macro.csv and %s/solver_macro_runs.csv\n", out.c_str(), out.c_str());

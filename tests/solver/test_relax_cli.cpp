@@ -1,8 +1,10 @@
-// `knots relax`: the command-line contract of the solver (README, issue 6).
+// `knots relax`: the command-line contract of the solver (docs/cli.md).
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -58,6 +60,43 @@ TEST(RelaxCli, ContinuationReportsEveryPhase) {
   EXPECT_EQ(j.at("total_iterations").get<int>(), total);
   EXPECT_GT(total, j.at("iterations").get<int>());  // the soft phases did work
   EXPECT_LE(j.at("gradient_norm").get<double>(), 1e-7);
+}
+
+// --trace: one CSV row per Newton iteration of every phase (each phase ends
+// with its convergence test), with the energy parts summing to the energy
+// and the last row at the reported energy.
+TEST(RelaxCli, TraceHasOneRowPerIterationOfEveryPhase) {
+  const std::string dir = temp_dir("relax_cli_trace");
+  const std::string in = trefoil(dir), trace = dir + "/trace.csv";
+  const auto r = run("relax " + in + " --continuation 0.001 --trace " + trace + " --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = r.json();
+  EXPECT_EQ(j.at("trace"), trace);
+  std::ifstream f(trace);
+  std::string header, line, last;
+  ASSERT_TRUE(std::getline(f, header));
+  EXPECT_EQ(header.rfind("phase,phase_name,iteration,kind,energy,energy_stretch,energy_bend,energy_twist,"
+                         "energy_contact,gradient_norm,hessian,shift",
+                         0),
+            0u);
+  int rows = 0, finals = 0;
+  while (std::getline(f, line)) {
+    ++rows;
+    if (line.find(",final,") != std::string::npos && line.find(",final,", line.find(',') + 1) != std::string::npos)
+      ++finals;
+    std::vector<double> v;
+    std::stringstream ss(line);
+    for (std::string cell; std::getline(ss, cell, ',');) v.push_back(std::atof(cell.c_str()));
+    ASSERT_GE(v.size(), 10u);
+    EXPECT_NEAR(v[5] + v[6] + v[7] + v[8], v[4], 1e-9 * std::fabs(v[4])) << line;
+    last = line;
+  }
+  EXPECT_EQ(rows, j.at("total_iterations").get<int>() + 2);  // + one convergence test per phase
+  EXPECT_EQ(last.rfind("1,final,", 0), 0u) << last;
+  std::stringstream ss(last);
+  std::string cell;
+  for (int k = 0; k < 5; ++k) std::getline(ss, cell, ',');
+  EXPECT_NEAR(std::atof(cell.c_str()), j.at("energy").get<double>(), 1e-12);
 }
 
 TEST(RelaxCli, BadInputIsOneMessageAndStatusTwo) {

@@ -1,6 +1,6 @@
 // knots relax FILE [-o OUT] [--link LK] [--planar H [--release]] [--tol T] [--max-iter N]
 //             [--radius R] [--young E] [--poisson NU] [--contact-stiffness W] [--continuation F[,F...]]
-//             [--full-model] [--method M] [--eigen] [--stop-at-saddle] [--verbose] [--json]
+//             [--full-model] [--method M] [--eigen] [--stop-at-saddle] [--trace FILE.csv] [--verbose] [--json]
 #include <algorithm>
 #include <iostream>
 
@@ -10,6 +10,7 @@
 #include "ek/core/errors.hpp"
 #include "ek/geometry/curve_io.hpp"
 #include "ek/solver/relax.hpp"
+#include "ek/solver/trace.hpp"
 #include "output.hpp"
 
 namespace ek::cli {
@@ -57,7 +58,7 @@ int cmd_relax(int argc, char** argv) {
   ArgParser args("relax", "FILE [-o OUT] [--link LK] [--planar H [--release]] [--tol T] [--max-iter N] [--radius R] "
                           "[--young E] [--poisson NU] [--contact-stiffness W] [--continuation F[,F...]] [--full-model] "
                           "[--method M] [--eigen] "
-                          "[--stop-at-saddle] [--verbose] [--json]");
+                          "[--stop-at-saddle] [--trace FILE.csv] [--verbose] [--json]");
   args.positional("FILE", &file, "closed curve (.obj or .txt); its edge lengths are the rest lengths");
   args.option("-o,--output", &out, "write the equilibrium here (.obj or .txt), atomically");
   args.option("--link", &link, "prescribe the link Lk = Tw + Wr (full model with Theta fixed); default: Theta free");
@@ -80,6 +81,10 @@ int cmd_relax(int argc, char** argv) {
   args.option("--method", &method,
               "Newton directions: default (hybrid: projected Hessian far from equilibrium, exact near it), "
               "exact (exact Hessian every iteration) or paper (NewtonOptions::paper())");
+  std::string trace;
+  args.option("--trace", &trace,
+              "write one CSV row per Newton iteration of every phase (energy and its parts, gradient norm, "
+              "shift, factorisations, collision-free bound, step, active pairs, time)");
   args.flag("--verbose", &opt.newton.verbose, "print one line per Newton iteration on stderr");
   args.flag("--json", &json, "print one JSON object");
   if (!args.parse(argc, argv)) return 0;
@@ -95,6 +100,8 @@ int cmd_relax(int argc, char** argv) {
   // the factors' range (0, 1) is checked by RelaxOptions::validate() in relax()
   opt.contact_continuation = parse_number_list(continuation, "--continuation");
   if (!out.empty()) check_writable(out);
+  if (!trace.empty()) check_writable(trace);
+  opt.newton.record_trace = !trace.empty();
   if (release && !planar) throw InputError("--release needs --planar H");
   opt.link = link;
   opt.full_model = full;
@@ -110,6 +117,11 @@ int cmd_relax(int argc, char** argv) {
   const RelaxResult r = relax(curve, opt);
   const NewtonReport all = r.all_phases();
   if (!out.empty() && r.alexander_preserved) write_curve(out, r.positions);
+  if (!trace.empty()) {
+    AtomicFile f(trace);
+    write_trace_csv(f.stream(), r.trace, r.phases);
+    f.commit();
+  }
   if (json) {
     Json j;
     j["file"] = file;
@@ -143,6 +155,7 @@ int cmd_relax(int argc, char** argv) {
       j["slab_energy"] = energy_json(*r.slab_energy);
     }
     if (!out.empty() && r.alexander_preserved) j["output"] = out;
+    if (!trace.empty()) j["trace"] = trace;
     print_json(j);
   } else {
     std::cout << "status:       " << r.status() << " (" << all.iterations << " iterations, "
