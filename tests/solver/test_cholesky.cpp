@@ -27,7 +27,7 @@ CholeskySolver::Matrix tridiagonal(int n, double d) {
 }  // namespace
 
 TEST(Cholesky, SolvesPositiveDefiniteSystems) {
-  for (CholeskyMode mode : {CholeskyMode::Simplicial, CholeskyMode::Supernodal}) {
+  for (CholeskyMode mode : {CholeskyMode::Simplicial, CholeskyMode::Supernodal, CholeskyMode::Block}) {
     CholeskySolver chol(mode);
     const auto H = tridiagonal(50, 2.5);
     ASSERT_TRUE(chol.factorize(H, 0.0, 1));
@@ -59,7 +59,7 @@ TEST(Cholesky, DetectsIndefiniteAndAppliesShift) {
 // current again (same shift, no analysis since), in both modes; a failed
 // attempt alone leaves no factor to solve with, and a new pattern forgets it.
 TEST(Cholesky, FailedAttemptKeepsTheLastGoodFactor) {
-  for (CholeskyMode mode : {CholeskyMode::Simplicial, CholeskyMode::Supernodal}) {
+  for (CholeskyMode mode : {CholeskyMode::Simplicial, CholeskyMode::Supernodal, CholeskyMode::Block}) {
     CholeskySolver chol(mode);
     const auto H = tridiagonal(30, 1.0);  // eigenvalues 1 - 2 cos(k π/31): the lowest ≈ -0.99
     ASSERT_TRUE(chol.factorize(H, 1.5, 3));
@@ -135,14 +135,16 @@ double error_against_dense(const CholeskySolver& chol, const Eigen::MatrixXd& S,
   return (chol.solve(b) - ref).norm() / ref.norm();
 }
 
-const char* name(CholeskyMode m) { return m == CholeskyMode::Simplicial ? "simplicial" : "supernodal"; }
+const char* name(CholeskyMode m) {
+  return m == CholeskyMode::Simplicial ? "simplicial" : m == CholeskyMode::Supernodal ? "supernodal" : "block";
+}
 
 }  // namespace
 
 TEST(Cholesky, RandomSparseSpdMatchesDenseLlt) {
   std::mt19937_64 rng(3);
   std::normal_distribution<double> N;
-  for (CholeskyMode mode : {CholeskyMode::Simplicial, CholeskyMode::Supernodal})
+  for (CholeskyMode mode : {CholeskyMode::Simplicial, CholeskyMode::Supernodal, CholeskyMode::Block})
     for (int trial = 0; trial < 6; ++trial) {
       const int n = 40 + 37 * trial;
       const Eigen::MatrixXd S = make_spd(random_symmetric(n, 2 * n, rng), 0.5);
@@ -175,7 +177,7 @@ TEST(Cholesky, ReusedOrderingSolvesChangingPatterns) {
   // a new version. The kept ordering must give the same solutions as a fresh
   // dense factorisation, and AMD is rerun exactly when the fill of the kept
   // ordering exceeds (1 + reorder_fill_growth) times that of the last AMD.
-  for (CholeskyMode mode : {CholeskyMode::Simplicial, CholeskyMode::Supernodal})
+  for (CholeskyMode mode : {CholeskyMode::Simplicial, CholeskyMode::Supernodal, CholeskyMode::Block})
     for (bool reuse : {true, false}) {
       std::mt19937_64 rng(11);
       CholeskyOptions o;
@@ -233,7 +235,7 @@ TEST(Cholesky, ReusedOrderingSolvesChangingPatterns) {
 
 TEST(Cholesky, IndefiniteFailsAndLargeEnoughShiftSucceeds) {
   std::mt19937_64 rng(17);
-  for (CholeskyMode mode : {CholeskyMode::Simplicial, CholeskyMode::Supernodal}) {
+  for (CholeskyMode mode : {CholeskyMode::Simplicial, CholeskyMode::Supernodal, CholeskyMode::Block}) {
     const int n = 120;
     const Eigen::MatrixXd S = random_symmetric(n, 150, rng);
     const double lmin = smallest_eigenvalue(S);
@@ -258,4 +260,26 @@ TEST(Cholesky, IndefiniteFailsAndLargeEnoughShiftSucceeds) {
     EXPECT_EQ(chol.symbolic_count(), 1);
     EXPECT_EQ(chol.numeric_count(), 5);
   }
+}
+
+// The block factorisation on the sizes where its blocks are degenerate: one
+// and two dofs (a padded block), a block-diagonal matrix (no edge for AMD),
+// and the error for a matrix whose pattern was not analysed.
+TEST(Cholesky, BlockFactorisationOfTinyAndBlockDiagonalMatrices) {
+  for (int n : {1, 2, 3, 4, 7}) {
+    Eigen::MatrixXd S = Eigen::MatrixXd::Zero(n, n);
+    for (int i = 0; i < n; ++i) S(i, i) = 2.0 + i;
+    for (int i = 0; i + 1 < n; ++i)
+      if (i % 3 != 2) S(i, i + 1) = S(i + 1, i) = 0.5;  // couplings inside blocks only
+    CholeskySolver chol(CholeskyMode::Block);
+    ASSERT_TRUE(chol.factorize(upper_of(S), 0.25, 1)) << n;
+    const VecX b = VecX::LinSpaced(n, 1.0, 2.0);
+    EXPECT_LT(error_against_dense(chol, S, 0.25, b), 1e-14) << n;
+    EXPECT_FALSE(chol.factorize(upper_of(S), -2.5, 1)) << n;  // S - 2.5 I has a negative eigenvalue
+  }
+  BlockCholesky block;
+  const Eigen::MatrixXd S = Eigen::MatrixXd::Identity(6, 6);
+  block.analyse(upper_of(S));
+  EXPECT_THROW(block.factorize(upper_of(Eigen::MatrixXd::Ones(6, 6) + S), 0.0), std::invalid_argument);
+  EXPECT_THROW(block.solve(VecX::Ones(6)), std::invalid_argument);
 }

@@ -70,6 +70,7 @@ CholeskySolver::CholeskySolver(const CholeskyOptions& options) : options_(option
 CholeskySolver::~CholeskySolver() = default;
 
 long long CholeskySolver::factor_nonzeros() const {
+  if (options_.mode == CholeskyMode::Block) return 9 * block_.factor_blocks();
   const cholmod_factor* L = cm_->L;
   if (!L) return 0;
   const int* count = static_cast<const int*>(L->ColCount);
@@ -175,6 +176,7 @@ bool CholeskySolver::factorize(const Matrix& upper, double shift, std::uint64_t 
   ok_ = false;
   const int n = static_cast<int>(upper.rows());
   if (n == 0) return ok_ = true;
+  if (options_.mode == CholeskyMode::Block) return factorize_block(upper, shift, pattern_version);
   if (pattern_version != analysed_version_ || upper.rows() != analysed_size_ ||
       static_cast<size_t>(nnz) != slot_.size()) {
     const auto t0 = Clock::now();
@@ -198,6 +200,28 @@ bool CholeskySolver::factorize(const Matrix& upper, double shift, std::uint64_t 
   return ok_;
 }
 
+bool CholeskySolver::factorize_block(const Matrix& upper, double shift, std::uint64_t pattern_version) {
+  if (pattern_version != analysed_version_ || upper.rows() != analysed_size_ || upper.rows() != block_.size() ||
+      static_cast<size_t>(upper.nonZeros()) != block_.pattern_nonzeros()) {
+    const auto t0 = Clock::now();
+    const int symbolic = block_.symbolic_count(), orderings = block_.ordering_count();
+    block_.analyse(upper, options_.reuse_ordering, options_.reorder_fill_growth);
+    symbolic_count_ += block_.symbolic_count() - symbolic;
+    ordering_count_ += block_.ordering_count() - orderings;
+    good_ = false;
+    analysed_version_ = pattern_version;
+    analysed_size_ = upper.rows();
+    symbolic_seconds_ += std::chrono::duration<double>(Clock::now() - t0).count();
+  }
+  ++numeric_count_;
+  ok_ = block_.factorize(upper, shift);
+  if (ok_) {
+    good_ = true;
+    good_shift_ = shift;
+  }
+  return ok_;
+}
+
 bool CholeskySolver::recall(double shift) {
   if (!good_ || shift != good_shift_) return false;
   ok_ = true;
@@ -210,6 +234,7 @@ VecX CholeskySolver::solve(const VecX& b) const {
   require(b.size() == n, "CholeskySolver::solve: right-hand side has the wrong size");
   VecX x(n);
   if (n == 0) return x;
+  if (options_.mode == CholeskyMode::Block) return block_.solve(b);
   work_.resize(n);
   for (Eigen::Index k = 0; k < n; ++k) work_(k) = b(perm_[static_cast<size_t>(k)]);
   cholmod_dense rhs{};

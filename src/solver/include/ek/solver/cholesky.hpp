@@ -33,16 +33,20 @@
 #include <vector>
 
 #include "ek/geometry/types.hpp"
+#include "ek/solver/block_cholesky.hpp"
 
 namespace ek {
 
 enum class CholeskyMode {
-  Simplicial,  ///< simplicial LL' (best for the banded rod Hessians of a few thousand dofs)
-  Supernodal,  ///< supernodal LL' (BLAS-3; better for large, dense fill)
+  Simplicial,  ///< CHOLMOD's simplicial LL'
+  Supernodal,  ///< CHOLMOD's supernodal LL' (BLAS-3; better for large, dense fill)
+  /// Our 3 × 3 block factorisation (block_cholesky.hpp): the same LL' of a
+  /// block-permuted H, with the symbolic work on the vertex graph.
+  Block,
 };
 
 struct CholeskyOptions {
-  CholeskyMode mode = CholeskyMode::Simplicial;
+  CholeskyMode mode = CholeskyMode::Block;  ///< the factorisation (Block: 3-5x faster than Simplicial on rod Hessians)
   /// Keep the fill-reducing ordering across pattern changes (see the file comment).
   bool reuse_ordering = true;
   /// [1] rerun AMD when nnz(L) exceeds (1 + this) times nnz(L) of the last AMD ordering.
@@ -53,7 +57,7 @@ class CholeskySolver {
  public:
   using Matrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 
-  explicit CholeskySolver(CholeskyMode mode = CholeskyMode::Simplicial);
+  explicit CholeskySolver(CholeskyMode mode = CholeskyMode::Block);
   explicit CholeskySolver(const CholeskyOptions& options);
   ~CholeskySolver();
   CholeskySolver(const CholeskySolver&) = delete;
@@ -88,12 +92,14 @@ class CholeskySolver {
 
  private:
   struct Cholmod;  // the cholmod_common and factor (keeps cholmod.h out of this header)
+  bool factorize_block(const Matrix& upper, double shift, std::uint64_t pattern_version);
   void analyse(const Matrix& upper);
   void order(const Matrix& upper);
   void build_permuted_pattern(const Matrix& upper);
 
   CholeskyOptions options_;
   std::unique_ptr<Cholmod> cm_;
+  BlockCholesky block_;       // CholeskyMode::Block
   std::uint64_t analysed_version_ = ~std::uint64_t(0);
   Eigen::Index analysed_size_ = -1;
   std::vector<int> perm_;     // perm_[new] = old (the fill-reducing P)
