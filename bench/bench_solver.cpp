@@ -1,4 +1,4 @@
-// Microbenchmarks of the solver's factorisations (issue 11): the Hessian of a
+// Microbenchmarks of the solver's factorisations: the Hessian of a
 // relaxed trefoil (rod + contact, n = 400, the default material) factorised
 // by CholeskySolver (CHOLMOD) with a new symbolic analysis every time (the
 // contact set changed) against a numeric factorisation that reuses it (the
