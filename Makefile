@@ -1,5 +1,5 @@
 # Elastic knots: the two commands a new user needs are `make test` and
-# `make figures`; every target is listed by `make help` and in README.md.
+# `make figures`; every target is listed by `make help` and in docs/reproducing.md.
 
 BUILD      ?= build
 JOBS       ?= 2
@@ -17,15 +17,17 @@ help:
 	@echo "make test      build, run all tests (unit, parsers, short stress, paper claims at ci scale, sanitizers)"
 	@echo "make figures   build, run every experiment at SCALE=$(SCALE), write figures/out/*.png|pdf"
 	@echo "make experiment-NAME   run one experiment (NAME: dataset milnor planarity multistability adaptive ...)"
-	@echo "make claims    the paper checks on the results of SCALE (make figures ends with it)"
+	@echo "make claims    the paper checks on the results of SCALE (make figures ends with it; docs/reproducing.md)"
 	@echo "make paper-open  the claims not reproduced (paper_checks/open_claims.cpp), values printed"
-	@echo "make bench     Google Benchmark microbenchmarks and macro benchmarks (results/bench/)"
+	@echo "make bench     Google Benchmark microbenchmarks and macro benchmarks (results/bench/; docs/performance.md)"
 	@echo "make stress    the long numerical stress tests (label stress-long)"
 	@echo "make sanitize  parsers and readers built and tested with AddressSanitizer and UBSan"
 	@echo "make unit      unit tests only"
 	@echo "make deps      install missing Debian packages (scripts/install-deps.sh)"
 	@echo "make clean     remove build folders (results/ and figures/out/ are kept)"
 	@echo "Variables: KNOT_TABLE=$(KNOT_TABLE) SCALE=ci|default|paper JOBS=$(JOBS) BUILD=$(BUILD)"
+	@echo "Documentation: README.md; docs/reproducing.md (targets, scales, claims), docs/cli.md (knots),"
+	@echo "  docs/models.md, docs/performance.md, docs/dataset-format.md"
 
 deps:
 	@scripts/install-deps.sh

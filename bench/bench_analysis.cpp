@@ -1,4 +1,4 @@
-// Microbenchmarks of the analysis module. The target of issue 7: a 500 x 500
+// Microbenchmarks of the analysis module. The target: a 500 x 500
 // similarity matrix at n = 400 in at most 2 s on one core
 // (taskset -c 1 build/bench/bench_analysis --benchmark_filter=SimilarityMatrix).
 #include <benchmark/benchmark.h>
@@ -54,7 +54,7 @@ const char* label_of(int code) {
   return labels[code];
 }
 
-/// The issue's target: similarity_matrix(500 curves of 400 vertices), signatures and spectra included.
+/// The target (2 s): similarity_matrix(500 curves of 400 vertices), signatures and spectra included.
 void BM_SimilarityMatrix(benchmark::State& state) {
   const int count = static_cast<int>(state.range(0)), n = static_cast<int>(state.range(1));
   const int code = static_cast<int>(state.range(2));

@@ -1,4 +1,4 @@
-// Contact module microbenchmarks (issue 5 targets, one core):
+// Contact module microbenchmarks (targets, one core):
 //  - broad phase + barrier gradient + Hessian assembly at n = 400: <= 50 µs median
 //  - one collision-detection query for a Newton-sized step: <= 100 µs median
 //
@@ -226,7 +226,7 @@ void BM_NoContact(benchmark::State& st) {
   st.counters["active"] = static_cast<double>(cp.num_active());
 }
 
-// The "off" side of two skips (issue 11): without the broad phase every pair
+// The "off" side of two skips: without the broad phase every pair
 // of non-adjacent edges is tested. BM_NoContactAllPairs: the distance test of
 // all pairs on the contact-free circle of BM_NoContact; BM_MaxStepAllPairs:
 // the collision-detection query of BM_MaxStep over all pairs instead of the

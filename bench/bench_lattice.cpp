@@ -1,4 +1,4 @@
-// Lattice sampling speed (issue 3): one 400-vertex sample of a 12-crossing
+// Lattice sampling speed: one 400-vertex sample of a 12-crossing
 // knot, target <= 20 ms median on one core. Reported:
 //  - FirstSample: the whole pipeline from the knot table (embeddings, certified
 //    rounding, Alexander checks, grow to 4000 and shrink to 400, the sample's

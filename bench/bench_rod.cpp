@@ -1,6 +1,6 @@
 // Microbenchmarks of the discrete elastic rod at the paper's size (n = 400,
 // unit edges): energy, gradient and Hessian assembly, per twist model.
-// Target (issue 4): energy + gradient + Hessian assembly <= 100 µs median on
+// Target: energy + gradient + Hessian assembly <= 100 µs median on
 // one core (taskset -c 1 build/bench/bench_rod).
 #include <benchmark/benchmark.h>
 

@@ -1,4 +1,4 @@
-// Macro benchmark of the equilibrium solver (issue 6, "Speed"; issue 11).
+// Macro benchmark of the equilibrium solver (docs/performance.md).
 //
 // A fixed set of BFACF lattice samples (fixed seeds; default 20 each of 4_1,
 // 8_19, 10_100 and 12a_1019 with n = 400 unit edges) is relaxed one after the
@@ -6,8 +6,8 @@
 // and tolerance (1e-8). For every knot and overall it prints and writes the
 // median wall time per equilibrium, the median number of Newton iterations,
 // the statuses, and the time split (assembly, factorisation, collision
-// detection, line search, eigen-analysis). Pin it to one core for the
-// issue's measurement: `taskset -c 1 build/experiments/exp_bench_solver`.
+// detection, line search, eigen-analysis). Pin it to one core for a
+// measurement: `taskset -c 1 build/experiments/exp_bench_solver`.
 //
 //   exp_bench_solver [--quick] [--count K] [--knots A,B,...] [--seed S] [--out DIR]
 //                    [--method default|projected|paper] [--continuation F[,F...]] [--max-iter N]
@@ -21,7 +21,7 @@
 // failed factorisations, time in exact-Hessian iterations), also written to
 // DIR/solver_trace_summary.csv.
 //
-// --skips (issue 11, "skip what a scene does not need", measured on and off):
+// --skips ("skip what a scene does not need", measured on and off):
 // every sample is relaxed three times, one after the other: as by default
 // (Θ free: the twist-free 3n-dof path; no eigen-analysis), with the full
 // 4n+1-dof model (RelaxOptions::full_model, the twist-free skip off), and

@@ -4,7 +4,7 @@
 //   default: every knot with 3..8 crossings, 40 samples each
 //   paper:   all 2,977 knots with up to 12 crossings, adaptive sampling (50 + 10, at most 500)
 // n = 400 unit edges, r = 0.2, E = 2000 (length/diameter 1000), seed 1.
-// Writes dataset.h5 (README "Data-set files") and summary.json.
+// Writes dataset.h5 (docs/dataset-format.md) and summary.json.
 #include <iostream>
 
 #include "ek/dataset/run.hpp"

@@ -32,7 +32,7 @@
 using namespace ek;
 using namespace ek::exp;
 
-/// 3D-ness at or above which the released state counts as 3D (issue 10).
+/// 3D-ness at or above which the released state counts as 3D (our threshold).
 constexpr double kJumpThreedim = 0.3;
 
 int main(int argc, char** argv) {

@@ -1,4 +1,4 @@
-// exp_time_vs_error: run time against error (issue 11), one core.
+// exp_time_vs_error: run time against error, one core (docs/performance.md).
 //
 //  Unit edges throughout: the contact barrier acts between non-adjacent edges
 //  closer than d̂ = 2r = 0.4, so edges shorter than d̂ would put neighbours

@@ -1,4 +1,4 @@
-"""Run time against error (issue 11; `make bench`): the k-covered circle, the
+"""Run time against error (`make bench`; docs/performance.md): the k-covered circle, the
 critical link of Michell's instability, knot equilibria at several n against
 a Richardson reference, and the solver tolerance sweep. Reads
 results/bench/time_vs_error/*.csv (exp_time_vs_error); prints the table."""

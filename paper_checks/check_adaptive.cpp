@@ -2,7 +2,7 @@
 // importance score S <= 0.1). Checked here: the score, not the budget cap,
 // ends the sampling for at least 95% of the knots (the paper: 95%), and the
 // paper's rule (50 + 10, budget 500) saves at least 60% of the simulations
-// (the paper: 70%; issue 9: at least 60%). "Every low-energy state is still
+// (the paper: 70%). "Every low-energy state is still
 // found" is asserted in open_claims.cpp.
 #include <gtest/gtest.h>
 
@@ -22,7 +22,7 @@ TEST(PaperAdaptive, ScoreEndsTheSamplingForMostKnots) {
 // S <= 0.1, at most 500) against 500 samples per knot, replayed on the stored
 // runs (exact where the rule stops within them; a knot it would sample past
 // them counts as 500 for the lower bound and as one more sample for the upper
-// bound). Tolerance: the saved share >= 0.6 (issue 9; the paper measured 0.7).
+// bound). Tolerance: the saved share >= 0.6 (the paper measured 0.7).
 // At the default and paper scales every knot must stop within the stored runs,
 // so the lower bound is the exact share and is asserted; at the ci scale (60
 // stored samples) only the upper bound is, i.e. that the claim is not refuted.

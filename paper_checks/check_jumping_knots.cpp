@@ -28,7 +28,7 @@ TEST(PaperJumpingKnots, TwelveA1019Jumps) {
   EXPECT_EQ(r.at("flat_status"), "converged-stable");
   EXPECT_EQ(r.at("final_status"), "converged-stable");
   EXPECT_LE(num(r, "flat_threedim"), 0.1);              // flat: 3D-ness below the planarity threshold
-  EXPECT_GE(num(r, "final_threedim"), 0.3);             // issue 10: 3D-ness at least 0.3 after release
+  EXPECT_GE(num(r, "final_threedim"), 0.3);             // 3D-ness at least 0.3 after release
   EXPECT_LT(num(r, "final_energy"), num(r, "flat_energy"));  // it releases stored energy
   EXPECT_LE(num(r, "link_error"), 1e-6);                // Lk_B preserved throughout (Appendix C), 1e-6
   EXPECT_EQ(r.at("jumps"), "1");                        // the experiment's verdict agrees

@@ -37,7 +37,7 @@ TEST(PaperMilnor, EveryEquilibriumIsAboveTheBound) {
 }
 
 // BB knots (bridge index = braid index) reach the bound in a multi-covered
-// circle: smallest ratio within 3% of 1 (tolerance from the issue; the paper's
+// circle: smallest ratio within 3% of 1 (our tolerance for the paper's
 // "approximately", footnote 3: wire thickness), with 3D-ness below 0.1.
 TEST(PaperMilnor, BBKnotsReachTheBoundAsMultiCoveredCircles) {
   const auto rows = paper::csv(paper::results("milnor") + "/milnor.csv");
@@ -54,7 +54,7 @@ TEST(PaperMilnor, BBKnotsReachTheBoundAsMultiCoveredCircles) {
 }
 
 // The knots farthest from the bound are 2-bridge knots: the top decile by
-// smallest ratio is all 2-bridge (issue 9 asks for the measured share).
+// smallest ratio is all 2-bridge (the measured share is printed).
 TEST(PaperMilnor, FarthestKnotsAreTwoBridge) {
   const auto s = paper::summary("milnor");
   const double share = s.at("top_decile_two_bridge_share").get<double>();

@@ -1,5 +1,5 @@
 // Paper Figs. 2, 6 and 8: 4_1, 7_7 and 8_1 are multistable. Distinct: clusters
-// of complete linkage cut at the one documented threshold (README: 0.05 in
+// of complete linkage cut at the one documented threshold (docs/models.md: 0.05 in
 // 1 - similarity). The paper's count for 8_1 (at least eight) is asserted in
 // open_claims.cpp: at the ci scale (40 samples) this implementation finds fewer.
 #include <gtest/gtest.h>

@@ -18,7 +18,7 @@ std::string label(const nlohmann::json& m) {
 }
 }  // namespace
 
-// The family as in the issue: 5 members of (σ1σ2⁻¹)^p and 3 of (σ1σ2⁻¹σ3)^p,
+// The family of paper Fig. 16: 5 members of (σ1σ2⁻¹)^p and 3 of (σ1σ2⁻¹σ3)^p,
 // all knots; the tabulated ones (4_1, 8_18, 10_123, 9_40) carry the table's
 // Alexander polynomial after relaxation. Tolerance: exact (integer polynomials).
 TEST(PaperPeriodicBraids, TabulatedMembersKeepTheTablesKnotType) {

@@ -1,6 +1,6 @@
 // Paper Section 8.2: "a significant majority of the observed elastic
 // equilibria are approximately planar". Planar: 3D-ness < 0.1 (the threshold
-// is ours, stated in README). Check: the share exceeds one half.
+// is ours, stated in docs/models.md). Check: the share exceeds one half.
 #include <gtest/gtest.h>
 
 #include "ek/dataset/dataset_file.hpp"

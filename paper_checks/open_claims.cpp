@@ -1,7 +1,7 @@
 // Claims of the paper that this implementation does not reproduce (label
 // `paper-open`; not part of `make test`, run by `make paper-open`). Each test
 // asserts the claim as the paper states it and prints the measured value; the
-// README's claim table and the issues' notes give the evidence. A test here
+// claim table of docs/reproducing.md gives the evidence. A test here
 // that starts passing is moved to its check_<experiment>.cpp.
 #include <gtest/gtest.h>
 
@@ -47,7 +47,7 @@ TEST(PaperOpenMultistability, EightOneHasAtLeastEightMostlyPlanarEquilibria) {
   EXPECT_LE(4 * three_d, distinct);
 }
 
-// Issue 9: adaptive sampling finds every low-energy state (every cluster of
+// Adaptive sampling finds every low-energy state (every cluster of
 // the full budget within 20% of the knot's minimum energy). The savings of
 // Section 7.4 are checked in check_adaptive.cpp. Measured at default: 11 of
 // the 14 missed clusters hold 1-3 of ~150 samples; a rule that runs a share k

@@ -3,28 +3,28 @@
 
 Google Benchmark JSON files (bench_*.json, run with repetitions) contribute
 their median aggregates; macro-benchmark CSV files (*.csv with a header) are
-printed as they are. Targets come from the issues and are listed here so the
-table shows the margin."""
+printed as they are. The speed targets (docs/performance.md) are listed here so
+the table shows the margin."""
 import csv
 import glob
 import json
 import os
 import sys
 
-# benchmark name prefix -> (target, unit) from the issues
+# benchmark name prefix -> (target, unit) of the speed targets
 # (the run-name prefixes of the benchmarks the targets are about)
 TARGETS = {
-    "BM_EnergyGradientHessian/0/": (100e-6, "s"),   # issue 4: twist-free rod E + g + H, n = 400
-    "BM_UpdateGradientHessian/0/": (50e-6, "s"),    # issue 5: broad phase + barrier g + H, knot13
-    "BM_MaxStep/": (100e-6, "s"),                   # issue 5: one CCD query
-    "BM_FirstSample/": (20e-3, "s"),                # issue 3: one lattice sample, 12 crossings
+    "BM_EnergyGradientHessian/0/": (100e-6, "s"),   # twist-free rod E + g + H, n = 400
+    "BM_UpdateGradientHessian/0/": (50e-6, "s"),    # broad phase + barrier g + H, knot13
+    "BM_MaxStep/": (100e-6, "s"),                   # one CCD query
+    "BM_FirstSample/": (20e-3, "s"),                # one lattice sample, 12 crossings
     "BM_NextSample/": (20e-3, "s"),
-    "BM_SimilarityMatrix/500/": (2.0, "s"),         # issue 7: 500 x 500 similarity matrix
+    "BM_SimilarityMatrix/500/": (2.0, "s"),         # 500 x 500 similarity matrix
 }
 
 UNIT = {"ns": 1e-9, "us": 1e-6, "ms": 1e-3, "s": 1.0}
 
-# Issue 11, "skip what a scene does not need": each skip measured on and off.
+# "Skip what a scene does not need": each skip measured on and off.
 # (what is skipped, benchmark with the skip, benchmark without it); names are
 # Google Benchmark run names (median aggregates) or "solver_skips:VARIANT"
 # (total seconds of exp_bench_solver --skips over the same lattice samples).
@@ -83,7 +83,7 @@ def skips_table(rows, folder):
     if not lines:
         return
     width = max(len(w) for w, _, _ in lines)
-    print(f"\nskips (issue 11): time with the skip (on) and without it (off), one core")
+    print(f"\nskips: time with the skip (on) and without it (off), one core")
     print(f"{'skip':<{width}}  {'on':>12}  {'off':>12}  {'speed-up':>8}")
     for what, t_on, t_off in lines:
         print(f"{what:<{width}}  {fmt_seconds(t_on):>12}  {fmt_seconds(t_off):>12}  {t_off / t_on:7.2f}x")

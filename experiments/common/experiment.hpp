@@ -36,7 +36,7 @@ struct Args {
 /// old results (a data set would otherwise skip every knot it already holds).
 /// DIR.previous is removed when the new run finishes (run_experiment); a
 /// failed or interrupted run leaves it, and its own unfinished DIR, which the
-/// next run resumes (data-set journals, README "Data-set files").
+/// next run resumes (data-set journals, docs/dataset-format.md).
 Args parse_args(int argc, char** argv, const std::string& name, const std::string& description);
 
 /// DIR.previous for an output folder DIR ("dir/" and "dir" give the same).

@@ -1,6 +1,6 @@
 #pragma once
-// The experiments' parameters per scale, in one place (README "Reproducing
-// the paper" lists them). Times are estimates from measured per-relaxation
+// The experiments' parameters per scale, in one place (docs/reproducing.md
+// lists them). Times are estimates from measured per-relaxation
 // costs on the reference machine (2 cores).
 #include <cmath>
 #include <string>

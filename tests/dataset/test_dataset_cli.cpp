@@ -62,7 +62,7 @@ TEST(DatasetCli, ContinuationIsRecorded) {
   fs::remove_all(dir);
 }
 
-// Issue 8: a small end-to-end run (3_1, 4_1, 5_1, 5_2; 20 samples each; 2 jobs)
+// A small end-to-end run (3_1, 4_1, 5_1, 5_2; 20 samples each; 2 jobs)
 // gives a valid data set that the query and cluster commands read.
 TEST(DatasetCli, EndToEndQueryClusterExport) {
   const std::string dir = temp_dir("ds_e2e");
@@ -105,7 +105,7 @@ TEST(DatasetCli, EndToEndQueryClusterExport) {
   fs::remove_all(dir);
 }
 
-// Issue 8: kill a run midway (SIGKILL), re-run, and get every equilibrium of
+// Kill a run midway (SIGKILL), re-run, and get every equilibrium of
 // an uninterrupted run with the same seeds; the output is never unreadable.
 TEST(DatasetCli, KilledRunResumesWithoutLoss) {
   const std::string dir = temp_dir("ds_resume");
@@ -146,7 +146,7 @@ TEST(DatasetCli, KilledRunResumesWithoutLoss) {
   fs::remove_all(dir);
 }
 
-// Issue 8: merge of two shards equals the unsharded run.
+// A merge of two shards equals the unsharded run.
 TEST(DatasetCli, MergedShardsEqualTheUnshardedRun) {
   const std::string dir = temp_dir("ds_shards");
   const std::string args = "dataset --names 3_1,4_1,5_2 --samples 4 --jobs 2" + kSmall;
@@ -173,7 +173,7 @@ TEST(DatasetCli, MergedShardsEqualTheUnshardedRun) {
   fs::remove_all(dir);
 }
 
-// Issue 8: an unknown knot, an unwritable output, an existing data set with a
+// An unknown knot, an unwritable output, an existing data set with a
 // different material or n: a clear error, nothing overwritten.
 TEST(DatasetCli, BadInputOverwritesNothing) {
   const std::string dir = temp_dir("ds_bad");

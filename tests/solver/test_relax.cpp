@@ -27,7 +27,7 @@ Points unit_ring(int n) {
 
 }  // namespace
 
-// Michell's instability (issue 6 test 3): critical link √3 (1 + ν) = 2.2517 at ν = 0.3.
+// Michell's instability (paper Appendix C): critical link √3 (1 + ν) = 2.2517 at ν = 0.3.
 TEST(Relax, MichellRingStaysFlatBelowCriticalLink) {
   RelaxOptions o;
   o.link = 2.0;
@@ -79,7 +79,7 @@ TEST(Relax, PeerFilesRelaxAsTheyAre) {
 }
 
 TEST(Relax, FastPathAndFullModelReachTheSameEnergy) {
-  // Issue 4: the twist-free fast path and the full model with Θ free reach
+  // The twist-free fast path and the full model with Θ free reach
   // the same energy to solver tolerance. From the same lattice start they may
   // follow different paths into different nearby minima of a flat landscape,
   // so each model is started from the other's equilibrium: it must already be
@@ -158,14 +158,14 @@ TEST(Relax, PlanaritySlabFlattensAndReleaseKeepsLink) {
   EXPECT_EQ(r.report.symbolic_factorizations + r.slab_report->symbolic_factorizations,
             r.all_phases().symbolic_factorizations);
   EXPECT_TRUE(r.alexander_preserved);
-  EXPECT_NEAR(r.link, *o.link, 1e-6);  // issue 10: the link stays Lk_B throughout (1e-6)
+  EXPECT_NEAR(r.link, *o.link, 1e-6);  // the link stays Lk_B throughout (1e-6)
   EXPECT_EQ(to_string(r.slab_report->status), "converged-stable");
   EXPECT_EQ(r.status(), "converged-stable");
   EXPECT_LE(r.energy.total, r.slab_energy->total + 1e-9);
 }
 
 TEST(Relax, FlatCoilOfTwelveCrossingsConvergesUnderTheSlab) {
-  // Regression (issue 10, jumping knots): the 5-strand coil of 12a_1019
+  // Regression (jumping knots): the 5-strand coil of 12a_1019
   // (n = 400, the data set's wire) under the slab |z| < 2 d̂. Removing all
   // six rigid motions from the Newton steps removed the slab's curvature
   // along z and the x/y tilts: the flat stage stalled at ||g|| ≈ 2e-2 after

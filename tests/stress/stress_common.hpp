@@ -1,5 +1,5 @@
 #pragma once
-// Shared checks of the numerical stress tests (issue 11): every run ends with
+// Shared checks of the numerical stress tests: every run ends with
 // a status, nothing is NaN or infinite, the knot type is preserved.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// Numerical stress tests that fit in `make test` (issue 11): thickness,
+// Numerical stress tests that fit in `make test`: thickness,
 // near-contact starts, perturbed equilibria, extreme parameters, and a small
 // volume of lattice samples. Pass: no NaN or Inf, no crash, no hang (every run
 // ends with a status within its iteration budget), the Alexander polynomial

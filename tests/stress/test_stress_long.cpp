@@ -1,6 +1,6 @@
-// Long stress runs for `make stress` (issue 11): the volume of lattice samples
-// over knots up to 12 crossings: 10,000 by default (issue 11: at least 10,000
-// in `make stress`; about 2 h on two cores at ~1.2 s per relaxation);
+// Long stress runs for `make stress`: the volume of lattice samples over knots
+// up to 12 crossings: 10,000 by default (at least 10,000 in `make stress`;
+// about 2 h on two cores at ~1.2 s per relaxation);
 // EK_STRESS_VOLUME=N for a shorter or longer run. Two jobs. Counts are printed,
 // with a progress line every 500 runs. EK_STRESS_LOG=FILE writes one CSV row per
 // run (index, knot, seed, status, iterations, seconds, energy, gradient norm,

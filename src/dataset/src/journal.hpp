@@ -1,6 +1,6 @@
 #pragma once
 // Private: the append-only journal of finished runs of one knot, so that an
-// interrupted run loses no completed equilibrium (crash safety, issue 8).
+// interrupted run loses no completed equilibrium (crash safety).
 //
 // File: the header line "elastic-knots-journal 1\n", the options text and
 // '\n', then records: u32 magic 0x314E5552 ("RUN1"), u32 payload length,

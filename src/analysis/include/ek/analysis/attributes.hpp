@@ -52,7 +52,7 @@
 
 namespace ek {
 
-/// Material for the stress attribute; defaults as in the paper's data set (rod issue).
+/// Material for the stress attribute; defaults as in the paper's data set (RodMaterial's defaults).
 struct AttributeOptions {
   double radius = 0.2;              ///< [length] wire radius r (length/diameter = 1000 at n = 400, unit edges)
   double young_modulus = 2000.0;    ///< [stress] Young's modulus E

@@ -72,7 +72,7 @@
 
 namespace ek {
 
-/// Defaults (paper Section 6 and issue 5).
+/// Defaults (paper Section 6).
 inline constexpr double kDefaultDhat = 0.4;          ///< 2r with r = 0.2
 inline constexpr double kDefaultContactStiffness = 1e3;
 

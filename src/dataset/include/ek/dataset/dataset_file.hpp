@@ -1,6 +1,6 @@
 #pragma once
 /// The data-set file: one HDF5 file holds the equilibria of many knot types
-/// (paper Section 7.4). Layout (README "Data-set files" documents it for users):
+/// (paper Section 7.4). Layout (docs/dataset-format.md documents it for users):
 ///
 ///   /                                  attributes: format = "elastic-knots-dataset", format_version,
 ///                                      project_version, created, knot_table, material and solver

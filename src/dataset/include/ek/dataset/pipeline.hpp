@@ -50,7 +50,7 @@ struct ExploreOptions {
   /// before sample 0, so sample k is the walk's sample burn_in + k (the same
   /// curve and seed as sample burn_in + k of a run without burn-in). The walk
   /// starts next to the rounded table drawing and drifts away over many
-  /// samples (README, "Lattice sampling"); 0 keeps every sample.
+  /// samples (docs/models.md, "Lattice sampling"); 0 keeps every sample.
   int burn_in = 0;
   bool adaptive = false;           ///< adaptive sampling (see the file comment)
   int initial_samples = 50;        ///< [1]
