@@ -37,9 +37,8 @@
 // the split count every phase; the method column reads e.g.
 // "default+continuation(0.001)".
 // --quick: 2 samples per knot (smoke test). --method paper: the paper's plain
-// method (exact Hessian every iteration, shift restarted at ε·λ_min, every
-// factorisation on the pattern of the current contact set), for before/after
-// comparisons. Writes DIR/solver_macro.csv (one row per knot and one "all"
+// method (NewtonOptions::paper(): the exact Hessian every iteration, no
+// rigid-motion removal), for before/after comparisons. Writes DIR/solver_macro.csv (one row per knot and one "all"
 // row) and DIR/solver_macro_runs.csv (one row per sample, with the energy,
 // contacts and gradient norm at the result, to compare methods sample by
 // sample). Exit status 1 when a run changed the knot type (its Alexander

@@ -41,8 +41,8 @@ struct RelaxOptions {
   /// 1e-8 for its material and unit edges, scaled like the gradient.
   double tolerance = 0.0;
   /// [1] Newton iterations (per phase). 5,000: at 2,000 later samples of a
-  /// walk were cut off in slow descents that converge in 2,000–2,400 (README,
-  /// "Solver").
+  /// walk were cut off in slow descents that converge in 2,000–2,400
+  /// (docs/models.md, "Solver").
   int max_iterations = 5000;
   /// Prescribed link Lk: the full model with Θ fixed (FixedLink). Without it
   /// Θ is free and the twist relaxes to zero, so the centerline-only fast path
@@ -59,8 +59,9 @@ struct RelaxOptions {
   /// Newton iteration (a pair that the Hessian does not yet see stops the
   /// step); with a soft barrier the knot tightens in far fewer iterations
   /// and the final solve only pushes the contacts apart by their extra
-  /// penetration. Measured (exp_bench_solver --continuation, README
-  /// "Solver"): {1e-3} cuts the median time per equilibrium by about 2×.
+  /// penetration. Measured (exp_bench_solver --continuation,
+  /// docs/performance.md): {1e-3} cuts the median time per equilibrium by
+  /// about 2×.
   std::vector<double> contact_continuation;
   /// Planarity slab |z| < h (slab.hpp). With release_slab the slab is dropped
   /// after the first phase and the solve continues from the flat state.
