@@ -295,10 +295,11 @@ TEST(Relax, ContinuationEndsAtTheStiffModel) {
   const Points curve = embed_knot(KnotTable::global().at("3_1"), EmbeddingSource::Braid, eo).points;
   const AlexanderPolynomial input = alexander(curve);
   RelaxOptions direct;
+  direct.method = RelaxMethod::Direct;
   const RelaxResult d = relax(curve, direct);
   ASSERT_EQ(d.status(), "converged-stable");
 
-  RelaxOptions cont;
+  RelaxOptions cont = direct;
   cont.contact_continuation = {1e-3};
   const RelaxResult c = relax(curve, cont);
   ASSERT_EQ(c.status(), "converged-stable");
@@ -315,7 +316,7 @@ TEST(Relax, ContinuationEndsAtTheStiffModel) {
   EXPECT_EQ(all.gradient_norm, c.report.gradient_norm);
 
   // the soft model alone: the same start with ω·1e-3
-  RelaxOptions soft;
+  RelaxOptions soft = direct;
   soft.contact_stiffness = 1e-3 * 1e3;  // the default ω for r = 0.2, E = 2000 is 1e3
   const RelaxResult s = relax(curve, soft);
   ASSERT_EQ(s.status(), "converged-stable");

@@ -1,6 +1,7 @@
 // knots relax FILE [-o OUT] [--link LK] [--planar H [--release]] [--tol T] [--max-iter N]
 //             [--radius R] [--young E] [--poisson NU] [--contact-stiffness W] [--continuation F[,F...]]
-//             [--full-model] [--method M] [--eigen] [--stop-at-saddle] [--trace FILE.csv] [--verbose] [--json]
+//             [--full-model] [--method M] [--coarse-levels L] [--factorization F] [--eigen] [--stop-at-saddle]
+//             [--trace FILE.csv] [--verbose] [--json]
 #include <algorithm>
 #include <iostream>
 
@@ -57,7 +58,7 @@ int cmd_relax(int argc, char** argv) {
   RelaxOptions opt;
   ArgParser args("relax", "FILE [-o OUT] [--link LK] [--planar H [--release]] [--tol T] [--max-iter N] [--radius R] "
                           "[--young E] [--poisson NU] [--contact-stiffness W] [--continuation F[,F...]] [--full-model] "
-                          "[--method M] [--eigen] "
+                          "[--method M] [--coarse-levels L] [--factorization F] [--eigen] "
                           "[--stop-at-saddle] [--trace FILE.csv] [--verbose] [--json]");
   args.positional("FILE", &file, "closed curve (.obj or .txt); its edge lengths are the rest lengths");
   args.option("-o,--output", &out, "write the equilibrium here (.obj or .txt), atomically");
@@ -79,8 +80,16 @@ int cmd_relax(int argc, char** argv) {
   args.flag("--eigen", &eigen, "also report the smallest non-rigid eigenvalue of the Hessian");
   args.flag("--stop-at-saddle", &stop_at_saddle, "report converged-unstable at a saddle instead of leaving it");
   args.option("--method", &method,
-              "Newton directions: default (hybrid: projected Hessian far from equilibrium, exact near it), "
-              "exact (exact Hessian every iteration) or paper (NewtonOptions::paper())");
+              "default (multilevel: coarse-to-fine from n/2 vertices with contact-stiffness continuation at the "
+              "coarse level, for the twist-free model without a slab; hybrid Newton directions: projected Hessian "
+              "far from equilibrium, exact near it), hybrid (hybrid Newton at n vertices from the input), "
+              "exact (exact Hessian every iteration, at n) or paper (NewtonOptions::paper(), at n)");
+  args.option("--coarse-levels", &opt.coarse_levels,
+              "multilevel: coarse levels below n, each halving the vertices (default " +
+                  std::to_string(kDefaultCoarseLevels) + ")");
+  std::string factorization = "block";
+  args.option("--factorization", &factorization,
+              "sparse Cholesky: block (3 x 3 blocks, default) or cholmod (CHOLMOD's simplicial LL')");
   std::string trace;
   args.option("--trace", &trace,
               "write one CSV row per Newton iteration of every phase (energy and its parts, gradient norm, "
@@ -88,15 +97,22 @@ int cmd_relax(int argc, char** argv) {
   args.flag("--verbose", &opt.newton.verbose, "print one line per Newton iteration on stderr");
   args.flag("--json", &json, "print one JSON object");
   if (!args.parse(argc, argv)) return 0;
-  if (method == "exact") {
+  if (method == "hybrid") {
+    opt.method = RelaxMethod::Direct;
+  } else if (method == "exact") {
+    opt.method = RelaxMethod::Direct;
     opt.newton.hessian = HessianMode::Exact;
   } else if (method == "paper") {
     const bool verbose = opt.newton.verbose;
+    opt.method = RelaxMethod::Direct;
     opt.newton = NewtonOptions::paper();
     opt.newton.verbose = verbose;
   } else if (method != "default") {
-    throw InputError("--method must be default, exact or paper, not '" + method + "'");
+    throw InputError("--method must be default, hybrid, exact or paper, not '" + method + "'");
   }
+  if (factorization == "cholmod") opt.newton.cholesky.mode = CholeskyMode::Simplicial;
+  else if (factorization != "block")
+    throw InputError("--factorization must be block or cholmod, not '" + factorization + "'");
   // the factors' range (0, 1) is checked by RelaxOptions::validate() in relax()
   opt.contact_continuation = parse_number_list(continuation, "--continuation");
   if (!out.empty()) check_writable(out);
@@ -144,7 +160,15 @@ int cmd_relax(int argc, char** argv) {
     j["model"] = r.model;
     j["vertices"] = r.positions.rows();
     j["smallest_eigenvalue"] = r.smallest_eigenvalue ? number(*r.smallest_eigenvalue) : Json(nullptr);
+    j["method"] = method;
+    j["phases"] = r.phases;
     j["report"] = report_json(r.report);
+    if (!r.coarse_reports.empty()) {
+      Json c = Json::array();
+      for (const NewtonReport& cr : r.coarse_reports) c.push_back(report_json(cr));
+      j["coarse_reports"] = c;
+      j["coarse_vertices"] = r.coarse_vertices;
+    }
     if (!r.continuation_reports.empty()) {
       Json c = Json::array();
       for (const NewtonReport& cr : r.continuation_reports) c.push_back(report_json(cr));

@@ -33,9 +33,51 @@ class ShiftInvertOp {
 
 }  // namespace
 
+namespace {
+
+// Without material angles the six modes have closed forms: the translations
+// (one coordinate of every vertex, 1/√n) are orthonormal, the rotations
+// e_a × p_i about the centroid are orthogonal to them (Σ p_i = 0), and the
+// rotations' Gram matrix is the inertia tensor J = Σ (|p|² I − p pᵀ), so
+// R V Λ^{-1/2} (J = V Λ Vᵀ) is an orthonormal basis of their span: O(n)
+// instead of Gram-Schmidt on dofs-long columns. Rotations with Λ at round-off
+// level (below 1e-12 of the largest: about the axis of a straight line) are
+// dropped.
+Eigen::MatrixXd rigid_modes_positions(const Points& positions, int dofs, bool planar_slab) {
+  const int n = static_cast<int>(positions.rows());
+  const Vec3 c = positions.colwise().mean().transpose();
+  Mat3 J = Mat3::Zero();
+  for (int i = 0; i < n; ++i) {
+    const Vec3 p = positions.row(i).transpose() - c;
+    J += p.squaredNorm() * Mat3::Identity() - p * p.transpose();
+  }
+  Mat3 W = Mat3::Zero();  // rotation a -> its combination of e_b × p
+  int rotations = 0;
+  if (planar_slab) {
+    if (J(2, 2) > 1e-12 * J.trace()) W(2, rotations++) = 1.0 / std::sqrt(J(2, 2));
+  } else {
+    const Eigen::SelfAdjointEigenSolver<Mat3> eig(J);
+    const double largest = eig.eigenvalues().maxCoeff();
+    for (int k = 0; k < 3; ++k)
+      if (eig.eigenvalues()(k) > 1e-12 * largest) W.col(rotations++) = eig.eigenvectors().col(k) / std::sqrt(eig.eigenvalues()(k));
+  }
+  const int translations = planar_slab ? 2 : 3;
+  Eigen::MatrixXd Q = Eigen::MatrixXd::Zero(dofs, translations + rotations);
+  const double t = 1.0 / std::sqrt(static_cast<double>(n));
+  for (int i = 0; i < n; ++i) {
+    const Vec3 p = positions.row(i).transpose() - c;
+    for (int a = 0; a < translations; ++a) Q(3 * i + a, a) = t;
+    for (int k = 0; k < rotations; ++k) Q.block<3, 1>(3 * i, translations + k) = W.col(k).cross(p);
+  }
+  return Q;
+}
+
+}  // namespace
+
 Eigen::MatrixXd rigid_modes(const Points& positions, int dofs, int theta_begin, bool planar_slab) {
   const int n = static_cast<int>(positions.rows());
   require(dofs >= 3 * n, "rigid_modes: fewer dofs than positions");
+  if (theta_begin < 0) return rigid_modes_positions(positions, dofs, planar_slab);
   const int k = 6 + (theta_begin >= 0 ? 1 : 0);
   Eigen::MatrixXd M = Eigen::MatrixXd::Zero(dofs, k);
   const Vec3 c = positions.colwise().mean().transpose();

@@ -13,6 +13,7 @@
 #include "ek/knots/alexander.hpp"
 #include "ek/solver/eigen_analysis.hpp"
 #include "ek/solver/knot_terms.hpp"
+#include "ek/solver/multilevel.hpp"
 
 namespace ek {
 namespace {
@@ -104,6 +105,7 @@ NewtonOptions newton_options(const RelaxOptions& options, const ResolvedModel& m
 /// singular at d = 0 for any ω), the solve at ω (under the slab when there
 /// is one), and after release the solve without the slab.
 void run_phases(Relaxation& r, RelaxResult& result) {
+  const int offset = static_cast<int>(result.phases.size());  // phases of coarse levels before these
   for (const double f : r.options.contact_continuation) {
     ContactOptions soft = r.contact_options;
     soft.stiffness = f * r.contact_options.stiffness;
@@ -124,7 +126,10 @@ void run_phases(Relaxation& r, RelaxResult& result) {
     result.phases.push_back("final");
     result.energy = parts_of(released);
   }
-  result.trace = r.solver.trace();
+  for (IterationRecord rec : r.solver.trace()) {
+    rec.phase += offset;
+    result.trace.push_back(rec);
+  }
 }
 
 /// The smallest eigenvalue of H with every rigid motion excluded: all six
@@ -145,7 +150,7 @@ std::optional<double> stiffness(Relaxation& r, const NewtonOptions& no) {
   return eig.values(0);
 }
 
-/// Positions, angles, contacts, twist, writhe, link and the Alexander check.
+/// Positions, angles, contacts, twist, writhe and link of the result.
 void describe_result(Relaxation& r, RelaxResult& result) {
   result.positions = r.rod.positions();
   result.theta = r.rod.thetas();
@@ -156,13 +161,6 @@ void describe_result(Relaxation& r, RelaxResult& result) {
   result.twist = r.rod.twist();
   result.writhe = r.rod.writhe();
   result.link = result.twist + result.writhe;
-  if (!r.options.check_topology) return;
-  try {
-    result.result_alexander = alexander(result.positions);
-  } catch (const InputError&) {
-    result.result_alexander = AlexanderPolynomial{{0}};
-  }
-  result.alexander_preserved = (result.result_alexander == result.alexander);
 }
 
 }  // namespace
@@ -177,6 +175,9 @@ void RelaxOptions::validate() const {
   require_input(!release_slab || slab, "relax: release_slab needs a slab");
   for (const double f : contact_continuation)
     require_input(f > 0.0 && f < 1.0, "relax: contact_continuation factors must be in (0, 1)");
+  for (const double f : coarse_continuation)
+    require_input(f > 0.0 && f < 1.0, "relax: coarse_continuation factors must be in (0, 1)");
+  require_input(coarse_levels >= 0 && coarse_levels <= 8, "relax: coarse_levels must be in [0, 8]");
   if (slab) {
     require_input(slab->half_thickness > 0.0 && std::isfinite(slab->half_thickness),
                   "relax: slab half-thickness must be positive");
@@ -202,6 +203,10 @@ ResolvedModel resolve_model(const RelaxOptions& options, double mean_edge_length
   return r;
 }
 
+std::string to_string(RelaxMethod method) {
+  return method == RelaxMethod::Multilevel ? "multilevel" : "direct";
+}
+
 NewtonReport RelaxResult::all_phases() const {
   NewtonReport sum = report;
   auto add = [&sum](const NewtonReport& r) {
@@ -222,6 +227,7 @@ NewtonReport RelaxResult::all_phases() const {
     sum.time_eigen += r.time_eigen;
     sum.time_symbolic += r.time_symbolic;
   };
+  for (const NewtonReport& r : coarse_reports) add(r);
   for (const NewtonReport& r : continuation_reports) add(r);
   if (slab_report) add(*slab_report);
   return sum;
@@ -248,12 +254,13 @@ double cached_lambda_min(int n, double edge_length, const RodMaterial& m, TwistM
   return value;
 }
 
-RelaxResult relax(const Points& curve, const RelaxOptions& options) {
-  options.validate();
-  const VecX rest = checked_rest_lengths(curve, options);
+namespace {
+
+/// One level: Newton from `curve` with rest lengths `rest` (the phases of
+/// run_phases), and the description of the result. The input's Alexander
+/// polynomial is compared when result.alexander is set (check_topology).
+void relax_level(const Points& curve, const VecX& rest, const RelaxOptions& options, RelaxResult& result) {
   const int n = static_cast<int>(curve.rows());
-  RelaxResult result;
-  if (options.check_topology) result.alexander = input_alexander(curve);
   const ResolvedModel model = resolve_model(options, rest.mean());
   result.model = model_name(model.model);
   result.lambda_min = cached_lambda_min(n, rest.mean(), options.material, model.model);
@@ -272,6 +279,79 @@ RelaxResult relax(const Points& curve, const RelaxOptions& options) {
   run_phases(r, result);
   describe_result(r, result);
   if (options.smallest_eigenvalue) result.smallest_eigenvalue = stiffness(r, no);
+}
+
+bool multilevel_applies(const RelaxOptions& o) {
+  return o.method == RelaxMethod::Multilevel && !o.link && !o.full_model && !o.slab;
+}
+
+/// The coarse level's result with its own coarse levels and phases folded
+/// into `result` (coarsest first; its trace's phases renumbered after the
+/// phases already in `result`, its own phases named "coarse M: ...").
+void add_coarse_level(const RelaxResult& coarse, RelaxResult& result) {
+  RelaxResult own = coarse;
+  own.coarse_reports.clear();
+  result.coarse_vertices = coarse.coarse_vertices;
+  result.coarse_reports = coarse.coarse_reports;
+  result.coarse_vertices.push_back(static_cast<int>(coarse.positions.rows()));
+  result.coarse_reports.push_back(own.all_phases());
+  const int offset = static_cast<int>(result.phases.size());
+  const std::string prefix = "coarse " + std::to_string(coarse.positions.rows()) + ": ";
+  for (const std::string& p : coarse.phases) result.phases.push_back(p.rfind("coarse ", 0) == 0 ? p : prefix + p);
+  for (IterationRecord rec : coarse.trace) {
+    rec.phase += offset;
+    result.trace.push_back(rec);
+  }
+}
+
+/// Multilevel or direct relaxation of `curve` (rest lengths `rest`) with up
+/// to `levels` coarse levels below it; `top`: the level of the input. The
+/// first (coarsest) level solved gets the multilevel continuation, the top
+/// level contact_continuation, the levels between none.
+RelaxResult relax_levels(const Points& curve, const VecX& rest, const RelaxOptions& options, int levels, bool top) {
+  RelaxResult result;
+  Points start = curve;
+  const int n = static_cast<int>(curve.rows());
+  const bool multilevel = multilevel_applies(options);
+  if (multilevel && levels > 0 && n % 2 == 0 && n / 2 >= kMinCoarseVertices) {
+    const CoarseCurve c = coarsen(curve, rest, contact_options(resolve_model(options, rest.mean())));
+    if (c.certified >= 1.0) {
+      const RelaxResult rc = relax_levels(c.coarse, c.coarse_rest, options, levels - 1, false);
+      add_coarse_level(rc, result);
+      start = refine(rc.positions, rest);
+    }
+  }
+  RelaxOptions level = options;
+  level.rest_lengths = rest;
+  level.smallest_eigenvalue = options.smallest_eigenvalue && top;
+  const bool coarsest = result.coarse_reports.empty();
+  if (multilevel && coarsest && !(top && !options.contact_continuation.empty()))
+    level.contact_continuation = options.coarse_continuation;
+  else if (!top)
+    level.contact_continuation.clear();
+  relax_level(start, rest, level, result);
+  return result;
+}
+
+}  // namespace
+
+RelaxResult relax(const Points& curve, const RelaxOptions& options) {
+  options.validate();
+  const VecX rest = checked_rest_lengths(curve, options);
+  AlexanderPolynomial input;
+  if (options.check_topology) input = input_alexander(curve);
+  RelaxOptions unchecked = options;
+  unchecked.check_topology = false;  // checked once below, on the result
+  RelaxResult result = relax_levels(curve, rest, unchecked, options.coarse_levels, true);
+  if (options.check_topology) {
+    result.alexander = input;
+    try {
+      result.result_alexander = alexander(result.positions);
+    } catch (const InputError&) {
+      result.result_alexander = AlexanderPolynomial{{0}};
+    }
+    result.alexander_preserved = (result.result_alexander == result.alexander);
+  }
   return result;
 }
 

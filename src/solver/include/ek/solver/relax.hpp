@@ -27,6 +27,25 @@ namespace ek {
 /// unit edges. Tolerances and contact stiffness scale from them.
 inline constexpr double kReferenceBendingStiffness = 2000.0 * 3.14159265358979323846 * 0.0016 / 4.0;  // E π r⁴ / 4
 
+/// How relax() reaches an equilibrium (docs/models.md, "Solver").
+enum class RelaxMethod {
+  /// Coarse-to-fine: the curve is relaxed first with n/2^L vertices
+  /// (coarsen() in multilevel.hpp, certified collision-free), with the
+  /// contact-stiffness continuation `coarse_continuation`, then refined
+  /// (the same polygon) and relaxed at each finer level up to n. Used for
+  /// the twist-free model without a slab; other models relax as Direct.
+  Multilevel,
+  /// Newton from the input at n vertices (with contact_continuation when given).
+  Direct,
+};
+std::string to_string(RelaxMethod method);  ///< "multilevel", "direct"
+
+/// Defaults of the multilevel method.
+inline constexpr int kDefaultCoarseLevels = 1;
+inline constexpr double kDefaultCoarseContinuation = 1e-3;
+/// Fewest vertices of a coarse level.
+inline constexpr int kMinCoarseVertices = 24;
+
 struct RelaxOptions {
   RodMaterial material;             ///< E, ν, r (paper defaults)
   /// [length] rest edge lengths (n); default: the input curve's edge lengths.
@@ -63,6 +82,15 @@ struct RelaxOptions {
   /// docs/performance.md): {1e-3} cuts the median time per equilibrium by
   /// about 2×.
   std::vector<double> contact_continuation;
+  RelaxMethod method = RelaxMethod::Multilevel;  ///< see RelaxMethod
+  /// [1] Multilevel: levels below n, each with half the vertices of the next;
+  /// a level is used while the count is even, the coarse curve has at least
+  /// kMinCoarseVertices vertices and its coarsening is certified.
+  int coarse_levels = kDefaultCoarseLevels;
+  /// [1] Multilevel: contact-stiffness continuation factors (as
+  /// contact_continuation) of the first, coarsest level solved; when that
+  /// level is n itself, contact_continuation replaces them if given.
+  std::vector<double> coarse_continuation = {kDefaultCoarseContinuation};
   /// Planarity slab |z| < h (slab.hpp). With release_slab the slab is dropped
   /// after the first phase and the solve continues from the flat state.
   std::optional<SlabOptions> slab;
@@ -105,15 +133,20 @@ struct RelaxResult {
   VecX theta;                       ///< material angles (n; zeros for the fast path)
   double Theta = 0.0;               ///< injected twist Θ
   NewtonReport report;              ///< of the last phase (after release when released)
-  /// Every phase's name in order: "continuation F" per factor, then "slab"
+  /// Every phase's name in order: the coarse levels' phases prefixed with
+  /// "coarse M: " (M vertices), "continuation F" per factor, then "slab"
   /// (under the slab) or "final", and "final" after a release.
   std::vector<std::string> phases;
   /// Every Newton iteration of every phase (NewtonOptions::record_trace;
   /// IterationRecord::phase indexes `phases`).
   std::vector<IterationRecord> trace;
   std::optional<NewtonReport> slab_report;  ///< of the phase under the slab, when released
-  /// Of the continuation solves (RelaxOptions::contact_continuation), in order.
+  /// Of the continuation solves at n vertices, in order.
   std::vector<NewtonReport> continuation_reports;
+  /// Multilevel: the coarse levels solved, coarsest first: their vertex
+  /// counts and each level's phases summed (RelaxResult::all_phases()).
+  std::vector<int> coarse_vertices;
+  std::vector<NewtonReport> coarse_reports;
   EnergyParts energy;               ///< at the result
   std::optional<EnergyParts> slab_energy;   ///< at the end of the slab phase
   int contacts = 0;                 ///< active contact pairs at the result
@@ -126,7 +159,7 @@ struct RelaxResult {
   double lambda_min = 0.0;          ///< straight-rod λ_min used for the shift
   std::string model;                ///< "twist-free", "free-theta" or "fixed-link"
 
-  /// The report of all phases (continuation, slab, final) together:
+  /// The report of all phases (coarse levels, continuation, slab, final) together:
   /// iterations, factorisations, line-search trials, saddle escapes and the
   /// times summed; status, energy, gradient norm and the other values of the
   /// final phase (`report`).

@@ -1,0 +1,39 @@
+#pragma once
+/// Coarse and fine versions of one closed curve for the multilevel
+/// relaxation (RelaxMethod::Multilevel, relax.hpp; docs/models.md, "Solver").
+///
+/// Coarsening drops every odd vertex: vertex 2k+1 moves onto the segment
+/// from vertex 2k to vertex 2k+2, at the ratio of the rest lengths of its two
+/// edges, l_{2k} / (l_{2k} + l_{2k+1}); the even vertices stay. The coarse
+/// curve (n/2 vertices, rest lengths l_{2k} + l_{2k+1}) is the moved fine
+/// curve without its odd vertices: the same polygon. The motion of the odd
+/// vertices is a straight-line motion of the fine curve, certified by the
+/// continuous collision detection of the contact model (contact_potential.hpp):
+/// when it is certified for the whole way (t = 1) no two edges touch during
+/// it, so the coarse curve has the knot type of the fine one.
+///
+/// Refinement inserts the odd vertices back on the coarse edges at the same
+/// ratios: the refined curve is the coarse polygon itself, so its knot type
+/// is the coarse curve's, and its rest lengths are the fine ones.
+#include "ek/contact/contact_potential.hpp"
+#include "ek/geometry/types.hpp"
+
+namespace ek {
+
+struct CoarseCurve {
+  Points collapsed;   ///< n by 3: the fine curve with every odd vertex moved onto its neighbours' segment
+  Points coarse;      ///< n/2 by 3: the even vertices of `collapsed`
+  VecX coarse_rest;   ///< [length] n/2: l_{2k} + l_{2k+1}
+  double certified = 0.0;  ///< [1] certified fraction of the motion fine → collapsed (1: all of it)
+};
+
+/// Coarsens `fine` (n by 3, n even and >= 8) with rest edge lengths `rest`
+/// (n, edge j from vertex j to j+1). The motion is checked with `contact`'s
+/// collision detection (its d̂ and separation).
+CoarseCurve coarsen(const Points& fine, const VecX& rest, const ContactOptions& contact);
+
+/// The coarse curve (m by 3) with the odd vertices of a fine curve with rest
+/// lengths `fine_rest` (2m) inserted at their rest-length ratios.
+Points refine(const Points& coarse, const VecX& fine_rest);
+
+}  // namespace ek

@@ -1,0 +1,105 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "ek/embedding/embedding.hpp"
+#include "ek/geometry/polyline.hpp"
+#include "ek/knots/alexander.hpp"
+#include "ek/knots/table.hpp"
+#include "ek/solver/multilevel.hpp"
+#include "ek/solver/relax.hpp"
+#include "testing.hpp"
+
+using namespace ek;
+
+namespace {
+
+Points trefoil_coil(int n) {
+  EmbeddingOptions eo;
+  eo.vertices = n;
+  return embed_knot(KnotTable::global().at("3_1"), EmbeddingSource::Braid, eo).points;
+}
+
+}  // namespace
+
+// Coarsening moves each odd vertex onto its neighbours' segment at the ratio
+// of its edges' rest lengths; the coarse curve is the moved curve's even
+// vertices with pairwise-summed rest lengths, and refining it gives the moved
+// curve back exactly (the same polygon). On a smooth curve the motion is
+// certified collision-free.
+TEST(Multilevel, CoarsenAndRefineGiveTheSamePolygon) {
+  const Points P = fixtures::torus_knot(80, 2, 3);
+  VecX rest = edge_lengths(P);
+  rest(3) *= 3.0;  // unequal rest lengths: vertex 3 moves to rest(2) / (rest(2) + rest(3)) of the way from 2 to 4
+  const CoarseCurve c = coarsen(P, rest, ContactOptions{});
+  ASSERT_EQ(c.coarse.rows(), 40);
+  EXPECT_EQ(c.certified, 1.0);
+  for (int k = 0; k < 40; ++k) {
+    EXPECT_EQ(c.coarse.row(k), P.row(2 * k));
+    EXPECT_DOUBLE_EQ(c.coarse_rest(k), rest(2 * k) + rest(2 * k + 1));
+  }
+  const Vec3 a = P.row(2).transpose(), b = P.row(4).transpose();
+  const double w = rest(2) / (rest(2) + rest(3));
+  EXPECT_LT((c.collapsed.row(3).transpose() - (a + w * (b - a))).norm(), 1e-14);
+  EXPECT_LT((refine(c.coarse, rest) - c.collapsed).cwiseAbs().maxCoeff(), 1e-14);
+  // a polygon whose odd vertices are already on their segments does not move
+  const Points R = refine(c.coarse, rest);
+  EXPECT_LT((coarsen(R, rest, ContactOptions{}).collapsed - R).cwiseAbs().maxCoeff(), 1e-14);
+  EXPECT_THROW(coarsen(P.topRows(79), rest.head(79), ContactOptions{}), std::invalid_argument);
+}
+
+// A strand passing through the triangle that a collapse sweeps: the motion is
+// not certified (the two edges would pass through each other).
+TEST(Multilevel, CoarseningThatWouldCrossAStrandIsNotCertified) {
+  // vertex 1 is a corner in the plane z = 0 that the collapse cuts off; the
+  // straight strand 4-5-6 (vertex 5 on it, so it does not move) passes
+  // through that corner at (0.3, 0.3) along z
+  Points P(8, 3);
+  P << 0, -1, 0,      //
+      1, 1, 0,        //
+      -1, 1, 0,       //
+      -3, 0, 2.5,     //
+      0.3, 0.3, 5,    //
+      0.3, 0.3, 0,    //
+      0.3, 0.3, -5,   //
+      0, -3, -2.5;
+  const VecX rest = edge_lengths(P);
+  const CoarseCurve c = coarsen(P, rest, ContactOptions{});
+  EXPECT_LT(c.certified, 1.0);
+  EXPECT_EQ(c.collapsed.row(5), P.row(5));
+}
+
+// The multilevel relaxation solves the coarse level first (half the
+// vertices, with the contact-stiffness continuation) and ends at n with a
+// converged-stable equilibrium of the full model; the knot type is kept;
+// models it does not apply to, odd counts and Direct relax at n only.
+TEST(Multilevel, RelaxesThroughTheCoarseLevels) {
+  const Points P = trefoil_coil(200);
+  RelaxOptions o;
+  o.newton.record_trace = true;
+  const RelaxResult r = relax(P, o);
+  ASSERT_EQ(r.status(), "converged-stable");
+  EXPECT_TRUE(r.alexander_preserved);
+  EXPECT_EQ(r.coarse_vertices, (std::vector<int>{100}));
+  ASSERT_EQ(r.coarse_reports.size(), 1u);
+  EXPECT_GT(r.coarse_reports[0].iterations, 0);
+  EXPECT_TRUE(r.continuation_reports.empty());  // the continuation ran at the coarse level
+  EXPECT_EQ(r.phases, (std::vector<std::string>{"coarse 100: continuation 0.001000", "coarse 100: final", "final"}));
+  EXPECT_EQ(r.positions.rows(), 200);
+  EXPECT_LE(r.report.gradient_norm, 1e-8);
+  EXPECT_EQ(r.all_phases().iterations, r.report.iterations + r.coarse_reports[0].iterations);
+
+  RelaxOptions two = o;
+  two.coarse_levels = 2;
+  EXPECT_EQ(relax(P, two).coarse_vertices, (std::vector<int>{50, 100}));
+  RelaxOptions direct = o;
+  direct.method = RelaxMethod::Direct;
+  EXPECT_TRUE(relax(P, direct).coarse_vertices.empty());
+  RelaxOptions linked = o;
+  linked.link = 3.0;
+  const RelaxResult rl = relax(P, linked);
+  EXPECT_TRUE(rl.coarse_vertices.empty());
+  EXPECT_TRUE(rl.continuation_reports.empty());  // Direct: no continuation unless asked
+  EXPECT_TRUE(relax(trefoil_coil(201), o).coarse_vertices.empty());  // odd: one level, with the continuation
+}
