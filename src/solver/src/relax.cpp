@@ -84,10 +84,11 @@ ElasticRod make_rod(const Points& curve, const VecX& rest, const RelaxOptions& o
   return rod;
 }
 
-ContactOptions contact_options(const ResolvedModel& model) {
+ContactOptions contact_options(const ResolvedModel& model, const RelaxOptions& options) {
   ContactOptions co;
   co.dhat = model.dhat;
   co.stiffness = model.contact_stiffness;
+  co.hessian_margin = options.contact_hessian_margin;
   return co;
 }
 
@@ -150,11 +151,13 @@ std::optional<double> stiffness(Relaxation& r, const NewtonOptions& no) {
   return eig.values(0);
 }
 
-/// Positions, angles, contacts, twist, writhe and link of the result.
-void describe_result(Relaxation& r, RelaxResult& result) {
+/// Positions, angles, contacts, twist, writhe and link of the result (a
+/// coarse level's only positions and angles: it is a start for the next).
+void describe_result(Relaxation& r, RelaxResult& result, bool coarse) {
   result.positions = r.rod.positions();
   result.theta = r.rod.thetas();
   result.Theta = r.rod.model() == TwistModel::TwistFree ? 0.0 : r.rod.theta_total();
+  if (coarse) return;
   r.contact.update(result.positions);
   result.contacts = static_cast<int>(r.contact.num_active());
   result.min_distance = clearance(result.positions).distance;
@@ -178,6 +181,8 @@ void RelaxOptions::validate() const {
   for (const double f : coarse_continuation)
     require_input(f > 0.0 && f < 1.0, "relax: coarse_continuation factors must be in (0, 1)");
   require_input(coarse_levels >= 0 && coarse_levels <= 8, "relax: coarse_levels must be in [0, 8]");
+  require_input(contact_hessian_margin >= 0.0 && std::isfinite(contact_hessian_margin),
+                "relax: contact_hessian_margin must be >= 0");
   if (slab) {
     require_input(slab->half_thickness > 0.0 && std::isfinite(slab->half_thickness),
                   "relax: slab half-thickness must be positive");
@@ -259,13 +264,14 @@ namespace {
 /// One level: Newton from `curve` with rest lengths `rest` (the phases of
 /// run_phases), and the description of the result. The input's Alexander
 /// polynomial is compared when result.alexander is set (check_topology).
-void relax_level(const Points& curve, const VecX& rest, const RelaxOptions& options, RelaxResult& result) {
+void relax_level(const Points& curve, const VecX& rest, const RelaxOptions& options, bool coarse,
+                 RelaxResult& result) {
   const int n = static_cast<int>(curve.rows());
   const ResolvedModel model = resolve_model(options, rest.mean());
   result.model = model_name(model.model);
   result.lambda_min = cached_lambda_min(n, rest.mean(), options.material, model.model);
   const NewtonOptions no = newton_options(options, model, result.lambda_min);
-  const ContactOptions co = contact_options(model);
+  const ContactOptions co = contact_options(model, options);
   Relaxation r{options, make_rod(curve, rest, options, model.model), co,
                ContactPotential(CurveTopology::single(n), co), std::nullopt, NewtonSolver(no)};
   r.contact.update(curve);
@@ -277,7 +283,7 @@ void relax_level(const Points& curve, const VecX& rest, const RelaxOptions& opti
                        std::to_string(options.slab->half_thickness));
   }
   run_phases(r, result);
-  describe_result(r, result);
+  describe_result(r, result, coarse);
   if (options.smallest_eigenvalue) result.smallest_eigenvalue = stiffness(r, no);
 }
 
@@ -314,7 +320,7 @@ RelaxResult relax_levels(const Points& curve, const VecX& rest, const RelaxOptio
   const int n = static_cast<int>(curve.rows());
   const bool multilevel = multilevel_applies(options);
   if (multilevel && levels > 0 && n % 2 == 0 && n / 2 >= kMinCoarseVertices) {
-    const CoarseCurve c = coarsen(curve, rest, contact_options(resolve_model(options, rest.mean())));
+    const CoarseCurve c = coarsen(curve, rest, contact_options(resolve_model(options, rest.mean()), options));
     if (c.certified >= 1.0) {
       const RelaxResult rc = relax_levels(c.coarse, c.coarse_rest, options, levels - 1, false);
       add_coarse_level(rc, result);
@@ -329,7 +335,7 @@ RelaxResult relax_levels(const Points& curve, const VecX& rest, const RelaxOptio
     level.contact_continuation = options.coarse_continuation;
   else if (!top)
     level.contact_continuation.clear();
-  relax_level(start, rest, level, result);
+  relax_level(start, rest, level, !top, result);
   return result;
 }
 

@@ -21,7 +21,9 @@ namespace ek {
 /// The elastic rod. Parts "stretch", "bend", "twist" (0 in TwistFree).
 /// max_step keeps every tangent within `max_rotation` [rad] of its source
 /// when the model has material frames (time-parallel transport stays well
-/// defined); accept() transports the reference frames.
+/// defined); accept() transports the reference frames in those models. In
+/// TwistFree the frames enter no energy and are not transported (the rod's
+/// reference twists then describe its starting frames).
 class RodTerm : public Potential {
  public:
   RodTerm(ElasticRod& rod, double max_rotation) : rod_(rod), max_rotation_(max_rotation) {}
@@ -35,7 +37,9 @@ class RodTerm : public Potential {
     rod_.add_hessian(A, EnergyTerm::All, project_psd);
   }
   double max_step(const VecX& x, const VecX& dx) const override;
-  void accept() override { rod_.update_reference_frames(); }
+  void accept() override {
+    if (rod_.model() != TwistModel::TwistFree) rod_.update_reference_frames();
+  }
 
  private:
   ElasticRod& rod_;

@@ -83,6 +83,10 @@ struct RelaxOptions {
   /// about 2×.
   std::vector<double> contact_continuation;
   RelaxMethod method = RelaxMethod::Multilevel;  ///< see RelaxMethod
+  /// [length] ContactOptions::hessian_margin: the contact Hessian's pattern
+  /// holds the pairs within d̂ + margin and changes only when an active pair
+  /// falls outside it (0: the active pairs; the same values either way).
+  double contact_hessian_margin = 0.0;
   /// [1] Multilevel: levels below n, each with half the vertices of the next;
   /// a level is used while the count is even, the coarse curve has at least
   /// kMinCoarseVertices vertices and its coarsening is certified.
