@@ -4,6 +4,7 @@
 BUILD      ?= build
 JOBS       ?= 2
 KNOT_TABLE ?= $(abspath $(CURDIR)/../shared/data/knotinfo_table.csv)
+PEER_DATA  ?= $(abspath $(CURDIR)/../shared/data/peer)
 SCALE      ?= default
 PYTHON     ?= /usr/bin/python3
 CMAKE_ARGS ?=
@@ -58,8 +59,10 @@ stress: build
 	  ctest -V -j$(JOBS) -L 'stress'
 
 # Microbenchmarks pinned to one core (Google Benchmark, median of 5), then the
-# macro benchmarks (the solver by default and with contact-stiffness
-# continuation 1e-3, the skips, time against error); one summary table at the end.
+# macro benchmarks (the solver's default method against the method before the
+# multilevel relaxation and the block factorisation, interleaved: the lattice
+# samples, the peer curves and the cost against n; the skips; time against
+# error); one summary table at the end.
 BENCH_CORE ?= 0
 # exp_time_vs_error: ci (n <= 800) or default (n <= 3200)
 BENCH_SCALE ?= default
@@ -72,9 +75,11 @@ bench: build
 	    --benchmark_out=results/bench/$$(basename $$b).json --benchmark_out_format=json || exit 1; \
 	done
 	@if [ -x $(BUILD)/experiments/exp_bench_solver ]; then \
-	  taskset -c $(BENCH_CORE) $(BUILD)/experiments/exp_bench_solver --out results/bench && \
-	  taskset -c $(BENCH_CORE) $(BUILD)/experiments/exp_bench_solver --continuation 1e-3 \
-	    --out results/bench/continuation && \
+	  taskset -c $(BENCH_CORE) $(BUILD)/experiments/exp_bench_solver --methods default,today --out results/bench && \
+	  taskset -c $(BENCH_CORE) $(BUILD)/experiments/exp_bench_solver --methods default,today \
+	    --peer $(PEER_DATA) --out results/bench && \
+	  taskset -c $(BENCH_CORE) $(BUILD)/experiments/exp_bench_solver --methods default,today --scaling \
+	    --out results/bench && \
 	  taskset -c $(BENCH_CORE) $(BUILD)/experiments/exp_bench_solver --skips --count 3 \
 	    --knots 4_1,8_19,12a_1019 --out results/bench; fi
 	taskset -c $(BENCH_CORE) $(BUILD)/experiments/exp_time_vs_error --scale $(BENCH_SCALE) --out results/bench/time_vs_error

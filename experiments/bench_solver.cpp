@@ -1,63 +1,67 @@
 // Macro benchmark of the equilibrium solver (docs/performance.md).
 //
 // A fixed set of BFACF lattice samples (fixed seeds; default 20 each of 4_1,
-// 8_19, 10_100 and 12a_1019 with n = 400 unit edges) is relaxed one after the
-// other on the calling thread with the default material (E = 2000, r = 0.2)
-// and tolerance (1e-8). For every knot and overall it prints and writes the
-// median wall time per equilibrium, the median number of Newton iterations,
-// the statuses, and the time split (assembly, factorisation, collision
-// detection, line search, eigen-analysis). Pin it to one core for a
-// measurement: `taskset -c 1 build/experiments/exp_bench_solver`.
+// 8_19, 10_100 and 12a_1019 with n = 400 unit edges) is relaxed on the
+// calling thread with the default material (E = 2000, r = 0.2) and
+// tolerance (1e-8), by each method asked for, the methods interleaved sample
+// by sample (their order rotating) so that a drift of the machine's speed
+// affects them alike. For every method and knot it prints and writes the
+// median wall time per equilibrium (and thread CPU time), the median number
+// of Newton iterations over all phases, the statuses and the time split
+// (assembly, factorisation, collision detection, line search,
+// eigen-analysis); with two methods, the ratio of their medians. Pin it to
+// one core: `taskset -c 1 build/experiments/exp_bench_solver`.
 //
 //   exp_bench_solver [--quick] [--count K] [--knots A,B,...] [--seed S] [--out DIR]
-//                    [--method default|projected|paper] [--continuation F[,F...]] [--max-iter N]
-//                    [--trace] [--verbose] [--skips]
+//                    [--methods M[,M...]] [--continuation F[,F...]] [--max-iter N]
+//                    [--trace] [--verbose] [--skips] [--peer DIR] [--scaling]
 //
-// --trace: every relaxation records its iteration trace (NewtonOptions::
-// record_trace; a few percent slower), written to DIR/traces/<knot>-<sample>.csv
-// (trace.hpp), and the benchmark prints where the iterations and the time
-// went per knot (summarize_trace: iterations by excess energy over the end
-// of their phase, full and short steps, steps cut by the collision bound,
-// failed factorisations, time in exact-Hessian iterations), also written to
+// Methods: default (RelaxOptions{}: multilevel), today (the method before
+// the multilevel relaxation and the block factorisation: Direct, hybrid
+// Hessian, CHOLMOD simplicial), hybrid (Direct with the block
+// factorisation), projected (hybrid without its exact region), exact (the
+// exact Hessian every iteration), paper (NewtonOptions::paper()). The
+// default is "default,today". --method M is --methods M.
+//
+// --peer DIR: instead of the lattice samples, every curve file of DIR (the
+// peer implementation's curves) relaxed as `knots relax FILE` does, by each
+// method, three times (the fastest time kept); writes DIR_OUT/solver_peer.csv.
+// --scaling: instead, 4_1 and 8_19 sampled at n = 200, 400 and 800 (K
+// samples each, default 5), relaxed by each method; the median time per n
+// and the exponent of a least-squares fit time ∝ n^p over the three n;
+// writes solver_scaling.csv.
+// --trace: every relaxation records its iteration trace (a few percent
+// slower), written to DIR/traces/<method>-<knot>-<sample>.csv (trace.hpp);
+// prints where the iterations and the time went (summarize_trace), also in
 // DIR/solver_trace_summary.csv.
+// --skips ("skip what a scene does not need", measured on and off): every
+// sample relaxed three times by the first method: as it is (Θ free: the
+// twist-free 3n-dof path; no eigen-analysis), with the full 4n+1-dof model
+// and with the smallest non-rigid eigenvalue computed; writes
+// solver_skips.csv.
+// --continuation F[,F...]: contact-stiffness continuation before the solve
+// at n (RelaxOptions::contact_continuation) for every method.
 //
-// --skips ("skip what a scene does not need", measured on and off):
-// every sample is relaxed three times, one after the other: as by default
-// (Θ free: the twist-free 3n-dof path; no eigen-analysis), with the full
-// 4n+1-dof model (RelaxOptions::full_model, the twist-free skip off), and
-// with the smallest non-rigid eigenvalue computed (the stiffness attribute
-// of the data set, RelaxOptions::smallest_eigenvalue: the eigen-analysis
-// skip off). Writes DIR/solver_skips.csv (one row per variant: runs,
-// converged-stable, total and median seconds, median iterations).
-//
-// --method projected: the hybrid Hessian without its exact region
-// (NewtonOptions::exact_after_full_steps = 0).
-// --continuation F[,F...]: contact-stiffness continuation
-// (RelaxOptions::contact_continuation; e.g. 1e-3): times, iterations and
-// the split count every phase; the method column reads e.g.
-// "default+continuation(0.001)".
-// --quick: 2 samples per knot (smoke test). --method paper: the paper's plain
-// method (NewtonOptions::paper(): the exact Hessian every iteration, no
-// rigid-motion removal), for before/after comparisons. Writes DIR/solver_macro.csv (one row per knot and one "all"
-// row) and DIR/solver_macro_runs.csv (one row per sample, with the energy,
-// contacts and gradient norm at the result, to compare methods sample by
-// sample). Exit status 1 when a run changed the knot type (its Alexander
-// polynomial); other statuses (max-iterations, stalled) are measured
-// outcomes, counted in the table.
+// Writes DIR/solver_macro.csv (one row per method and knot, and "all") and
+// DIR/solver_macro_runs.csv (one row per method and sample, with the energy,
+// contacts and gradient norm at the result). Exit status 1 when a run
+// changed the knot type; other statuses (max-iterations, stalled) are
+// measured outcomes, counted in the table.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
+#include <ctime>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <map>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "ek/core/atomic_file.hpp"
 #include "ek/core/errors.hpp"
+#include "ek/geometry/curve_io.hpp"
 #include "ek/knots/table.hpp"
 #include "ek/lattice/lattice_polygon.hpp"
 #include "ek/lattice/sampling.hpp"
@@ -68,29 +72,30 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+struct Method {
+  std::string name;
+  ek::RelaxOptions options;
+};
+
 struct Run {
-  std::string knot;
+  std::string knot, method;
   int sample = 0;
-  double seconds = 0.0;  // wall time of relax() (including the Alexander checks)
+  double seconds = 0.0;      // wall time of relax() (including the Alexander checks)
+  double cpu_seconds = 0.0;  // thread CPU time of the same
   ek::RelaxResult result;
 };
+
+double thread_cpu() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
 
 double median(std::vector<double> v) {
   if (v.empty()) return 0.0;
   std::sort(v.begin(), v.end());
   const size_t m = v.size() / 2;
   return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
-}
-
-/// One relaxation, timed on the calling thread (including the Alexander checks).
-Run timed_relax(const std::string& knot, int sample, const ek::Points& P, const ek::RelaxOptions& options) {
-  Run run;
-  run.knot = knot;
-  run.sample = sample;
-  const auto t0 = Clock::now();
-  run.result = ek::relax(P, options);
-  run.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
-  return run;
 }
 
 std::vector<std::string> split(const std::string& s, char sep) {
@@ -108,66 +113,107 @@ std::string fmt(double x, const char* f = "%.4g") {
   return buf;
 }
 
-void write_atomic(const std::string& path, const std::string& text) {
-  const std::string tmp = path + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::trunc);
-    if (!out) throw ek::InputError("cannot write " + tmp);
-    out << text;
-    if (!out.flush()) throw ek::InputError("cannot write " + tmp);
-  }
-  std::filesystem::rename(tmp, path);
+void write_file(const std::string& path, const std::string& text) {
+  ek::AtomicFile f(path);
+  f.stream() << text;
+  f.commit();
 }
 
+Method method_named(const std::string& name, const ek::RelaxOptions& base) {
+  Method m{name, base};
+  ek::RelaxOptions& o = m.options;
+  if (name == "default") return m;
+  o.method = ek::RelaxMethod::Direct;
+  if (name == "today") o.newton.cholesky.mode = ek::CholeskyMode::Simplicial;
+  else if (name == "projected") o.newton.exact_after_full_steps = 0;
+  else if (name == "exact") o.newton.hessian = ek::HessianMode::Exact;
+  else if (name == "paper") {
+    const bool verbose = o.newton.verbose, trace = o.newton.record_trace;
+    o.newton = ek::NewtonOptions::paper();
+    o.newton.verbose = verbose;
+    o.newton.record_trace = trace;
+  } else if (name != "hybrid")
+    throw ek::InputError("unknown method '" + name + "' (default, today, hybrid, projected, exact, paper)");
+  return m;
+}
+
+/// One relaxation, timed on the calling thread (including the Alexander checks).
+Run timed_relax(const std::string& knot, int sample, const ek::Points& P, const Method& method) {
+  Run run;
+  run.knot = knot;
+  run.method = method.name;
+  run.sample = sample;
+  const auto t0 = Clock::now();
+  const double c0 = thread_cpu();
+  run.result = ek::relax(P, method.options);
+  run.cpu_seconds = thread_cpu() - c0;
+  run.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  return run;
+}
+
+void print_run(const Run& run) {
+  std::fprintf(stderr, "%-9s #%02d  %-9s %-18s %5d it  %7.3f s  E %.10g  contacts %d\n", run.knot.c_str(),
+               run.sample, run.method.c_str(), run.result.status().c_str(), run.result.all_phases().iterations,
+               run.seconds, run.result.energy.total, run.result.contacts);
+}
+
+// ---------------------------------------------------------------------------
+// Summaries
+
 struct Summary {
-  std::string name;
+  std::string method, name;
   int runs = 0, stable = 0;
   std::map<std::string, int> statuses;
-  double median_seconds = 0.0, mean_seconds = 0.0, max_seconds = 0.0, median_iterations = 0.0;
+  double median_seconds = 0.0, mean_seconds = 0.0, max_seconds = 0.0, median_cpu = 0.0, median_iterations = 0.0;
   double assembly = 0.0, factorization = 0.0, collision = 0.0, line_search = 0.0, eigen = 0.0, other = 0.0;
   double symbolic = 0.0, numeric = 0.0, failed = 0.0;  // per run (mean); failed: shift-ladder rungs
 };
 
-Summary summarize(const std::string& name, const std::vector<const Run*>& runs) {
-  Summary s;
-  s.name = name;
-  s.runs = static_cast<int>(runs.size());
-  std::vector<double> secs, its;
-  double total = 0.0;
-  for (const Run* r : runs) {
-    const ek::NewtonReport rep = r->result.all_phases();
-    secs.push_back(r->seconds);
-    its.push_back(rep.iterations);
-    total += r->seconds;
-    s.max_seconds = std::max(s.max_seconds, r->seconds);
-    ++s.statuses[r->result.status()];
-    if (r->result.status() == "converged-stable") ++s.stable;
-    s.assembly += rep.time_assembly;
-    s.factorization += rep.time_factorization;
-    s.collision += rep.time_collision;
-    s.line_search += rep.time_line_search;
-    s.eigen += rep.time_eigen;
-    s.symbolic += rep.symbolic_factorizations;
-    s.numeric += rep.numeric_factorizations;
-    s.failed += rep.failed_factorizations;
-  }
-  s.median_seconds = median(secs);
-  s.median_iterations = median(its);
-  if (!runs.empty()) {
+void add_split(Summary& s, const ek::NewtonReport& rep) {
+  s.assembly += rep.time_assembly;
+  s.factorization += rep.time_factorization;
+  s.collision += rep.time_collision;
+  s.line_search += rep.time_line_search;
+  s.eigen += rep.time_eigen;
+  s.symbolic += rep.symbolic_factorizations;
+  s.numeric += rep.numeric_factorizations;
+  s.failed += rep.failed_factorizations;
+}
+
+void normalise_split(Summary& s, double total) {
+  if (s.runs > 0) {
     s.mean_seconds = total / s.runs;
     s.symbolic /= s.runs;
     s.numeric /= s.runs;
     s.failed /= s.runs;
   }
-  // time split as fractions of the summed wall time
-  if (total > 0.0) {
-    s.other = (total - s.assembly - s.factorization - s.collision - s.line_search - s.eigen) / total;
-    s.assembly /= total;
-    s.factorization /= total;
-    s.collision /= total;
-    s.line_search /= total;
-    s.eigen /= total;
+  if (total <= 0.0) return;  // the split as fractions of the summed wall time
+  s.other = (total - s.assembly - s.factorization - s.collision - s.line_search - s.eigen) / total;
+  for (double* f : {&s.assembly, &s.factorization, &s.collision, &s.line_search, &s.eigen}) *f /= total;
+}
+
+Summary summarize(const std::string& method, const std::string& name, const std::vector<const Run*>& runs) {
+  Summary s;
+  s.method = method;
+  s.name = name;
+  s.runs = static_cast<int>(runs.size());
+  std::vector<double> secs, cpu, its;
+  double total = 0.0;
+  for (const Run* r : runs) {
+    const ek::NewtonReport rep = r->result.all_phases();
+    secs.push_back(r->seconds);
+    cpu.push_back(r->cpu_seconds);
+    its.push_back(rep.iterations);
+    total += r->seconds;
+    s.max_seconds = std::max(s.max_seconds, r->seconds);
+    ++s.statuses[r->result.status()];
+    if (r->result.status() == "converged-stable") ++s.stable;
+    add_split(s, rep);
   }
+  s.median_seconds = median(secs);
+  s.median_cpu = median(cpu);
+  s.median_iterations = median(its);
+  normalise_split(s, total);
   return s;
 }
 
@@ -177,220 +223,371 @@ std::string statuses_text(const Summary& s) {
   return out;
 }
 
-/// Where the iterations and the time went, per knot (from the traces).
-void print_trace_summary(const std::vector<std::string>& knots, const std::vector<Run>& runs, const std::string& out) {
+std::vector<const Run*> select(const std::vector<Run>& runs, const std::string& method, const std::string& knot) {
+  std::vector<const Run*> sel;
+  for (const Run& r : runs)
+    if (r.method == method && (knot == "all" || r.knot == knot)) sel.push_back(&r);
+  return sel;
+}
+
+std::vector<Summary> summary_table(const std::vector<Run>& runs, const std::vector<Method>& methods,
+                                   const std::vector<std::string>& knots) {
+  std::vector<Summary> table;
+  for (const Method& m : methods) {
+    for (const std::string& k : knots) table.push_back(summarize(m.name, k, select(runs, m.name, k)));
+    table.push_back(summarize(m.name, "all", select(runs, m.name, "all")));
+  }
+  return table;
+}
+
+void print_summary_table(const std::vector<Summary>& table, int count, const std::string& out) {
   std::ostringstream csv;
-  csv << "knot,iterations,excess_above_1e-1,excess_1e-2_1e-1,excess_1e-3_1e-2,excess_1e-4_1e-3,excess_below_1e-4,"
-         "full_steps,short_steps,collision_limited,exact_iterations,factorizations,failed_factorizations,"
-         "pattern_changes,seconds,seconds_exact\n";
+  csv << "knot,method,runs,converged_stable,statuses,median_seconds,mean_seconds,max_seconds,median_cpu_seconds,"
+         "median_iterations,symbolic_per_run,numeric_per_run,frac_assembly,frac_factorization,frac_collision,"
+         "frac_line_search,frac_eigen,frac_other,failed_per_run\n";
+  std::printf("solver macro benchmark (n = 400, %d samples per knot)\n", count);
+  std::printf("%-9s %-9s %5s %6s %8s %8s %8s %8s %6s %7s %7s %8s | %6s %6s %6s %6s %6s %6s | %s\n", "knot", "method",
+              "runs", "stable", "median s", "mean s", "max s", "cpu s", "med it", "sym/run", "num/run", "fail/run", "asm",
+              "fact", "ccd", "ls", "eig", "other", "statuses");
+  for (const Summary& s : table) {
+    std::printf("%-9s %-9s %5d %6d %8.3f %8.3f %8.3f %8.3f %6.0f %7.0f %7.0f %8.0f | %5.1f%% %5.1f%% %5.1f%% %5.1f%% "
+                "%5.1f%% %5.1f%% | %s\n",
+                s.name.c_str(), s.method.c_str(), s.runs, s.stable, s.median_seconds, s.mean_seconds, s.max_seconds,
+                s.median_cpu, s.median_iterations, s.symbolic, s.numeric, s.failed, 100 * s.assembly,
+                100 * s.factorization, 100 * s.collision, 100 * s.line_search, 100 * s.eigen, 100 * s.other,
+                statuses_text(s).c_str());
+    csv << s.name << "," << s.method << "," << s.runs << "," << s.stable << "," << statuses_text(s) << ","
+        << fmt(s.median_seconds, "%.6g") << "," << fmt(s.mean_seconds, "%.6g") << "," << fmt(s.max_seconds, "%.6g")
+        << "," << fmt(s.median_cpu, "%.6g") << "," << s.median_iterations << "," << fmt(s.symbolic, "%.6g") << ","
+        << fmt(s.numeric, "%.6g") << "," << fmt(s.assembly, "%.4f") << "," << fmt(s.factorization, "%.4f") << ","
+        << fmt(s.collision, "%.4f") << "," << fmt(s.line_search, "%.4f") << "," << fmt(s.eigen, "%.4f") << ","
+        << fmt(s.other, "%.4f") << "," << fmt(s.failed, "%.6g") << "\n";
+  }
+  write_file(out + "/solver_macro.csv", csv.str());
+}
+
+/// With two or more methods: each method's median time and iterations over
+/// the first method's, per knot (the first is the new default by default).
+void print_ratio_table(const std::vector<Summary>& table, const std::vector<Method>& methods,
+                       const std::string& out) {
+  if (methods.size() < 2) return;
+  std::ostringstream csv;
+  csv << "knot,method,reference,time_ratio,cpu_ratio,iteration_ratio\n";
+  std::printf("ratios to %s (median time and iterations of the method / of %s)\n", methods[0].name.c_str(),
+              methods[0].name.c_str());
+  std::printf("%-9s %-9s %9s %9s %9s\n", "knot", "method", "time", "cpu", "iters");
+  const size_t per_method = table.size() / methods.size();
+  for (size_t m = 1; m < methods.size(); ++m)
+    for (size_t k = 0; k < per_method; ++k) {
+      const Summary& ref = table[k];
+      const Summary& s = table[m * per_method + k];
+      const double t = s.median_seconds / ref.median_seconds, c = s.median_cpu / ref.median_cpu;
+      const double it = s.median_iterations / std::max(1.0, ref.median_iterations);
+      std::printf("%-9s %-9s %8.2fx %8.2fx %8.2fx\n", s.name.c_str(), s.method.c_str(), t, c, it);
+      csv << s.name << "," << s.method << "," << ref.method << "," << fmt(t, "%.4f") << "," << fmt(c, "%.4f") << ","
+          << fmt(it, "%.4f") << "\n";
+    }
+  write_file(out + "/solver_ratio.csv", csv.str());
+}
+
+void write_runs_csv(const std::vector<Run>& runs, const std::string& out) {
+  std::ostringstream csv;
+  csv << "knot,sample,method,status,seconds,cpu_seconds,iterations,energy,gradient_norm,contacts,min_distance,writhe,"
+         "symbolic,numeric,line_search_trials,saddle_escapes,marginal,failed\n";
+  for (const Run& r : runs) {
+    const ek::NewtonReport rep = r.result.all_phases();
+    csv << r.knot << "," << r.sample << "," << r.method << "," << r.result.status() << "," << fmt(r.seconds, "%.6g")
+        << "," << fmt(r.cpu_seconds, "%.6g") << "," << rep.iterations << "," << fmt(r.result.energy.total, "%.15g")
+        << "," << fmt(rep.gradient_norm, "%.3e") << "," << r.result.contacts << ","
+        << fmt(r.result.min_distance, "%.6g") << "," << fmt(r.result.writhe, "%.6g") << ","
+        << rep.symbolic_factorizations << "," << rep.numeric_factorizations << "," << rep.line_search_trials << ","
+        << rep.saddle_escapes << "," << (rep.marginal ? 1 : 0) << "," << rep.failed_factorizations << "\n";
+  }
+  write_file(out + "/solver_macro_runs.csv", csv.str());
+}
+
+/// Where the iterations and the time went, per method and knot (from the traces).
+void print_trace_summary(const std::vector<Run>& runs, const std::vector<Method>& methods,
+                         const std::vector<std::string>& knots, const std::string& out) {
+  std::ostringstream csv;
+  csv << "knot,method,iterations,excess_above_1e-1,excess_1e-2_1e-1,excess_1e-3_1e-2,excess_1e-4_1e-3,"
+         "excess_below_1e-4,full_steps,short_steps,collision_limited,exact_iterations,factorizations,"
+         "failed_factorizations,pattern_changes,seconds,seconds_exact\n";
   std::printf("where the iterations went (%% of iterations; excess energy over the end of the phase)\n");
-  std::printf("%-9s %7s | %6s %6s %6s %6s %6s | %6s %6s %6s %6s | %7s %7s\n", "knot", "iters", ">1e-1", ">1e-2",
-              ">1e-3", ">1e-4", "<1e-4", "t=1", "t<1/64", "ccd<1", "exact", "fail/fc", "exact s");
-  auto row = [&](const std::string& name, const ek::TraceSummary& s) {
+  std::printf("%-9s %-9s %7s | %6s %6s %6s %6s %6s | %6s %6s %6s %6s | %7s %7s\n", "knot", "method", "iters", ">1e-1",
+              ">1e-2", ">1e-3", ">1e-4", "<1e-4", "t=1", "t<1/64", "ccd<1", "exact", "fail/fc", "exact s");
+  auto row = [&](const std::string& name, const std::string& method, const ek::TraceSummary& s) {
     const double it = std::max(1, s.iterations);
-    std::printf("%-9s %7d | %5.1f%% %5.1f%% %5.1f%% %5.1f%% %5.1f%% | %5.1f%% %5.1f%% %5.1f%% %5.1f%% | %6.1f%% %6.1f%%\n",
-                name.c_str(), s.iterations, 100 * s.by_excess[0] / it, 100 * s.by_excess[1] / it,
+    std::printf("%-9s %-9s %7d | %5.1f%% %5.1f%% %5.1f%% %5.1f%% %5.1f%% | %5.1f%% %5.1f%% %5.1f%% %5.1f%% | %6.1f%% "
+                "%6.1f%%\n",
+                name.c_str(), method.c_str(), s.iterations, 100 * s.by_excess[0] / it, 100 * s.by_excess[1] / it,
                 100 * s.by_excess[2] / it, 100 * s.by_excess[3] / it, 100 * s.by_excess[4] / it,
                 100 * s.full_steps / it, 100 * s.short_steps / it, 100 * s.collision_limited / it,
                 100 * s.exact_iterations / it, 100.0 * s.failed_factorizations / std::max(1, s.factorizations),
                 100 * s.seconds_exact / std::max(1e-300, s.seconds));
-    csv << name << "," << s.iterations;
+    csv << name << "," << method << "," << s.iterations;
     for (int b : s.by_excess) csv << "," << b;
     csv << "," << s.full_steps << "," << s.short_steps << "," << s.collision_limited << "," << s.exact_iterations << ","
         << s.factorizations << "," << s.failed_factorizations << "," << s.pattern_changes << ","
         << fmt(s.seconds, "%.6g") << "," << fmt(s.seconds_exact, "%.6g") << "\n";
   };
-  ek::TraceSummary all;
-  for (const std::string& k : knots) {
-    ek::TraceSummary s;
-    for (const Run& r : runs)
-      if (r.knot == k) s.add(ek::summarize_trace(r.result.trace));
-    row(k, s);
-    all.add(s);
+  for (const Method& m : methods) {
+    ek::TraceSummary all;
+    for (const std::string& k : knots) {
+      ek::TraceSummary s;
+      for (const Run* r : select(runs, m.name, k)) s.add(ek::summarize_trace(r->result.trace));
+      row(k, m.name, s);
+      all.add(s);
+    }
+    row("all", m.name, all);
   }
-  row("all", all);
-  write_atomic(out + "/solver_trace_summary.csv", csv.str());
+  write_file(out + "/solver_trace_summary.csv", csv.str());
 }
 
 void write_trace(const std::string& out, const Run& run) {
   std::ostringstream text;
   ek::write_trace_csv(text, run.result.trace, run.result.phases);
-  write_atomic(out + "/traces/" + run.knot + "-" + std::to_string(run.sample) + ".csv", text.str());
+  write_file(out + "/traces/" + run.method + "-" + run.knot + "-" + std::to_string(run.sample) + ".csv", text.str());
+}
+
+// ---------------------------------------------------------------------------
+// The runs
+
+struct Config {
+  std::vector<std::string> knots = {"4_1", "8_19", "10_100", "12a_1019"};
+  int count = 20;
+  std::uint64_t seed = 20230806;
+  std::string out = "results/bench";
+  std::vector<Method> methods;
+  bool trace = false, skips = false, scaling = false;
+  std::string peer;
+};
+
+std::vector<ek::Points> lattice_samples(const std::string& knot, int n, int count, std::uint64_t seed) {
+  ek::SampleOptions so;
+  so.vertices = n;
+  so.count = count;
+  so.seed = seed;  // one fixed walk per knot and n
+  const ek::SampleBatch batch = ek::sample_knot(ek::KnotTable::global().at(knot), so);
+  std::vector<ek::Points> out;
+  for (const auto& s : batch.samples) out.push_back(ek::to_points(s));
+  return out;
+}
+
+/// Every sample by every method, the methods' order rotating from sample to sample.
+std::vector<Run> relax_interleaved(const std::string& knot, const std::vector<ek::Points>& samples,
+                                   const Config& c) {
+  std::vector<Run> runs;
+  const size_t m = c.methods.size();
+  for (size_t s = 0; s < samples.size(); ++s)
+    for (size_t j = 0; j < m; ++j) {
+      const Method& method = c.methods[(s + j) % m];
+      Run run = timed_relax(knot, static_cast<int>(s), samples[s], method);
+      print_run(run);
+      if (c.trace) write_trace(c.out, run);
+      runs.push_back(std::move(run));
+    }
+  return runs;
+}
+
+int macro(const Config& c) {
+  std::vector<Run> runs;
+  for (size_t k = 0; k < c.knots.size(); ++k) {
+    const std::vector<Run> r = relax_interleaved(c.knots[k], lattice_samples(c.knots[k], 400, c.count, c.seed + k), c);
+    runs.insert(runs.end(), r.begin(), r.end());
+  }
+  const std::vector<Summary> table = summary_table(runs, c.methods, c.knots);
+  print_summary_table(table, c.count, c.out);
+  print_ratio_table(table, c.methods, c.out);
+  if (c.trace) print_trace_summary(runs, c.methods, c.knots, c.out);
+  write_runs_csv(runs, c.out);
+  std::printf("wrote %s/solver_macro.csv and %s/solver_macro_runs.csv\n", c.out.c_str(), c.out.c_str());
+  for (const Run& r : runs)
+    if (!r.result.alexander_preserved) return 1;
+  return 0;
+}
+
+/// The "skip what a scene does not need" variants of the first method.
+int skips(const Config& c) {
+  const std::vector<std::string> variants = {"default", "full-model", "eigen"};
+  std::vector<std::vector<Run>> runs(variants.size());
+  for (size_t k = 0; k < c.knots.size(); ++k) {
+    const std::vector<ek::Points> samples = lattice_samples(c.knots[k], 400, c.count, c.seed + k);
+    for (size_t s = 0; s < samples.size(); ++s)
+      for (size_t v = 0; v < variants.size(); ++v) {
+        Method m = c.methods.front();
+        m.name = variants[v];
+        m.options.full_model = v == 1;
+        m.options.smallest_eigenvalue = v == 2;
+        runs[v].push_back(timed_relax(c.knots[k], static_cast<int>(s), samples[s], m));
+        print_run(runs[v].back());
+      }
+  }
+  std::ostringstream csv;
+  csv << "variant,runs,converged_stable,total_seconds,median_seconds,median_iterations\n";
+  std::printf("solver skips (n = 400, %d samples each of %zu knots, method %s)\n", c.count, c.knots.size(),
+              c.methods.front().name.c_str());
+  std::printf("%-11s %5s %7s %9s %9s %7s\n", "variant", "runs", "stable", "total s", "median s", "med it");
+  bool kept = true;
+  for (size_t v = 0; v < variants.size(); ++v) {
+    std::vector<const Run*> sel;
+    for (const Run& r : runs[v]) sel.push_back(&r);
+    const Summary sm = summarize(variants[v], variants[v], sel);
+    const double total = sm.mean_seconds * sm.runs;
+    kept = kept && !sm.statuses.count("topology-changed");
+    std::printf("%-11s %5d %7d %9.3f %9.3f %7.0f\n", sm.name.c_str(), sm.runs, sm.stable, total, sm.median_seconds,
+                sm.median_iterations);
+    csv << sm.name << "," << sm.runs << "," << sm.stable << "," << fmt(total, "%.6g") << ","
+        << fmt(sm.median_seconds, "%.6g") << "," << sm.median_iterations << "\n";
+  }
+  write_file(c.out + "/solver_skips.csv", csv.str());
+  std::printf("wrote %s/solver_skips.csv\n", c.out.c_str());
+  return kept ? 0 : 1;
+}
+
+/// The peer implementation's curves, each by every method, the fastest of three.
+int peer(const Config& c) {
+  std::vector<std::string> files;
+  for (const auto& e : std::filesystem::directory_iterator(c.peer)) {
+    const std::string ext = e.path().extension().string();
+    if (ext == ".obj" || ext == ".txt") files.push_back(e.path().string());
+  }
+  std::sort(files.begin(), files.end());
+  if (files.empty()) throw ek::InputError("--peer: no .obj or .txt curve in " + c.peer);
+  std::ostringstream csv;
+  csv << "file,method,vertices,status,seconds,iterations,energy\n";
+  std::printf("peer curves (knots relax FILE, fastest of 3 runs)\n%-28s %-9s %6s %-18s %9s %7s %14s\n", "file",
+              "method", "n", "status", "seconds", "iters", "energy");
+  bool kept = true;
+  for (const std::string& f : files) {
+    const ek::Points P = ek::read_curve(f);
+    const std::string name = std::filesystem::path(f).filename().string();
+    for (const Method& m : c.methods) {
+      Run best;
+      for (int rep = 0; rep < 3; ++rep) {
+        Run run = timed_relax(name, 0, P, m);
+        if (rep == 0 || run.seconds < best.seconds) best = std::move(run);
+      }
+      kept = kept && best.result.alexander_preserved;
+      const int it = best.result.all_phases().iterations;
+      std::printf("%-28s %-9s %6d %-18s %9.4f %7d %14.10f\n", name.c_str(), m.name.c_str(), static_cast<int>(P.rows()),
+                  best.result.status().c_str(), best.seconds, it, best.result.energy.total);
+      csv << name << "," << m.name << "," << P.rows() << "," << best.result.status() << ","
+          << fmt(best.seconds, "%.6g") << "," << it << "," << fmt(best.result.energy.total, "%.15g") << "\n";
+    }
+  }
+  write_file(c.out + "/solver_peer.csv", csv.str());
+  std::printf("wrote %s/solver_peer.csv\n", c.out.c_str());
+  return kept ? 0 : 1;
+}
+
+/// Slope of the least-squares line through (log n, log t).
+double fitted_exponent(const std::vector<double>& n, const std::vector<double>& t) {
+  double mx = 0.0, my = 0.0;
+  for (size_t i = 0; i < n.size(); ++i) {
+    mx += std::log(n[i]) / static_cast<double>(n.size());
+    my += std::log(t[i]) / static_cast<double>(n.size());
+  }
+  double sxy = 0.0, sxx = 0.0;
+  for (size_t i = 0; i < n.size(); ++i) {
+    sxy += (std::log(n[i]) - mx) * (std::log(t[i]) - my);
+    sxx += (std::log(n[i]) - mx) * (std::log(n[i]) - mx);
+  }
+  return sxy / sxx;
+}
+
+/// Median time per equilibrium at n = 200, 400, 800 for 4_1 and 8_19.
+int scaling(const Config& c) {
+  const std::vector<int> sizes = {200, 400, 800};
+  std::ostringstream csv;
+  csv << "knot,method,vertices,runs,converged_stable,median_seconds,median_iterations,exponent\n";
+  std::printf("cost against n (median per equilibrium, %d samples per knot and n)\n", c.count);
+  std::printf("%-9s %-9s %9s %9s %9s %9s\n", "knot", "method", "n=200 s", "n=400 s", "n=800 s", "exponent");
+  bool kept = true;
+  for (const std::string knot : {"4_1", "8_19"}) {
+    std::map<std::string, std::vector<Summary>> by_method;
+    for (const int n : sizes) {
+      const std::vector<Run> runs = relax_interleaved(knot, lattice_samples(knot, n, c.count, c.seed + n), c);
+      for (const Run& r : runs) kept = kept && r.result.alexander_preserved;
+      for (const Method& m : c.methods) by_method[m.name].push_back(summarize(m.name, knot, select(runs, m.name, knot)));
+    }
+    for (const Method& m : c.methods) {
+      const std::vector<Summary>& s = by_method[m.name];
+      const double p = fitted_exponent({200.0, 400.0, 800.0},
+                                       {s[0].median_seconds, s[1].median_seconds, s[2].median_seconds});
+      std::printf("%-9s %-9s %9.3f %9.3f %9.3f %9.2f\n", knot.c_str(), m.name.c_str(), s[0].median_seconds,
+                  s[1].median_seconds, s[2].median_seconds, p);
+      for (size_t i = 0; i < sizes.size(); ++i)
+        csv << knot << "," << m.name << "," << sizes[i] << "," << s[i].runs << "," << s[i].stable << ","
+            << fmt(s[i].median_seconds, "%.6g") << "," << s[i].median_iterations << "," << fmt(p, "%.4f") << "\n";
+    }
+  }
+  write_file(c.out + "/solver_scaling.csv", csv.str());
+  std::printf("wrote %s/solver_scaling.csv\n", c.out.c_str());
+  return kept ? 0 : 1;
 }
 
 int usage(const char* msg) {
   if (msg) std::cerr << "exp_bench_solver: " << msg << "\n";
   std::cerr << "usage: exp_bench_solver [--quick] [--count K] [--knots A,B,...] [--seed S] [--out DIR] "
-               "[--method default|projected|paper] [--continuation F[,F...]] [--max-iter N] [--trace] [--verbose] "
-               "[--skips]\n";
+               "[--methods M[,M...]] [--continuation F[,F...]] [--max-iter N] [--trace] [--verbose] [--skips] "
+               "[--peer DIR] [--scaling]\n";
   return 2;
 }
 
-}  // namespace
-
-int main(int argc, char** argv) {
-  std::vector<std::string> knots = {"4_1", "8_19", "10_100", "12a_1019"};
-  int count = 20;
-  std::uint64_t seed = 20230806;
-  std::string out = "results/bench", method = "default";
-  int max_iter = -1;
-  std::vector<double> continuation;
-  bool verbose = false, skips = false, trace = false;
+/// Parses the arguments into `c`; an empty string when they are valid.
+std::string parse(int argc, char** argv, Config& c) {
+  ek::RelaxOptions base;
+  std::vector<std::string> names = {"default", "today"};
+  bool count_given = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     auto value = [&]() -> std::string {
       if (i + 1 >= argc) throw ek::InputError(a + " needs a value");
       return argv[++i];
     };
-    try {
-      if (a == "--quick") count = 2;
-      else if (a == "--count") count = std::stoi(value());
-      else if (a == "--knots") knots = split(value(), ',');
-      else if (a == "--seed") seed = std::stoull(value());
-      else if (a == "--out") out = value();
-      else if (a == "--method") method = value();
-      else if (a == "--max-iter") max_iter = std::stoi(value());
-      else if (a == "--continuation")
-        for (const std::string& f : split(value(), ',')) continuation.push_back(std::stod(f));
-      else if (a == "--verbose") verbose = true;
-      else if (a == "--trace") trace = true;
-      else if (a == "--skips") skips = true;
-      else if (a == "--help" || a == "-h") return usage(nullptr), 0;
-      else return usage(("unknown argument " + a).c_str());
-    } catch (const std::exception& e) {
-      return usage(e.what());
-    }
+    if (a == "--quick") c.count = 2, count_given = true;
+    else if (a == "--count") c.count = std::stoi(value()), count_given = true;
+    else if (a == "--knots") c.knots = split(value(), ',');
+    else if (a == "--seed") c.seed = std::stoull(value());
+    else if (a == "--out") c.out = value();
+    else if (a == "--methods" || a == "--method") names = split(value(), ',');
+    else if (a == "--max-iter") base.max_iterations = std::stoi(value());
+    else if (a == "--continuation")
+      for (const std::string& f : split(value(), ',')) base.contact_continuation.push_back(std::stod(f));
+    else if (a == "--verbose") base.newton.verbose = true;
+    else if (a == "--trace") c.trace = base.newton.record_trace = true;
+    else if (a == "--skips") c.skips = true;
+    else if (a == "--scaling") c.scaling = true;
+    else if (a == "--peer") c.peer = value();
+    else if (a == "--help" || a == "-h") return "help";
+    else return "unknown argument " + a;
   }
-  if (count < 1 || knots.empty()) return usage("need at least one knot and one sample");
-  if (method != "default" && method != "paper" && method != "projected")
-    return usage("--method must be default, projected or paper");
+  if (c.scaling && !count_given) c.count = 5;
+  if (c.count < 1 || c.knots.empty() || names.empty()) return "need at least one knot, one sample and one method";
+  base.validate();
+  for (const std::string& n : names) c.methods.push_back(method_named(n, base));
+  return "";
+}
 
-  ek::RelaxOptions options;
-  if (method == "paper") options.newton = ek::NewtonOptions::paper();
-  if (method == "projected") options.newton.exact_after_full_steps = 0;  // hybrid without the exact region
-  if (max_iter >= 0) options.max_iterations = max_iter;
-  options.newton.verbose = verbose;
-  options.newton.record_trace = trace;
-  options.contact_continuation = continuation;
+}  // namespace
+
+int main(int argc, char** argv) {
+  Config c;
   try {
-    options.validate();
-  } catch (const ek::InputError& e) {
+    const std::string error = parse(argc, argv, c);
+    if (error == "help") return usage(nullptr), 0;
+    if (!error.empty()) return usage(error.c_str());
+  } catch (const std::exception& e) {
     return usage(e.what());
   }
-  if (!continuation.empty()) {
-    method += "+continuation(";
-    for (size_t k = 0; k < continuation.size(); ++k) method += (k ? ";" : "") + fmt(continuation[k], "%g");
-    method += ")";
-  }
-
   try {
-    std::filesystem::create_directories(out);
-    if (trace) std::filesystem::create_directories(out + "/traces");
-    std::vector<Run> runs;
-    const std::vector<std::string> skip_variants = {"default", "full-model", "eigen"};
-    std::vector<std::vector<Run>> skip_runs(skip_variants.size());
-    for (size_t k = 0; k < knots.size(); ++k) {
-      ek::SampleOptions so;
-      so.vertices = 400;
-      so.count = count;
-      so.seed = seed + k;  // one fixed walk per knot
-      const ek::SampleBatch batch = ek::sample_knot(ek::KnotTable::global().at(knots[k]), so);
-      if (skips) {
-        for (int s = 0; s < count; ++s) {
-          const ek::Points P = ek::to_points(batch.samples[static_cast<size_t>(s)]);
-          for (size_t v = 0; v < skip_variants.size(); ++v) {
-            ek::RelaxOptions vo = options;
-            vo.full_model = v == 1;
-            vo.smallest_eigenvalue = v == 2;
-            Run run = timed_relax(knots[k], s, P, vo);
-            std::fprintf(stderr, "%-9s #%02d  %-11s %-18s %5d it  %7.3f s  E %.10g\n", knots[k].c_str(), s,
-                         skip_variants[v].c_str(), run.result.status().c_str(), run.result.all_phases().iterations,
-                         run.seconds, run.result.energy.total);
-            skip_runs[v].push_back(std::move(run));
-          }
-        }
-        continue;
-      }
-      for (int s = 0; s < count; ++s) {
-        Run run = timed_relax(knots[k], s, ek::to_points(batch.samples[static_cast<size_t>(s)]), options);
-        std::fprintf(stderr, "%-9s #%02d  %-18s %5d it  %7.3f s  E %.10g  contacts %d\n", run.knot.c_str(), s,
-                     run.result.status().c_str(), run.result.all_phases().iterations, run.seconds,
-                     run.result.energy.total, run.result.contacts);
-        if (trace) write_trace(out, run);
-        runs.push_back(std::move(run));
-      }
-    }
-
-    if (skips) {
-      std::ostringstream csv;
-      csv << "variant,runs,converged_stable,total_seconds,median_seconds,median_iterations\n";
-      std::printf("solver skips (n = 400, %d samples each of %zu knots, one after the other)\n", count, knots.size());
-      std::printf("%-11s %5s %7s %9s %9s %7s\n", "variant", "runs", "stable", "total s", "median s", "med it");
-      bool topology_kept = true;
-      for (size_t v = 0; v < skip_variants.size(); ++v) {
-        std::vector<const Run*> sel;
-        for (const Run& r : skip_runs[v]) sel.push_back(&r);
-        const Summary sm = summarize(skip_variants[v], sel);
-        const double total = sm.mean_seconds * sm.runs;
-        topology_kept = topology_kept && !sm.statuses.count("topology-changed");
-        std::printf("%-11s %5d %7d %9.3f %9.3f %7.0f\n", sm.name.c_str(), sm.runs, sm.stable, total,
-                    sm.median_seconds, sm.median_iterations);
-        csv << sm.name << "," << sm.runs << "," << sm.stable << "," << fmt(total, "%.6g") << ","
-            << fmt(sm.median_seconds, "%.6g") << "," << sm.median_iterations << "\n";
-      }
-      write_atomic(out + "/solver_skips.csv", csv.str());
-      std::printf("wrote %s/solver_skips.csv\n", out.c_str());
-      return topology_kept ? 0 : 1;
-    }
-    std::vector<Summary> table;
-    std::vector<const Run*> all;
-    for (const Run& r : runs) all.push_back(&r);
-    for (const std::string& k : knots) {
-      std::vector<const Run*> sel;
-      for (const Run& r : runs)
-        if (r.knot == k) sel.push_back(&r);
-      table.push_back(summarize(k, sel));
-    }
-    table.push_back(summarize("all", all));
-
-    std::ostringstream csv;
-    csv << "knot,method,runs,converged_stable,statuses,median_seconds,mean_seconds,max_seconds,median_iterations,"
-           "symbolic_per_run,numeric_per_run,frac_assembly,frac_factorization,frac_collision,frac_line_search,"
-           "frac_eigen,frac_other,failed_per_run\n";
-    std::printf("solver macro benchmark (n = 400, %d samples per knot, method %s)\n", count, method.c_str());
-    std::printf("%-9s %5s %7s %9s %9s %9s %7s %7s %7s %8s | %6s %6s %6s %6s %6s %6s | %s\n", "knot", "runs",
-                "stable", "median s", "mean s", "max s", "med it", "sym/run", "num/run", "fail/run", "asm", "fact", "ccd",
-                "ls", "eig", "other", "statuses");
-    for (const Summary& s : table) {
-      std::printf("%-9s %5d %7d %9.3f %9.3f %9.3f %7.0f %7.0f %7.0f %8.0f | %5.1f%% %5.1f%% %5.1f%% %5.1f%% %5.1f%% %5.1f%% | %s\n",
-                  s.name.c_str(), s.runs, s.stable, s.median_seconds, s.mean_seconds, s.max_seconds,
-                  s.median_iterations, s.symbolic, s.numeric, s.failed, 100 * s.assembly, 100 * s.factorization,
-                  100 * s.collision, 100 * s.line_search, 100 * s.eigen, 100 * s.other, statuses_text(s).c_str());
-      csv << s.name << "," << method << "," << s.runs << "," << s.stable << "," << statuses_text(s) << ","
-          << fmt(s.median_seconds, "%.6g") << "," << fmt(s.mean_seconds, "%.6g") << "," << fmt(s.max_seconds, "%.6g")
-          << "," << s.median_iterations << "," << fmt(s.symbolic, "%.6g") << "," << fmt(s.numeric, "%.6g") << ","
-          << fmt(s.assembly, "%.4f") << "," << fmt(s.factorization, "%.4f") << "," << fmt(s.collision, "%.4f")
-          << "," << fmt(s.line_search, "%.4f") << "," << fmt(s.eigen, "%.4f") << "," << fmt(s.other, "%.4f")
-          << "," << fmt(s.failed, "%.6g") << "\n";
-    }
-    std::ostringstream runs_csv;
-    runs_csv << "knot,sample,method,status,seconds,iterations,energy,gradient_norm,contacts,min_distance,writhe,"
-                "symbolic,numeric,line_search_trials,saddle_escapes,marginal,failed\n";
-    for (const Run& r : runs) {
-      const ek::NewtonReport rep = r.result.all_phases();
-      runs_csv << r.knot << "," << r.sample << "," << method << "," << r.result.status() << ","
-               << fmt(r.seconds, "%.6g") << "," << rep.iterations << "," << fmt(r.result.energy.total, "%.15g") << ","
-               << fmt(rep.gradient_norm, "%.3e") << "," << r.result.contacts << ","
-               << fmt(r.result.min_distance, "%.6g") << "," << fmt(r.result.writhe, "%.6g") << ","
-               << rep.symbolic_factorizations << "," << rep.numeric_factorizations << "," << rep.line_search_trials
-               << "," << rep.saddle_escapes << "," << (rep.marginal ? 1 : 0) << "," << rep.failed_factorizations
-               << "\n";
-    }
-    if (trace) print_trace_summary(knots, runs, out);
-    write_atomic(out + "/solver_macro.csv", csv.str());
-    write_atomic(out + "/solver_macro_runs.csv", runs_csv.str());
-    std::printf("wrote %s/solver_macro.csv and %s/solver_macro_runs.csv\n", out.c_str(), out.c_str());
-    return table.back().statuses.count("topology-changed") ? 1 : 0;
+    std::filesystem::create_directories(c.out);
+    if (c.trace) std::filesystem::create_directories(c.out + "/traces");
+    if (!c.peer.empty()) return peer(c);
+    if (c.scaling) return scaling(c);
+    if (c.skips) return skips(c);
+    return macro(c);
   } catch (const ek::InputError& e) {
     std::cerr << "exp_bench_solver: " << e.what() << "\n";
     return 2;
