@@ -120,21 +120,17 @@ void write_file(const std::string& path, const std::string& text) {
 }
 
 Method method_named(const std::string& name, const ek::RelaxOptions& base) {
-  Method m{name, base};
-  ek::RelaxOptions& o = m.options;
-  if (name == "default") return m;
-  o.method = ek::RelaxMethod::Direct;
-  if (name == "today") o.newton.cholesky.mode = ek::CholeskyMode::Simplicial;
-  else if (name == "projected") o.newton.exact_after_full_steps = 0;
-  else if (name == "exact") o.newton.hessian = ek::HessianMode::Exact;
-  else if (name == "paper") {
-    const bool verbose = o.newton.verbose, trace = o.newton.record_trace;
-    o.newton = ek::NewtonOptions::paper();
-    o.newton.verbose = verbose;
-    o.newton.record_trace = trace;
-  } else if (name != "hybrid")
-    throw ek::InputError("unknown method '" + name + "' (default, today, hybrid, projected, exact, paper)");
-  return m;
+  if (name == "today") {  // hybrid at n with CHOLMOD's simplicial factorisation
+    Method m{name, ek::with_method(base, "hybrid")};
+    m.options.newton.cholesky.mode = ek::CholeskyMode::Simplicial;
+    return m;
+  }
+  if (name == "projected") {
+    Method m{name, ek::with_method(base, "hybrid")};
+    m.options.newton.exact_after_full_steps = 0;
+    return m;
+  }
+  return Method{name, ek::with_method(base, name)};
 }
 
 /// One relaxation, timed on the calling thread (including the Alexander checks).

@@ -208,6 +208,21 @@ ResolvedModel resolve_model(const RelaxOptions& options, double mean_edge_length
   return r;
 }
 
+RelaxOptions with_method(RelaxOptions o, const std::string& name) {
+  if (name == "default") return o;
+  if (name != "hybrid" && name != "exact" && name != "paper")
+    throw InputError("the method must be default, hybrid, exact or paper, not '" + name + "'");
+  o.method = RelaxMethod::Direct;
+  if (name == "exact") o.newton.hessian = HessianMode::Exact;
+  if (name == "paper") {
+    const bool verbose = o.newton.verbose, trace = o.newton.record_trace;
+    o.newton = NewtonOptions::paper();
+    o.newton.verbose = verbose;
+    o.newton.record_trace = trace;
+  }
+  return o;
+}
+
 std::string to_string(RelaxMethod method) {
   return method == RelaxMethod::Multilevel ? "multilevel" : "direct";
 }
