@@ -129,7 +129,7 @@ EigenResult smallest_eigenpairs(const Eigen::SparseMatrix<double, Eigen::ColMajo
   require(o.count >= 1 && o.count < n, "smallest_eigenpairs: count must be in [1, n)");
   require(excluded.cols() == 0 || excluded.rows() == n, "smallest_eigenpairs: excluded modes have the wrong size");
   EigenResult result;
-  CholeskySolver chol(CholeskyMode::Simplicial);
+  CholeskySolver chol(CholeskyMode::Block);
   double s = base_shift;
   bool ok = false;
   for (int attempt = 0; attempt < 60 && !ok; ++attempt) {
