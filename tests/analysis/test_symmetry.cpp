@@ -121,20 +121,22 @@ TEST(Symmetry, RegularPolygonFit) {
 
 // The flat coil of (σ1σ2⁻¹)^p: 2p braid crossings, σ1's on one ring and σ2's
 // on the other, each a regular p-gon; consecutive letters are π/p apart, so
-// the rings are rotated by 180/p degrees.
+// the rings are rotated by 180/p degrees. The embedding offsets the strands
+// by ±crossing_height = ±0.5 strand spacings (one edge length) at a crossing:
+// their gap along the axis is 1 edge length there. (The split by height
+// separates the two letters here: their midpoints differ in height.)
 TEST(Symmetry, CoilCrossingsFormTwoRotatedPolygons) {
   for (const int p : {2, 4, 5}) {
     const Points P = coil(p);
     const Vec3 c = P.colwise().mean().transpose();
-    const CrossingPolygons g = crossing_polygons(P, c, Vec3::UnitZ(), p, 0.8);
+    const CrossingPolygons g = crossing_polygons(P, c, Vec3::UnitZ(), p, 1.1);
     EXPECT_EQ(g.crossings, 2 * p) << p;
     EXPECT_EQ(g.projected, 2 * p) << p;
-    EXPECT_TRUE(g.by_radius) << p;
     EXPECT_EQ(g.top.count, p) << p;
     EXPECT_EQ(g.bottom.count, p) << p;
     EXPECT_LT(g.error(), 1.0) << p;
     EXPECT_NEAR(g.rotation, 180.0 / p, 1.0) << p;
-    // a gap smaller than the coil's crossing heights keeps none
-    EXPECT_EQ(crossing_polygons(P, c, Vec3::UnitZ(), p, 1e-6).crossings, 0) << p;
+    // a gap below the crossings' 1 edge length keeps none
+    EXPECT_EQ(crossing_polygons(P, c, Vec3::UnitZ(), p, 0.9).crossings, 0) << p;
   }
 }
