@@ -12,12 +12,13 @@ CMAKE_ARGS ?=
 CONFIGURE = cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DEK_KNOT_TABLE=$(KNOT_TABLE) $(CMAKE_ARGS)
 CTEST     = cd $(BUILD) && KNOT_TABLE=$(KNOT_TABLE) ctest --output-on-failure -j$(JOBS)
 
-.PHONY: help deps configure build test unit sanitize stress bench figures experiments claims paper-open clean
+.PHONY: help help-experiments deps configure build test unit sanitize stress bench figures experiments claims paper-open manifest clean
 
 help:
 	@echo "make test      build, run all tests (unit, parsers, short stress, paper claims at ci scale, sanitizers)"
 	@echo "make figures   build, run every experiment at SCALE=$(SCALE), write figures/out/*.png|pdf"
-	@echo "make experiment-NAME   run one experiment (NAME: dataset milnor planarity multistability adaptive ...)"
+	@echo "make experiment-NAME   run one experiment (NAME: $(PAPER_EXPERIMENTS) $(BENCH_EXPERIMENTS))"
+	@echo "make help-experiments  each experiment's inputs and run time per scale (experiments/manifest.json)"
 	@echo "make claims    the paper checks on the results of SCALE (make figures ends with it; docs/reproducing.md)"
 	@echo "make paper-open  the claims not reproduced (paper_checks/open_claims.cpp), values printed"
 	@echo "make bench     Google Benchmark microbenchmarks and macro benchmarks (results/bench/; docs/performance.md)"
@@ -25,10 +26,11 @@ help:
 	@echo "make sanitize  parsers and readers built and tested with AddressSanitizer and UBSan"
 	@echo "make unit      unit tests only"
 	@echo "make deps      install missing Debian packages (scripts/install-deps.sh)"
+	@echo "make manifest  regenerate experiments/manifest.mk from experiments/manifest.json"
 	@echo "make clean     remove build folders (results/ and figures/out/ are kept)"
 	@echo "Variables: KNOT_TABLE=$(KNOT_TABLE) SCALE=ci|default|paper JOBS=$(JOBS) BUILD=$(BUILD)"
 	@echo "Documentation: README.md; docs/reproducing.md (targets, scales, claims), docs/cli.md (knots),"
-	@echo "  docs/models.md, docs/performance.md, docs/dataset-format.md"
+	@echo "  docs/models.md, docs/performance.md, docs/dataset-format.md, docs/results.md (results files)"
 
 deps:
 	@scripts/install-deps.sh
@@ -90,23 +92,21 @@ bench: build
 # make experiment-NAME [SCALE=ci|default|paper] runs one experiment (always);
 # make figures runs every experiment whose results are missing or older than
 # its program (and inputs), then draws every figure from the results files.
+# The experiments, their inputs and figures: experiments/manifest.json, from
+# which scripts/manifest.py generates experiments/manifest.mk (make manifest).
 RESULTS     = results/$(SCALE)
 EXP         = $(BUILD)/experiments
-EXPERIMENTS = dataset milnor planarity multistability adaptive periodic_braids jumping_knots puzzles
-FIGURES     = $(patsubst figures/%.py,figures/out/%.png,$(wildcard figures/fig*.py))
+include experiments/manifest.mk
+FIGURES     = $(patsubst %,figures/out/%.png,$(PAPER_FIGURES))
 
 $(RESULTS)/%/summary.json: $(EXP)/exp_%
 	$(EXP)/exp_$* --scale $(SCALE) --out $(RESULTS)/$* --jobs $(JOBS)
-
-# analyses of the shared data set
-$(RESULTS)/milnor/summary.json $(RESULTS)/planarity/summary.json: $(RESULTS)/dataset/summary.json
-$(RESULTS)/puzzles/summary.json: $(RESULTS)/dataset/summary.json $(RESULTS)/multistability/summary.json
 
 experiment-%: build
 	$(EXP)/exp_$* --scale $(SCALE) --out $(RESULTS)/$* --jobs $(JOBS)
 
 experiments: build
-	@$(MAKE) --no-print-directory $(foreach e,$(EXPERIMENTS),$(if $(wildcard experiments/$(e).cpp),$(RESULTS)/$(e)/summary.json))
+	@$(MAKE) --no-print-directory $(foreach e,$(PAPER_EXPERIMENTS),$(RESULTS)/$(e)/summary.json)
 
 figures: deps experiments
 	@mkdir -p figures/out
@@ -127,8 +127,16 @@ claims: build
 paper-open: build
 	$(CTEST) -L 'paper'
 
-figures/out/%.png: figures/%.py figures/common.py $(wildcard $(RESULTS)/*/summary.json)
+# (each figure's experiment summary is a prerequisite: experiments/manifest.mk)
+figures/out/%.png: figures/%.py figures/common.py
 	MPLBACKEND=Agg $(PYTHON) $< --results $(RESULTS) --out figures/out
+
+manifest:
+	$(PYTHON) scripts/manifest.py
+
+help-experiments:
+	@$(foreach e,$(PAPER_EXPERIMENTS) $(BENCH_EXPERIMENTS),echo "$(e): minutes $(MINUTES_$(e))";)
+	@echo "(inputs, outputs, figures and checks: experiments/manifest.json)"
 
 clean:
 	rm -rf $(BUILD) $(BUILD)-asan

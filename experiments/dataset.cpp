@@ -4,9 +4,10 @@
 //   default: every knot with 3..8 crossings, 40 samples each
 //   paper:   all 2,977 knots with up to 12 crossings, adaptive sampling (50 + 10, at most 500)
 // n = 400 unit edges, r = 0.2, E = 2000 (length/diameter 1000), seed 1.
-// Writes dataset.h5 (docs/dataset-format.md) and summary.json.
+// Writes dataset.h5 (docs/dataset-format.md) and summary.json (docs/results.md).
 #include <iostream>
 
+#include "dataset_summary.hpp"
 #include "ek/dataset/run.hpp"
 #include "experiment.hpp"
 #include "scales.hpp"
@@ -31,16 +32,16 @@ int main(int argc, char** argv) {
     ro.knots = knots;
     ro.output = a.out + "/dataset.h5";
     const DatasetRunSummary s = run_dataset(ro);
-    nlohmann::ordered_json j;
-    j["scale"] = a.scale_name;
-    j["knots"] = s.knots;
-    j["runs"] = s.runs;
-    j["equilibria"] = s.equilibria;
-    j["seconds"] = s.seconds;
-    j["jobs"] = a.jobs;
-    j["equilibria_per_second"] = s.seconds > 0 ? s.equilibria / s.seconds : 0.0;
-    j["sampling"] = o.sampling_description();
-    write_json(a.out + "/summary.json", j);
+    results::DatasetSummary sum;
+    sum.scale = a.scale_name;
+    sum.knots = s.knots;
+    sum.runs = s.runs;
+    sum.equilibria = s.equilibria;
+    sum.seconds = s.seconds;
+    sum.jobs = a.jobs;
+    sum.equilibria_per_second = s.seconds > 0 ? s.equilibria / s.seconds : 0.0;
+    sum.sampling = o.sampling_description();
+    write_summary(a, sum);
     std::cout << "exp_dataset: " << s.knots << " knots, " << s.runs << " runs, " << s.equilibria
               << " equilibria in " << s.seconds << " s" << std::endl;
   });

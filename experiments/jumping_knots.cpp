@@ -11,7 +11,8 @@
 //   ci:      12a_1019 (Fig. 13), 4 samples for the target
 //   default: every knot with 3..10 crossings and 12a_1019, 6 samples each
 //   paper:   every knot with up to 12 crossings, 10 samples each
-// Writes jumping.csv, curves/<knot>_{flat,final,target}.obj, summary.json.
+// Writes jumping.csv, curves/<knot>_{flat,final,target}.obj, summary.json
+// (docs/results.md).
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -27,13 +28,11 @@
 #include "ek/geometry/polyline.hpp"
 #include "ek/geometry/writhe.hpp"
 #include "experiment.hpp"
+#include "jumping_knots_summary.hpp"
 #include "scales.hpp"
 
 using namespace ek;
 using namespace ek::exp;
-
-/// 3D-ness at or above which the released state counts as 3D (our threshold).
-constexpr double kJumpThreedim = 0.3;
 
 int main(int argc, char** argv) {
   return run_experiment(argc, argv, "exp_jumping_knots", "Jumping knots from multi-covered circles.", [](const Args& a) {
@@ -54,10 +53,10 @@ int main(int argc, char** argv) {
             {"knot", "strands", "target_threedim", "writhe_target", "link", "flat_status", "flat_energy",
              "flat_threedim", "final_status", "final_energy", "final_threedim", "link_error", "energy_released",
              "jumps"});
-    nlohmann::ordered_json j;
-    j["scale"] = a.scale_name;
-    j["threedim_threshold"] = kJumpThreedim;
-    nlohmann::ordered_json jumping = nlohmann::ordered_json::array();
+    results::JumpingKnotsSummary sum;
+    sum.scale = a.scale_name;
+    sum.threedim_threshold = kJumpThreedim;
+    sum.planar_threshold = kPlanarThreedim;
     // One knot per worker thread (each knot's solves are single-threaded);
     // rows are written in table order afterwards.
     struct Outcome {
@@ -74,8 +73,8 @@ int main(int argc, char** argv) {
       eo.stiffness = false;
       const KnotEntry e = explore_knot(*k, eo);
       if (e.equilibria.empty()) {
-        out.row = {k->name, std::to_string(k->braid->strands), "nan", "nan", "nan", "no-target", "nan", "nan", "-",
-                   "nan", "nan", "nan", "nan", "0"};
+        out.row = {k->name, std::to_string(k->braid->strands), "nan", "nan", "nan", "no-target", "nan", "nan", "",
+                   "nan", "nan", "nan", "nan", Csv::flag(false)};
         return;
       }
       const int td = e.attribute_column("threedim"), wc = e.attribute_column("writhe");
@@ -109,7 +108,7 @@ int main(int argc, char** argv) {
       out.row = {k->name, std::to_string(k->braid->strands), Csv::num(e.attributes(best, td)), Csv::num(wr_target),
                Csv::num(r.link), flat.status(), Csv::num(flat.energy.total), Csv::num(flat_td), r.status(),
                Csv::num(r.energy.total), Csv::num(final_td), Csv::num(link_error),
-               Csv::num(flat.energy.total - r.energy.total), jumps ? "1" : "0"};
+               Csv::num(flat.energy.total - r.energy.total), Csv::flag(jumps)};
       std::ostringstream line;  // one write per line: workers print concurrently
       line << "exp_jumping_knots: " << k->name << (jumps ? " jumps" : " does not jump") << " (flat "
            << flat.energy.total << " -> " << r.energy.total << ", 3D-ness " << final_td << ", link error "
@@ -124,16 +123,13 @@ int main(int argc, char** argv) {
     for (int t = 1; t < std::min<int>(a.jobs, static_cast<int>(knots.size())); ++t) pool.emplace_back(worker);
     worker();
     for (auto& t : pool) t.join();
-    int tested = 0;
     for (size_t q = 0; q < knots.size(); ++q) {
       const Outcome& o = outcomes[q];
       if (!o.row.empty()) csv.row(o.row);
-      tested += o.tested;
-      if (o.jumps) jumping.push_back(knots[q]->name);
+      sum.tested += o.tested;
+      if (o.jumps) sum.jumping.push_back(knots[q]->name);
     }
     csv.commit();
-    j["tested"] = tested;
-    j["jumping"] = jumping;
-    write_json(a.out + "/summary.json", j);
+    write_summary(a, sum);
   });
 }

@@ -12,6 +12,7 @@
 
 #include "ek/dataset/dataset_file.hpp"
 #include "experiment.hpp"
+#include "milnor_summary.hpp"
 #include "scales.hpp"
 
 using namespace ek;
@@ -46,38 +47,34 @@ int main(int argc, char** argv) {
       const double ratio = e.attributes(best, tc) / bound;
       rows.push_back({name, e.bridge_index, e.braid_index, ratio, e.attributes(best, td)});
       csv.row({name, std::to_string(e.crossing_number), std::to_string(e.bridge_index), std::to_string(e.braid_index),
-               e.bridge_index == e.braid_index ? "1" : "0", e.bridge_index == 2 ? "1" : "0",
+               Csv::flag(e.bridge_index == e.braid_index), Csv::flag(e.bridge_index == 2),
                std::to_string(e.attributes.rows()), Csv::num(e.attributes(best, tc)), Csv::num(ratio),
                Csv::num(e.attributes(best, td)), std::to_string(v)});
     }
     csv.commit();
     // BB knots and the top decile by ratio.
-    nlohmann::ordered_json bb = nlohmann::ordered_json::array();
-    double bb_worst = 0.0, bb_threedim = 0.0;
+    results::MilnorSummary sum;
+    sum.scale = a.scale_name;
     for (const auto& r : rows)
       if (r.bridge == r.braid) {
-        bb.push_back({{"knot", r.name}, {"ratio", r.ratio}, {"threedim", r.threedim}});
-        bb_worst = std::max(bb_worst, std::fabs(r.ratio - 1.0));
-        bb_threedim = std::max(bb_threedim, r.threedim);
+        sum.bb_knots.push_back({r.name, r.ratio, r.threedim});
+        sum.bb_max_ratio_deviation = std::max(sum.bb_max_ratio_deviation, std::fabs(r.ratio - 1.0));
+        sum.bb_max_threedim = std::max(sum.bb_max_threedim, r.threedim);
       }
     std::vector<Row> sorted = rows;
     std::sort(sorted.begin(), sorted.end(), [](const Row& x, const Row& y) { return x.ratio > y.ratio; });
     const size_t decile = std::max<size_t>(1, sorted.size() / 10);
     int two_bridge = 0;
     for (size_t k = 0; k < decile && k < sorted.size(); ++k) two_bridge += sorted[k].bridge == 2;
-    nlohmann::ordered_json j;
-    j["scale"] = a.scale_name;
-    j["knots"] = rows.size();
-    j["equilibria"] = equilibria;
-    j["milnor_violations"] = violations;
-    j["bb_knots"] = bb;
-    j["bb_max_ratio_deviation"] = bb_worst;
-    j["bb_max_threedim"] = bb_threedim;
-    j["planar_threshold"] = kPlanarThreedim;
-    j["top_decile_size"] = decile;
-    j["top_decile_two_bridge_share"] = sorted.empty() ? 0.0 : static_cast<double>(two_bridge) / static_cast<double>(decile);
-    write_json(a.out + "/summary.json", j);
+    sum.knots = static_cast<long>(rows.size());
+    sum.equilibria = equilibria;
+    sum.milnor_violations = violations;
+    sum.planar_threshold = kPlanarThreedim;
+    sum.top_decile_size = static_cast<long>(decile);
+    sum.top_decile_two_bridge_share = sorted.empty() ? 0.0 : static_cast<double>(two_bridge) / static_cast<double>(decile);
+    write_summary(a, sum);
     std::cout << "exp_milnor: " << rows.size() << " knots, " << violations << " violations, BB max |ratio-1| "
-              << bb_worst << ", top-decile 2-bridge share " << j["top_decile_two_bridge_share"] << std::endl;
+              << sum.bb_max_ratio_deviation << ", top-decile 2-bridge share " << sum.top_decile_two_bridge_share
+              << std::endl;
   });
 }

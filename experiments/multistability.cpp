@@ -5,14 +5,17 @@
 // distinct equilibrium, represented by its lowest-energy member.
 //   ci: 40 samples each; default: 150 each; paper: 500 each (one sampling per
 //   data set: the per-knot files are merged, and a merge requires it).
-// Writes multistability.h5 (a data set), clusters_<knot>.csv and summary.json.
+// Writes multistability.h5 (a data set), clusters_<knot>.csv, members_<knot>.csv,
+// mds_7_7.csv and summary.json (docs/results.md).
 #include <algorithm>
 #include <iostream>
 
 #include "ek/analysis/clustering.hpp"
 #include "ek/analysis/mds.hpp"
 #include "ek/dataset/run.hpp"
+#include "ek/dataset/states.hpp"
 #include "experiment.hpp"
+#include "multistability_summary.hpp"
 #include "scales.hpp"
 
 using namespace ek;
@@ -36,10 +39,10 @@ int main(int argc, char** argv) {
     merge_datasets({a.out + "/4_1.h5", a.out + "/7_7.h5", a.out + "/8_1.h5"}, file);
     for (const auto& name : names) std::remove((a.out + "/" + name + ".h5").c_str());
     DatasetReader reader(file);
-    nlohmann::ordered_json j;
-    j["scale"] = a.scale_name;
-    j["cut"] = kClusterCut;
-    j["planar_threshold"] = kPlanarThreedim;
+    results::MultistabilitySummary sum;
+    sum.scale = a.scale_name;
+    sum.cut = kClusterCut;
+    sum.planar_threshold = kPlanarThreedim;
     for (const auto& name : names) {
       const KnotEntry e = reader.read(name);
       std::vector<int> rank_of;
@@ -48,10 +51,9 @@ int main(int argc, char** argv) {
                 sp = e.attribute_column("sphericity");
       Csv csv(a.out + "/clusters_" + name + ".csv",
               {"rank", "size", "energy", "representative", "total_curvature", "threedim", "sphericity"});
-      int three_d = 0;
+      const int three_d = count_3d_states(e, clusters, kPlanarThreedim);
       for (size_t c = 0; c < clusters.size(); ++c) {
         const int r = clusters[c].representative;
-        if (e.attributes(r, td) >= kPlanarThreedim) ++three_d;
         csv.row({std::to_string(c), std::to_string(clusters[c].members.size()), Csv::num(clusters[c].energy_min),
                  std::to_string(r), Csv::num(e.attributes(r, tc)), Csv::num(e.attributes(r, td)),
                  Csv::num(e.attributes(r, sp))});
@@ -76,13 +78,15 @@ int main(int argc, char** argv) {
                    std::to_string(position[i])});
         out.commit();
       }
-      j[name] = {{"samples", e.runs.size()},
-                 {"equilibria", e.equilibria.size()},
-                 {"distinct", clusters.size()},
-                 {"distinctly_3d", three_d}};
+      results::KnotStates& k = sum.knots[name];
+      k.samples = static_cast<long>(e.runs.size());
+      k.equilibria = static_cast<long>(e.equilibria.size());
+      k.distinct = static_cast<int>(clusters.size());
+      k.distinctly_3d = three_d;
+      k.distinctly_3d_share = clusters.empty() ? 0.0 : static_cast<double>(three_d) / static_cast<double>(clusters.size());
       std::cout << "exp_multistability: " << name << ": " << e.equilibria.size() << " equilibria, "
                 << clusters.size() << " distinct at cut " << kClusterCut << " (" << three_d << " 3D)" << std::endl;
     }
-    write_json(a.out + "/summary.json", j);
+    write_summary(a, sum);
   });
 }

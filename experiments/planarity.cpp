@@ -6,6 +6,7 @@
 
 #include "ek/dataset/dataset_file.hpp"
 #include "experiment.hpp"
+#include "planarity_summary.hpp"
 #include "scales.hpp"
 
 using namespace ek;
@@ -37,14 +38,14 @@ int main(int argc, char** argv) {
     Csv values(a.out + "/threedim.csv", {"threedim"});
     for (double v : all) values.row({Csv::num(v)});
     values.commit();
-    nlohmann::ordered_json j;
-    j["scale"] = a.scale_name;
-    j["threshold"] = kPlanarThreedim;
-    j["equilibria"] = total;
-    j["planar"] = planar;
-    j["planar_share"] = total ? static_cast<double>(planar) / total : 0.0;
-    write_json(a.out + "/summary.json", j);
-    std::cout << "exp_planarity: " << planar << " of " << total << " equilibria planar (share "
-              << j["planar_share"] << ")" << std::endl;
+    results::PlanaritySummary sum;
+    sum.scale = a.scale_name;
+    sum.threshold = kPlanarThreedim;
+    sum.equilibria = total;
+    sum.planar = planar;
+    sum.planar_share = total ? static_cast<double>(planar) / static_cast<double>(total) : 0.0;
+    write_summary(a, sum);
+    std::cout << "exp_planarity: " << planar << " of " << total << " equilibria planar (share " << sum.planar_share
+              << ")" << std::endl;
   });
 }

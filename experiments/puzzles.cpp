@@ -7,23 +7,21 @@
 // link is that writhe (the paper reports -3 and 1 for its two puzzles,
 // rounded). Reads ../dataset/dataset.h5 and ../multistability/multistability.h5.
 // Writes puzzles.csv (every pair), curves/ (the two states of the listed
-// puzzles) and summary.json.
-#include <algorithm>
+// puzzles) and summary.json (docs/results.md). The pairs: ek::find_puzzles().
 #include <cmath>
 #include <filesystem>
 #include <iostream>
-#include <map>
 #include <set>
 
 #include "ek/dataset/pipeline.hpp"
+#include "ek/dataset/states.hpp"
 #include "ek/geometry/curve_io.hpp"
 #include "experiment.hpp"
+#include "puzzles_summary.hpp"
 #include "scales.hpp"
 
 using namespace ek;
 using namespace ek::exp;
-
-constexpr double kWritheTolerance = 0.1;
 
 int main(int argc, char** argv) {
   return run_experiment(argc, argv, "exp_puzzles", "Puzzles: distinct stable states with equal writhe.", [](const Args& a) {
@@ -31,8 +29,10 @@ int main(int argc, char** argv) {
     std::filesystem::create_directories(a.out + "/curves");
     Csv csv(a.out + "/puzzles.csv", {"knot", "state_a", "state_b", "energy_a", "energy_b", "writhe_a", "writhe_b",
                                      "link", "link_rounded", "similarity", "curve_a", "curve_b"});
-    int pairs = 0, knots_with = 0;
-    nlohmann::ordered_json links = nlohmann::ordered_json::array();
+    results::PuzzlesSummary sum;
+    sum.scale = a.scale_name;
+    sum.writhe_tolerance = kWritheTolerance;
+    sum.cut = kClusterCut;
     std::set<std::string> done;
     for (const std::string& file : {a.results + "/multistability/multistability.h5", a.results + "/dataset/dataset.h5"}) {
       if (!std::filesystem::exists(file)) continue;
@@ -40,42 +40,25 @@ int main(int argc, char** argv) {
       for (const auto& name : reader.knot_names()) {
         if (!done.insert(name).second) continue;
         const KnotEntry e = reader.read(name);
-        const int m = static_cast<int>(e.equilibria.size());
-        if (m < 2) continue;
-        const int ec = e.attribute_column("energy"), wc = e.attribute_column("writhe");
-        std::vector<int> reps;  // lowest-energy member of each cluster, by energy
-        for (const auto& c : clusters_at_cut(e, kClusterCut)) reps.push_back(c.representative);
-        int found = 0;
-        for (size_t x = 0; x < reps.size(); ++x)
-          for (size_t y = x + 1; y < reps.size(); ++y) {
-            const int i = reps[x], k = reps[y];
-            const double wi = e.attributes(i, wc), wk = e.attributes(k, wc);
-            if (std::fabs(wi - wk) > kWritheTolerance) continue;
-            if (1.0 - e.similarity(i, k) <= kClusterCut) continue;  // the two states must differ visibly
-            const double link = 0.5 * (wi + wk);
-            const std::string ca = "curves/" + name + "_" + std::to_string(i) + ".obj";
-            const std::string cb = "curves/" + name + "_" + std::to_string(k) + ".obj";
-            write_curve(a.out + "/" + ca, e.equilibria[static_cast<size_t>(i)]);
-            write_curve(a.out + "/" + cb, e.equilibria[static_cast<size_t>(k)]);
-            csv.row({name, std::to_string(i), std::to_string(k), Csv::num(e.attributes(i, ec)),
-                     Csv::num(e.attributes(k, ec)), Csv::num(wi), Csv::num(wk), Csv::num(link),
-                     std::to_string(static_cast<long>(std::lround(link))), Csv::num(e.similarity(i, k)), ca, cb});
-            links.push_back({{"knot", name}, {"link", link}});
-            ++found;
-          }
-        pairs += found;
-        knots_with += found > 0;
+        const int ec = e.equilibria.empty() ? -1 : e.attribute_column("energy");
+        const std::vector<Puzzle> found = find_puzzles(e, kClusterCut, kWritheTolerance);
+        for (const Puzzle& z : found) {
+          const int i = z.state_a, k = z.state_b;
+          const std::string ca = "curves/" + name + "_" + std::to_string(i) + ".obj";
+          const std::string cb = "curves/" + name + "_" + std::to_string(k) + ".obj";
+          write_curve(a.out + "/" + ca, e.equilibria[static_cast<size_t>(i)]);
+          write_curve(a.out + "/" + cb, e.equilibria[static_cast<size_t>(k)]);
+          csv.row({name, std::to_string(i), std::to_string(k), Csv::num(e.attributes(i, ec)),
+                   Csv::num(e.attributes(k, ec)), Csv::num(z.writhe_a), Csv::num(z.writhe_b), Csv::num(z.link),
+                   std::to_string(static_cast<long>(std::lround(z.link))), Csv::num(z.similarity), ca, cb});
+          sum.links.push_back({name, z.link});
+        }
+        sum.puzzles += static_cast<int>(found.size());
+        sum.knots_with_puzzles += !found.empty();
       }
     }
     csv.commit();
-    nlohmann::ordered_json j;
-    j["scale"] = a.scale_name;
-    j["writhe_tolerance"] = kWritheTolerance;
-    j["cut"] = kClusterCut;
-    j["puzzles"] = pairs;
-    j["knots_with_puzzles"] = knots_with;
-    j["links"] = links;
-    write_json(a.out + "/summary.json", j);
-    std::cout << "exp_puzzles: " << pairs << " puzzles in " << knots_with << " knots" << std::endl;
+    write_summary(a, sum);
+    std::cout << "exp_puzzles: " << sum.puzzles << " puzzles in " << sum.knots_with_puzzles << " knots" << std::endl;
   });
 }

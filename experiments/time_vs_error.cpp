@@ -31,6 +31,7 @@
 #include "ek/rod/elastic_rod.hpp"
 #include "ek/solver/relax.hpp"
 #include "experiment.hpp"
+#include "time_vs_error_summary.hpp"
 #include "scales.hpp"
 
 using namespace ek;
@@ -60,8 +61,8 @@ int main(int argc, char** argv) {
              a.scale == Scale::CI ? 120.0 : 900.0);
     const RodMaterial mat;
     const double EI = mat.bending_stiffness();
-    nlohmann::ordered_json j;
-    j["scale"] = a.scale_name;
+    results::TimeVsErrorSummary sum;
+    sum.scale = a.scale_name;
 
     // 1. k-covered circles
     {
@@ -102,7 +103,6 @@ int main(int argc, char** argv) {
     {
       const double exact = std::sqrt(3.0) * (1.0 + mat.poisson);
       Csv csv(a.out + "/michell.csv", {"n", "critical_link", "exact", "relative_error", "seconds", "solves"});
-      nlohmann::ordered_json mj = nlohmann::ordered_json::array();
       for (int n : ns) {
         const Points circle = covered_circle(n, 1, n / (2.0 * M_PI));  // unit edges
         auto stable = [&](double lk) {
@@ -132,12 +132,11 @@ int main(int argc, char** argv) {
         const double secs = seconds_since(t0), lc = 0.5 * (lo + hi);
         csv.row({std::to_string(n), Csv::num(lc), Csv::num(exact), Csv::num(std::fabs(lc - exact) / exact),
                  Csv::num(secs / solves), std::to_string(solves)});
-        mj.push_back({{"n", n}, {"critical_link", lc}, {"relative_error", std::fabs(lc - exact) / exact}});
+        sum.michell.push_back({n, lc, std::fabs(lc - exact) / exact});
         std::cout << "exp_time_vs_error: Michell n = " << n << ": Lk_c = " << lc << " (exact " << exact << ")"
                   << std::endl;
       }
       csv.commit();
-      j["michell"] = mj;
     }
 
     // 3. knots: resolution sweep and tolerance sweep
@@ -197,6 +196,6 @@ int main(int argc, char** argv) {
       kc.commit();
       tc.commit();
     }
-    write_json(a.out + "/summary.json", j);
+    write_summary(a, sum);
   });
 }

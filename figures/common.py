@@ -1,7 +1,11 @@
 """Shared helpers of the figure scripts: arguments, reading results, drawing
 curves as three orthogonal shadow projections coloured by curvature (as the
 paper's figures do), saving PNG and PDF. Figure scripts read only the
-experiments' results files (results/<scale>/<experiment>/...)."""
+experiments' results files (results/<scale>/<experiment>/...), through the
+readers here: read_summary (summary.json), read_csv with flag (CSV tables),
+read_obj (curves), load_equilibria (data sets). The files' schemas are
+documented in docs/results.md; thresholds come from the summaries (the
+experiments write the values they applied)."""
 import argparse
 import csv
 import json
@@ -39,6 +43,30 @@ def read_json(path):
 def read_csv(path):
     with open(need(path)) as f:
         return list(csv.DictReader(f))
+
+
+def read_summary(results, experiment):
+    """results/<scale>/<experiment>/summary.json as a dict (docs/results.md)."""
+    return read_json(os.path.join(results, experiment, "summary.json"))
+
+
+def flag(cell):
+    """A CSV flag cell: "true"/"false" ("1"/"0" in files written before typed
+    results); an empty cell (or the old "-") is None."""
+    if cell in ("true", "1"):
+        return True
+    if cell in ("false", "0"):
+        return False
+    if cell in ("", "-", None):
+        return None
+    raise ValueError(f"CSV flag {cell!r}: expected true, false or empty")
+
+
+def read_obj(path):
+    """The vertices of a curve file written by the experiments (OBJ "v x y z"
+    lines), n by 3."""
+    with open(need(path)) as f:
+        return np.array([[float(x) for x in line.split()[1:4]] for line in f if line.startswith("v ")])
 
 
 def save(fig, out, name):

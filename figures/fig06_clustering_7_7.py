@@ -3,13 +3,13 @@ similarity matrix in dendrogram order, the complete-linkage dendrogram with
 the cut, and the 2D multidimensional scaling coloured by cluster."""
 import numpy as np
 
-from common import load_equilibria, parse_args, plt, read_csv, read_json, save
+from common import load_equilibria, parse_args, plt, read_csv, read_summary, save
 
 KNOT = "7_7"
 a = parse_args(__doc__)
 _, _, sim, link = load_equilibria(f"{a.results}/multistability/multistability.h5", KNOT)
 mds = read_csv(f"{a.results}/multistability/mds_{KNOT}.csv")
-cut = read_json(f"{a.results}/multistability/summary.json")["cut"]
+cut = read_summary(a.results, "multistability")["cut"]
 n = sim.shape[0]
 order = np.argsort([int(r["leaf_position"]) for r in mds])
 fig, (ax0, ax1, ax2) = plt.subplots(1, 3, figsize=(12, 3.8))

@@ -3,14 +3,14 @@ curvature divided by Milnor's bound 2π·bridge index; BB knots (bridge index =
 braid index) in their own colour, 2-bridge knots marked."""
 import numpy as np
 
-from common import parse_args, plt, read_csv, read_json, save
+from common import flag, parse_args, plt, read_csv, read_summary, save
 
 a = parse_args(__doc__)
 rows = read_csv(f"{a.results}/milnor/milnor.csv")
-summary = read_json(f"{a.results}/milnor/summary.json")
+summary = read_summary(a.results, "milnor")
 ratio = np.array([float(r["ratio"]) for r in rows])
-bb = np.array([r["bb"] == "1" for r in rows])
-two = np.array([r["two_bridge"] == "1" for r in rows])
+bb = np.array([bool(flag(r["bb"])) for r in rows], dtype=bool)
+two = np.array([bool(flag(r["two_bridge"])) for r in rows], dtype=bool)
 fig, ax = plt.subplots(figsize=(6.5, 3.2))
 bins = np.linspace(1.0, max(1.05, ratio.max() * 1.02), 40)
 ax.hist([ratio[bb], ratio[~bb & ~two], ratio[~bb & two]], bins=bins, stacked=True,

@@ -4,17 +4,14 @@ target), the three orthogonal shadows of the state it jumps to after the slab
 is released, and the energy released."""
 import numpy as np
 
-from common import draw_shadow, draw_three_shadows, curvature, parse_args, plt, read_csv, read_json, save
+from common import (curvature, draw_shadow, draw_three_shadows, flag, parse_args, plt, read_csv, read_obj,
+                    read_summary, save)
 
 a = parse_args(__doc__)
 rows = read_csv(f"{a.results}/jumping_knots/jumping.csv")
-s = read_json(f"{a.results}/jumping_knots/summary.json")
-jumping = [r for r in rows if r["jumps"] == "1"]
+s = read_summary(a.results, "jumping_knots")
+jumping = [r for r in rows if flag(r["jumps"])]
 shown = sorted(jumping, key=lambda r: -float(r["energy_released"]))[:6] or rows[:1]
-
-
-def read_obj(path):
-    return np.array([[float(x) for x in line.split()[1:4]] for line in open(path) if line.startswith("v ")])
 
 
 fig, axs = plt.subplots(4, len(shown), figsize=(2.0 * len(shown), 7.5), squeeze=False)
@@ -28,7 +25,7 @@ for col, r in enumerate(shown):
                           fontsize=7)
     draw_three_shadows([axs[1][col], axs[2][col], axs[3][col]], final)
     axs[1][col].set_title(f"after release: E = {float(r['final_energy']):.3f}\n3D-ness "
-                          f"{float(r['final_threedim']):.2f} ({'jumps' if r['jumps'] == '1' else 'no jump'})",
+                          f"{float(r['final_threedim']):.2f} ({'jumps' if flag(r['jumps']) else 'no jump'})",
                           fontsize=7)
 fig.suptitle(f"jumping knots: {len(jumping)} of {s['tested']} knots tested jump", fontsize=10)
 save(fig, a.out, "fig12_jumping_knots")

@@ -1,17 +1,11 @@
 """Fig. 14: knot puzzles. Pairs of distinct stable states of one knot with the
 same writhe (hence the same link for the joined wire): the two states'
 shadows and the link of the puzzle."""
-import numpy as np
-
-from common import draw_three_shadows, parse_args, plt, read_csv, read_json, save
+from common import draw_three_shadows, parse_args, plt, read_csv, read_obj, read_summary, save
 
 a = parse_args(__doc__)
 rows = read_csv(f"{a.results}/puzzles/puzzles.csv")
-s = read_json(f"{a.results}/puzzles/summary.json")
-
-
-def read_obj(path):
-    return np.array([[float(x) for x in line.split()[1:4]] for line in open(path) if line.startswith("v ")])
+s = read_summary(a.results, "puzzles")
 
 
 # one puzzle per knot, the pair with the most different shapes (lowest similarity)

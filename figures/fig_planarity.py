@@ -2,11 +2,11 @@
 equilibria left of the threshold count as approximately planar."""
 import numpy as np
 
-from common import parse_args, plt, read_csv, read_json, save
+from common import parse_args, plt, read_csv, read_summary, save
 
 a = parse_args(__doc__)
 values = np.array([float(r["threedim"]) for r in read_csv(f"{a.results}/planarity/threedim.csv")])
-s = read_json(f"{a.results}/planarity/summary.json")
+s = read_summary(a.results, "planarity")
 fig, ax = plt.subplots(figsize=(5.5, 3.0))
 ax.hist(values, bins=np.linspace(0, 1, 41), color="tab:blue")
 ax.axvline(s["threshold"], color="k", ls="--", lw=0.8, label=f"planar below {s['threshold']}")

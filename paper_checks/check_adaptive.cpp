@@ -2,20 +2,23 @@
 // importance score S <= 0.1). Checked here: the score, not the budget cap,
 // ends the sampling for at least 95% of the knots (the paper: 95%), and the
 // paper's rule (50 + 10, budget 500) saves at least 60% of the simulations
-// (the paper: 70%). "Every low-energy state is still
-// found" is asserted in open_claims.cpp.
+// (the paper: 70%). The paper claims no coverage of the low-energy states
+// (a truncated run's states "remain candidates for further exploration"):
+// the coverage is measured and printed, not asserted.
 #include <gtest/gtest.h>
 
+#include "adaptive_summary.hpp"
 #include "results.hpp"
 
+using ek::results::AdaptiveSummary;
+
 TEST(PaperAdaptive, ScoreEndsTheSamplingForMostKnots) {
-  const auto s = ek::paper::summary("adaptive");
-  const double stopped = s.at("stopped_by_score_share").get<double>();
-  std::cout << "[ measured ] score stopped the sampling for a share " << stopped << " of the " << s.at("knots")
-            << " knots (budget " << s.at("budget") << ", " << s.at("adaptive") << "); saved "
-            << s.at("saved_share") << ", median " << s.at("median_samples") << " samples per knot" << std::endl;
-  EXPECT_GE(stopped, 0.95);  // paper: 95% of the knot types
-  EXPECT_LT(s.at("adaptive_simulations").get<long>(), s.at("fixed_simulations").get<long>());  // it saves something
+  const auto s = ek::paper::summary<AdaptiveSummary>("adaptive");
+  std::cout << "[ measured ] score stopped the sampling for a share " << s.stopped_by_score_share << " of the "
+            << s.knots << " knots (budget " << s.budget << ", " << s.adaptive << "); saved " << s.saved_share
+            << ", median " << s.median_samples << " samples per knot" << std::endl;
+  EXPECT_GE(s.stopped_by_score_share, 0.95);  // paper: 95% of the knot types
+  EXPECT_LT(s.adaptive_simulations, s.fixed_simulations);  // it saves something
 }
 
 // The savings are the paper's rule (first 50 samples, batches of 10, stop when
@@ -27,19 +30,47 @@ TEST(PaperAdaptive, ScoreEndsTheSamplingForMostKnots) {
 // so the lower bound is the exact share and is asserted; at the ci scale (60
 // stored samples) only the upper bound is, i.e. that the claim is not refuted.
 TEST(PaperAdaptive, PaperRuleSavesAtLeastSixtyPercent) {
-  const auto s = ek::paper::summary("adaptive");
-  const auto& pr = s.at("paper_rule");
-  const double lower = pr.at("saved_share_lower_bound").get<double>();
-  const double upper = pr.at("saved_share_upper_bound").get<double>();
-  const int exact = pr.at("knots_stopped_within_stored").get<int>(), knots = s.at("knots").get<int>();
-  std::cout << "[ measured ] " << pr.at("adaptive") << " against " << pr.at("budget") << " per knot: saves between "
-            << lower << " and " << upper << " (" << exact << " of " << knots << " knots stop within the "
-            << pr.at("stored_samples") << " stored samples; median " << pr.at("median_samples_of_stopped")
+  const auto s = ek::paper::summary<AdaptiveSummary>("adaptive");
+  const auto& pr = s.paper_rule;
+  std::cout << "[ measured ] " << pr.adaptive << " against " << pr.budget << " per knot: saves between "
+            << pr.saved_share_lower_bound << " and " << pr.saved_share_upper_bound << " ("
+            << pr.knots_stopped_within_stored << " of " << s.knots << " knots stop within the " << pr.stored_samples
+            << " stored samples; median " << pr.median_samples_of_stopped
             << " samples where exact; the paper: 0.7 and a median of 90)" << std::endl;
-  EXPECT_GE(upper, 0.6);
-  const std::string scale = s.at("scale").get<std::string>();
-  if (scale != "ci") {
-    EXPECT_EQ(exact, knots) << "the stored runs must decide every knot at scale " << scale;
-    EXPECT_GE(lower, 0.6);
+  EXPECT_GE(pr.saved_share_upper_bound, 0.6);
+  if (s.scale != "ci") {
+    EXPECT_EQ(pr.knots_stopped_within_stored, s.knots) << "the stored runs must decide every knot at scale " << s.scale;
+    EXPECT_GE(pr.saved_share_lower_bound, 0.6);
   }
+}
+
+// Coverage of the low-energy states (clusters of the full budget within the
+// low_energy_factor of the knot's lowest energy), reported as measured values:
+// found by the scaled rule, by the paper's rule, over random sample orders,
+// and the share of the full budget's samples that ended in the missed
+// clusters. Asserted: only that the reported numbers are consistent with each
+// other (a count of missed clusters and samples that add up).
+TEST(PaperAdaptive, ReportsLowEnergyCoverage) {
+  const auto s = ek::paper::summary<AdaptiveSummary>("adaptive");
+  ASSERT_TRUE(s.missed_samples && s.missed_sample_share && s.low_energy_factor)
+      << "adaptive/summary.json predates the coverage keys: rerun the experiment";
+  std::cout << "[ measured ] " << s.low_energy_clusters_found << " of " << s.low_energy_clusters
+            << " clusters within " << *s.low_energy_factor << " x the minimum energy found (" << s.adaptive
+            << "); the missed ones hold " << *s.missed_samples << " of " << s.fixed_simulations
+            << " full-budget samples (share " << *s.missed_sample_share << "); with the paper's rule "
+            << s.paper_rule.low_energy_clusters_found << "; mean over random sample orders "
+            << s.shuffled.low_energy_clusters_found_mean << std::endl;
+  EXPECT_GT(s.low_energy_clusters, 0);
+  EXPECT_LE(s.low_energy_clusters_found, s.low_energy_clusters);
+  ASSERT_EQ(static_cast<int>(s.missed.size()), s.low_energy_clusters - s.low_energy_clusters_found);
+  long in_missed = 0;
+  for (const auto& m : s.missed) {
+    ASSERT_TRUE(m.samples.has_value()) << m.knot;
+    EXPECT_GE(*m.samples, 1) << m.knot;  // a cluster of the full budget holds a sample
+    EXPECT_LE(m.cluster_energy, *s.low_energy_factor * m.knot_min_energy) << m.knot;
+    in_missed += *m.samples;
+  }
+  EXPECT_EQ(in_missed, *s.missed_samples);
+  EXPECT_NEAR(*s.missed_sample_share, static_cast<double>(in_missed) / static_cast<double>(s.fixed_simulations),
+              1e-12);
 }

@@ -12,21 +12,24 @@
 #include "ek/dataset/pipeline.hpp"
 #include "ek/geometry/writhe.hpp"
 #include "ek/knots/table.hpp"
+#include "puzzles_summary.hpp"
 #include "results.hpp"
 
 TEST(PaperPuzzles, ListedPairsAreDistinctStatesWithEqualWrithe) {
-  const auto s = ek::paper::summary("puzzles");
-  const double tol = s.at("writhe_tolerance").get<double>();
+  const auto s = ek::paper::summary<ek::results::PuzzlesSummary>("puzzles");
+  const double tol = s.writhe_tolerance;
   const auto rows = ek::paper::csv(ek::paper::results("puzzles") + "/puzzles.csv");
-  std::cout << "[ measured ] " << s.at("puzzles") << " puzzles in " << s.at("knots_with_puzzles") << " knots"
-            << std::endl;
+  std::cout << "[ measured ] " << s.puzzles << " puzzles in " << s.knots_with_puzzles << " knots" << std::endl;
   EXPECT_GT(rows.size(), 0u);  // the paper finds puzzles (Fig. 14); so must the data sets
+  EXPECT_EQ(static_cast<int>(rows.size()), s.puzzles);
+  EXPECT_EQ(s.links.size(), rows.size());
+  EXPECT_DOUBLE_EQ(tol, ek::results::kWritheTolerance);
   for (const auto& r : rows) {
     const double wa = std::atof(r.at("writhe_a").c_str()), wb = std::atof(r.at("writhe_b").c_str());
     EXPECT_LE(std::fabs(wa - wb), tol) << r.at("knot");        // same link within the stated tolerance
     EXPECT_NE(r.at("state_a"), r.at("state_b")) << r.at("knot");  // representatives of two different clusters
     // and visibly different themselves: distance 1 - similarity above the cut
-    EXPECT_GT(1.0 - std::atof(r.at("similarity").c_str()), s.at("cut").get<double>()) << r.at("knot");
+    EXPECT_GT(1.0 - std::atof(r.at("similarity").c_str()), s.cut) << r.at("knot");
     EXPECT_NEAR(std::atof(r.at("link").c_str()), 0.5 * (wa + wb), 1e-9) << r.at("knot");
   }
 }
@@ -37,8 +40,8 @@ TEST(PaperPuzzles, ListedPairsAreDistinctStatesWithEqualWrithe) {
 // pipeline compares them) above the cut in distance, and the two states in
 // different clusters of the stored dendrogram at the cut.
 TEST(PaperPuzzles, ListedPairsHoldOnTheStoredCurves) {
-  const auto s = ek::paper::summary("puzzles");
-  const double tol = s.at("writhe_tolerance").get<double>(), cut = s.at("cut").get<double>();
+  const auto s = ek::paper::summary<ek::results::PuzzlesSummary>("puzzles");
+  const double tol = s.writhe_tolerance, cut = s.cut;
   const auto rows = ek::paper::csv(ek::paper::results("puzzles") + "/puzzles.csv");
   std::set<std::string> listed;
   for (const auto& r : rows) listed.insert(r.at("knot"));

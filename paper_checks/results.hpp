@@ -1,12 +1,18 @@
 #pragma once
-// Reading the experiments' results files in the paper checks.
+// Reading the experiments' results files in the paper checks: summary.json
+// as the experiment's summary struct (experiments/schema/*_summary.hpp, the
+// same definition the experiment writes with), CSV tables as text.
 #include <cstdlib>
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
+
+#include "json_fields.hpp"
+#include "thresholds.hpp"
 
 namespace ek::paper {
 
@@ -18,10 +24,31 @@ inline std::string results(const std::string& experiment) {
   return std::string(root && *root ? root : EK_PAPER_RESULTS) + "/" + experiment;
 }
 
-inline nlohmann::json summary(const std::string& experiment) {
-  std::ifstream in(results(experiment) + "/summary.json");
-  if (!in) throw std::runtime_error("missing " + results(experiment) + "/summary.json (did the experiment run?)");
-  return nlohmann::json::parse(in);
+/// The experiment's summary.json read as its struct, e.g.
+/// summary<results::MilnorSummary>("milnor").
+template <class Summary>
+Summary summary(const std::string& experiment) {
+  const std::string path = results(experiment) + "/summary.json";
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("missing " + path + " (did the experiment run?)");
+  return ek::results::parse_summary<Summary>(nlohmann::json::parse(in), path);
+}
+
+/// A CSV flag cell: "true" or "false" ("1" and "0" in files written before
+/// typed results). Anything else throws.
+inline bool flag(const std::string& cell) {
+  if (cell == "true" || cell == "1") return true;
+  if (cell == "false" || cell == "0") return false;
+  throw std::runtime_error("CSV flag '" + cell + "': expected true or false");
+}
+
+/// An optional measured value for printing: the value, or "n/a".
+template <class T>
+std::string or_na(const std::optional<T>& v) {
+  if (!v) return "n/a";
+  std::ostringstream s;
+  s << *v;
+  return s.str();
 }
 
 /// Rows of a CSV file with a header, as maps column -> text.

@@ -56,6 +56,14 @@ void write_text(const std::string& path, const std::string& text);
 /// Writes a JSON document (pretty) atomically.
 void write_json(const std::string& path, const nlohmann::ordered_json& j);
 
+/// Writes an experiment's summary struct (experiments/schema/*_summary.hpp)
+/// as DIR/summary.json, atomically; the summary is written last, so its
+/// presence marks a finished run (parse_args).
+template <class Summary>
+void write_summary(const Args& a, const Summary& s) {
+  write_json(a.out + "/summary.json", nlohmann::ordered_json(s));
+}
+
 /// A CSV table written atomically on commit().
 class Csv {
  public:
@@ -63,6 +71,8 @@ class Csv {
   Csv& row(const std::vector<std::string>& cells);
   void commit();
   static std::string num(double x, int digits = 12);
+  /// A flag cell: "true" or "false" (docs/results.md, "CSV files").
+  static std::string flag(bool x) { return x ? "true" : "false"; }
 
  private:
   std::string path_, text_;

@@ -9,6 +9,7 @@
 #include "ek/dataset/pipeline.hpp"
 #include "ek/embedding/embedding.hpp"
 #include "experiment.hpp"
+#include "thresholds.hpp"
 
 namespace ek::exp {
 
@@ -16,14 +17,9 @@ namespace ek::exp {
 /// used for the run-time estimates printed before a run.
 inline constexpr double kSecondsPerRelaxation = 1.5;
 
-/// The cut (distance 1 - similarity) at which equilibria count as the same
-/// state: used for every knot (clusters, distinct equilibria) and as the
-/// novelty distance δ of adaptive sampling.
-inline constexpr double kClusterCut = 0.05;
-
-/// An equilibrium is approximately planar when its 3D-ness (shortest over
-/// longest edge of the oriented bounding box) is below this.
-inline constexpr double kPlanarThreedim = 0.1;
+// The thresholds (kClusterCut, kPlanarThreedim, ...) are shared with the
+// paper checks and written into the summaries: experiments/schema/thresholds.hpp.
+using namespace ek::results;
 
 /// Options of the data-set runs shared by the experiments.
 inline ExploreOptions base_options(const Args& a) {

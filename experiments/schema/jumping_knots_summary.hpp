@@ -1,0 +1,20 @@
+#pragma once
+// summary.json of exp_jumping_knots (docs/results.md, "jumping_knots").
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "json_fields.hpp"
+
+namespace ek::results {
+
+struct JumpingKnotsSummary {
+  std::string scale;
+  double threedim_threshold = 0.0;         ///< [1] kJumpThreedim: the released state is 3D at or above it
+  std::optional<double> planar_threshold;  ///< [1] kPlanarThreedim: the flat stage is below it (absent before)
+  int tested = 0;                          ///< [1] knots whose flat and released stages ran
+  std::vector<std::string> jumping;        ///< the knots that jump, in table order
+};
+EK_JSON_FIELDS(JumpingKnotsSummary, scale, threedim_threshold, planar_threshold, tested, jumping)
+
+}  // namespace ek::results

@@ -1,0 +1,158 @@
+// The summaries of the paper experiments (experiments/schema): every struct
+// survives a round trip through the JSON that the experiments write, keys are
+// the field names in declaration order, a missing required key is an error
+// naming it, optional keys may be absent (files written before them), and
+// the flags of files written before typed results read as booleans.
+#include <gtest/gtest.h>
+
+#include "adaptive_summary.hpp"
+#include "dataset_summary.hpp"
+#include "jumping_knots_summary.hpp"
+#include "milnor_summary.hpp"
+#include "multistability_summary.hpp"
+#include "periodic_braids_summary.hpp"
+#include "planarity_summary.hpp"
+#include "puzzles_summary.hpp"
+#include "thresholds.hpp"
+#include "time_vs_error_summary.hpp"
+
+using namespace ek::results;
+using nlohmann::json;
+using nlohmann::ordered_json;
+
+namespace {
+/// Written as the experiments write it (ordered, dumped) and read back as the checks read it.
+template <class S>
+S round_trip(const S& s) {
+  return parse_summary<S>(json::parse(ordered_json(s).dump(2)), "test");
+}
+}  // namespace
+
+TEST(Summaries, AdaptiveRoundTrip) {
+  AdaptiveSummary s;
+  s.scale = "ci";
+  s.knots = 7;
+  s.score_threshold = 0.1;
+  s.low_energy_factor = 1.2;
+  s.low_energy_clusters = 30;
+  s.low_energy_clusters_found = 28;
+  s.missed_samples = 3;
+  s.missed_sample_share = 3.0 / 420;
+  s.missed = {{"5_2", 1.5, 1.4, 2}, {"6_1", 2.5, 2.2, 1}};
+  s.paper_rule.saved_share_lower_bound = 0.377;
+  s.shuffled.orders_per_knot = 20;
+  const AdaptiveSummary r = round_trip(s);
+  EXPECT_EQ(r.knots, 7);
+  EXPECT_EQ(r.missed_samples, std::optional<long>(3));
+  ASSERT_EQ(r.missed.size(), 2u);
+  EXPECT_EQ(r.missed[1].knot, "6_1");
+  EXPECT_EQ(r.missed[0].samples, std::optional<long>(2));
+  EXPECT_DOUBLE_EQ(r.paper_rule.saved_share_lower_bound, 0.377);
+  EXPECT_EQ(r.shuffled.orders_per_knot, 20);
+  // keys in declaration order, as the experiment writes them
+  const ordered_json j = s;
+  EXPECT_EQ(j.begin().key(), "scale");
+  EXPECT_EQ(j.back().size(), ordered_json(s.paper_rule).size());
+}
+
+// A file written before the coverage keys: the optional fields are empty.
+TEST(Summaries, OptionalKeysMayBeAbsent) {
+  json j = ordered_json(AdaptiveSummary{});
+  for (const char* k : {"score_threshold", "low_energy_factor", "missed_samples", "missed_sample_share"}) j.erase(k);
+  const AdaptiveSummary r = parse_summary<AdaptiveSummary>(j, "old");
+  EXPECT_FALSE(r.missed_samples.has_value());
+  EXPECT_FALSE(r.score_threshold.has_value());
+}
+
+TEST(Summaries, MissingRequiredKeyNamesIt) {
+  json j = ordered_json(MilnorSummary{});
+  j.erase("top_decile_size");
+  try {
+    parse_summary<MilnorSummary>(j, "results/ci/milnor/summary.json");
+    FAIL() << "no error";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("top_decile_size"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("results/ci/milnor/summary.json"), std::string::npos) << e.what();
+  }
+  j = ordered_json(MilnorSummary{});
+  j["knots"] = "many";  // a wrong type is an error too
+  EXPECT_THROW(parse_summary<MilnorSummary>(j, "x"), std::runtime_error);
+}
+
+// Typed flags and null for "not tabulated"; the legacy "1"/"0"/"-" strings
+// and "" for no knot read as the same values.
+TEST(Summaries, PeriodicBraidsFlagsAndLegacyStrings) {
+  PeriodicBraidsSummary s;
+  s.scale = "ci";
+  PeriodicMember m;
+  m.family = "s1s2i";
+  m.p = 2;
+  m.knot = "4_1";
+  m.alexander_matches_table = true;
+  m.axis = std::array<double, 3>{0.0, 0.0, 1.0};
+  s.members.push_back(m);
+  m.p = 7;
+  m.knot.reset();
+  m.alexander_matches_table.reset();
+  s.members.push_back(m);
+  const ordered_json j = s;
+  EXPECT_TRUE(j["members"][0]["alexander_matches_table"].is_boolean());
+  EXPECT_TRUE(j["members"][1]["alexander_matches_table"].is_null());
+  EXPECT_TRUE(j["members"][1]["knot"].is_null());
+  const auto r = round_trip(s);
+  EXPECT_EQ(r.members[0].tabulated(), "4_1");
+  EXPECT_EQ(r.members[0].axis->at(2), 1.0);
+  EXPECT_EQ(r.members[1].tabulated(), "");
+  json old = j;
+  old["members"][0]["alexander_matches_table"] = "1";
+  old["members"][1]["alexander_matches_table"] = "-";
+  old["members"][1]["knot"] = "";
+  old["members"][0].erase("axis");
+  const auto o = parse_summary<PeriodicBraidsSummary>(old, "old");
+  EXPECT_EQ(o.members[0].alexander_matches_table, std::optional<bool>(true));
+  EXPECT_FALSE(o.members[1].alexander_matches_table.has_value());
+  EXPECT_EQ(o.members[1].tabulated(), "");
+  EXPECT_FALSE(o.members[0].axis.has_value());
+  old["members"][0]["alexander_matches_table"] = "yes";
+  EXPECT_THROW(parse_summary<PeriodicBraidsSummary>(old, "old"), std::runtime_error);
+}
+
+// The per-knot objects sit under the knot names at the top level.
+TEST(Summaries, MultistabilityKnotsByName) {
+  MultistabilitySummary s;
+  s.scale = "default";
+  s.cut = kClusterCut;
+  s.planar_threshold = kPlanarThreedim;
+  s.knots["8_1"] = {150, 150, 9, 5, 5.0 / 9};
+  s.knots["4_1"] = {150, 149, 8, 7, 7.0 / 8};
+  const ordered_json j = s;
+  EXPECT_EQ(j["8_1"]["distinct"], 9);
+  const auto r = round_trip(s);
+  ASSERT_EQ(r.knots.size(), 2u);
+  EXPECT_EQ(r.knots.at("4_1").equilibria, 149);
+  EXPECT_DOUBLE_EQ(*r.knots.at("8_1").distinctly_3d_share, 5.0 / 9);
+  EXPECT_DOUBLE_EQ(r.cut, kClusterCut);
+}
+
+TEST(Summaries, OtherSummariesRoundTrip) {
+  DatasetSummary d;
+  d.knots = 14;
+  d.sampling = "fixed:12";
+  EXPECT_EQ(round_trip(d).sampling, "fixed:12");
+  MilnorSummary m;
+  m.bb_knots = {{"3_1", 1.00003, 0.006}};
+  EXPECT_EQ(round_trip(m).bb_knots.at(0).knot, "3_1");
+  PlanaritySummary p;
+  p.planar_share = 0.756;
+  EXPECT_DOUBLE_EQ(round_trip(p).planar_share, 0.756);
+  JumpingKnotsSummary k;
+  k.jumping = {"4_1", "12a_1019"};
+  k.planar_threshold = kPlanarThreedim;
+  EXPECT_EQ(round_trip(k).jumping.at(1), "12a_1019");
+  PuzzlesSummary z;
+  z.links = {{"7_7", -3.0}};
+  EXPECT_DOUBLE_EQ(round_trip(z).links.at(0).link, -3.0);
+  TimeVsErrorSummary t;
+  t.michell = {{400, 2.6, 1e-4}};
+  EXPECT_EQ(round_trip(t).michell.at(0).n, 400);
+}
