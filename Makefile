@@ -12,7 +12,7 @@ CMAKE_ARGS ?=
 CONFIGURE = cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DEK_KNOT_TABLE=$(KNOT_TABLE) $(CMAKE_ARGS)
 CTEST     = cd $(BUILD) && KNOT_TABLE=$(KNOT_TABLE) ctest --output-on-failure -j$(JOBS)
 
-.PHONY: help help-experiments deps configure build test unit sanitize stress bench figures experiments claims paper-open manifest clean
+.PHONY: help help-experiments deps configure build test unit sanitize stress bench figures experiments claims paper-open manifest compare-methods clean
 
 help:
 	@echo "make test      build, run all tests (unit, parsers, short stress, paper claims at ci scale, sanitizers)"
@@ -21,6 +21,7 @@ help:
 	@echo "make help-experiments  each experiment's inputs and run time per scale (experiments/manifest.json)"
 	@echo "make claims    the paper checks on the results of SCALE (make figures ends with it; docs/reproducing.md)"
 	@echo "make paper-open  the claims not reproduced (paper_checks/open_claims.cpp), values printed"
+	@echo "make compare-methods  the default relaxation method against the previous one (hybrid) on the SCALE data sets"
 	@echo "make bench     Google Benchmark microbenchmarks and macro benchmarks (results/bench/; docs/performance.md)"
 	@echo "make stress    the long numerical stress tests (label stress-long)"
 	@echo "make sanitize  parsers and readers built and tested with AddressSanitizer and UBSan"
@@ -133,6 +134,12 @@ figures/out/%.png: figures/%.py figures/common.py
 
 manifest:
 	$(PYTHON) scripts/manifest.py
+
+# The default relaxation method against the method before it (hybrid): both
+# methods' data sets and their paper checks, then their comparison
+# (docs/reproducing.md). SCALE=default by default; SCALE=ci is a smoke run.
+compare-methods: build
+	scripts/compare_methods.sh $(BUILD) $(SCALE) $(RESULTS) $(JOBS) $(KNOT_TABLE)
 
 help-experiments:
 	@$(foreach e,$(PAPER_EXPERIMENTS) $(BENCH_EXPERIMENTS),echo "$(e): minutes $(MINUTES_$(e))";)

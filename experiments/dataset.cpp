@@ -41,6 +41,7 @@ int main(int argc, char** argv) {
     sum.jobs = a.jobs;
     sum.equilibria_per_second = s.seconds > 0 ? s.equilibria / s.seconds : 0.0;
     sum.sampling = o.sampling_description();
+    sum.method = a.method;
     write_summary(a, sum);
     std::cout << "exp_dataset: " << s.knots << " knots, " << s.runs << " runs, " << s.equilibria
               << " equilibria in " << s.seconds << " s" << std::endl;

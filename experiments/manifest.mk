@@ -3,6 +3,7 @@
 
 PAPER_EXPERIMENTS := dataset milnor planarity multistability adaptive periodic_braids jumping_knots puzzles
 BENCH_EXPERIMENTS := time_vs_error bench_solver
+COMPARE_EXPERIMENTS := compare_methods
 PAPER_FIGURES := fig09_milnor fig_planarity fig02_equilibria_4_1 fig06_clustering_7_7 fig08_equilibria_8_1 fig_adaptive fig16_periodic_braids fig12_jumping_knots fig14_puzzles
 
 # an experiment reruns when its summary.json is older than its inputs' summaries
@@ -32,3 +33,4 @@ MINUTES_jumping_knots := ci:1 default:25 paper:450
 MINUTES_puzzles := ci:1 default:1 paper:1
 MINUTES_time_vs_error := ci:2 default:15
 MINUTES_bench_solver := default:30
+MINUTES_compare_methods := ci:8 default:60

@@ -39,8 +39,8 @@ def load():
         missing = [k for k in FIELDS if k not in e]
         if missing:
             fail(f"experiment {e.get('name')}: missing {', '.join(missing)}")
-        if e["group"] not in ("paper", "bench"):
-            fail(f"experiment {e['name']}: group must be paper or bench")
+        if e["group"] not in ("paper", "bench", "compare"):
+            fail(f"experiment {e['name']}: group must be paper, bench or compare")
         if not os.path.exists(os.path.join(ROOT, "experiments", e["name"] + ".cpp")):
             fail(f"experiment {e['name']}: no experiments/{e['name']}.cpp")
         for i in e["inputs"]:
@@ -81,6 +81,7 @@ def makefile(experiments):
            "",
            "PAPER_EXPERIMENTS := " + " ".join(e["name"] for e in paper),
            "BENCH_EXPERIMENTS := " + " ".join(e["name"] for e in experiments if e["group"] == "bench"),
+           "COMPARE_EXPERIMENTS := " + " ".join(e["name"] for e in experiments if e["group"] == "compare"),
            "PAPER_FIGURES := " + " ".join(f for e in paper for f in e["figures"]),
            "",
            "# an experiment reruns when its summary.json is older than its inputs' summaries"]

@@ -39,7 +39,8 @@ Args parse_args(int argc, char** argv, const std::string& name, const std::strin
       return argv[++i];
     };
     if (s == "--help" || s == "-h") {
-      std::cout << "usage: " << name << " --scale ci|default|paper --out DIR [--jobs J]\n" << description << "\n";
+      std::cout << "usage: " << name << " --scale ci|default|paper --out DIR [--jobs J] [--method M]\n"
+                << description << "\n";
       std::exit(0);
     } else if (s == "--scale") {
       a.scale_name = value();
@@ -55,6 +56,10 @@ Args parse_args(int argc, char** argv, const std::string& name, const std::strin
       const long j = std::strtol(v.c_str(), &end, 10);
       if (*end != '\0' || j < 1 || j > 256) fail("--jobs '" + v + "': expected an integer in 1..256");
       a.jobs = static_cast<int>(j);
+    } else if (s == "--method") {
+      a.method = value();
+      if (a.method != "default" && a.method != "hybrid" && a.method != "exact" && a.method != "paper")
+        fail("--method '" + a.method + "': expected default, hybrid, exact or paper");
     } else {
       fail("unknown argument '" + s + "' (see --help)");
     }

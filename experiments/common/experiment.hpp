@@ -25,9 +25,12 @@ struct Args {
   std::string out;        ///< output folder of this experiment
   std::string results;    ///< results root (parent of the experiments' folders)
   int jobs = 2;           ///< parallel relaxations
+  /// The relaxation method of the twist-free data-set runs (`--method`, as
+  /// `knots relax --method`: default, hybrid, exact, paper; with_method()).
+  std::string method = "default";
 };
 
-/// Parses `--scale ci|default|paper --out DIR [--jobs J]` (and --help);
+/// Parses `--scale ci|default|paper --out DIR [--jobs J] [--method M]` (and --help);
 /// creates DIR. Bad arguments: one line on stderr, exit status 2.
 ///
 /// Reruns: a DIR holding a finished run (DIR/summary.json, written last by

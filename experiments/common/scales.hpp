@@ -13,9 +13,10 @@
 
 namespace ek::exp {
 
-/// [s] measured median wall time of one relaxation at n = 400 on one core,
-/// used for the run-time estimates printed before a run.
-inline constexpr double kSecondsPerRelaxation = 1.5;
+/// [s] measured median wall time of one relaxation at n = 400 on one core
+/// by the default method (exp_bench_solver, docs/performance.md), used for
+/// the run-time estimates printed before a run.
+inline constexpr double kSecondsPerRelaxation = 0.3;
 
 // The thresholds (kClusterCut, kPlanarThreedim, ...) are shared with the
 // paper checks and written into the summaries: experiments/schema/thresholds.hpp.
@@ -24,6 +25,7 @@ using namespace ek::results;
 /// Options of the data-set runs shared by the experiments.
 inline ExploreOptions base_options(const Args& a) {
   ExploreOptions o;
+  o.relax = with_method(o.relax, a.method);
   o.jobs = a.jobs;
   o.novelty_distance = kClusterCut;
   o.seed = 1;

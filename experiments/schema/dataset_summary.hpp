@@ -15,7 +15,10 @@ struct DatasetSummary {
   int jobs = 0;                        ///< [1] parallel relaxations
   double equilibria_per_second = 0.0;  ///< [1/s]
   std::string sampling;                ///< ExploreOptions::sampling_description()
+  /// The relaxation method (--method: default, hybrid, exact, paper); null
+  /// in summaries written before it was recorded (they relaxed by hybrid).
+  std::optional<std::string> method;
 };
-EK_JSON_FIELDS(DatasetSummary, scale, knots, runs, equilibria, seconds, jobs, equilibria_per_second, sampling)
+EK_JSON_FIELDS(DatasetSummary, scale, knots, runs, equilibria, seconds, jobs, equilibria_per_second, sampling, method)
 
 }  // namespace ek::results

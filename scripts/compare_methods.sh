@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# make compare-methods: the data sets of the default relaxation method and of
+# the method before it (hybrid) from the same lattice samples, their paper
+# checks, and their comparison (experiments/compare_methods.cpp;
+# docs/reproducing.md, "Comparing the relaxation methods").
+#   scripts/compare_methods.sh BUILD SCALE RESULTS JOBS KNOT_TABLE
+# Results: RESULTS/compare_methods/<method>/<experiment>/ and
+# RESULTS/compare_methods/comparison/. A method's experiments are rerun when
+# one of their summaries is missing or older than a program.
+set -euo pipefail
+build=$1 scale=$2 results=$3 jobs=$4 table=$5
+exp=$(cd "$build" && pwd)/experiments
+mkdir -p "$results/compare_methods"
+root=$(cd "$results/compare_methods" && pwd)
+experiments="dataset milnor planarity multistability puzzles"
+checks='^Paper(Milnor|Planarity|Multistability|Puzzles)\.'
+
+up_to_date() {  # every summary of the method exists and is newer than every program
+  local m=$1
+  for e in $experiments; do
+    [ -f "$root/$m/$e/summary.json" ] || return 1
+    for p in $experiments; do [ "$root/$m/$e/summary.json" -nt "$exp/exp_$p" ] || return 1; done
+  done
+}
+
+for m in default hybrid; do
+  if ! up_to_date "$m"; then
+    for e in $experiments; do
+      "$exp/exp_$e" --scale "$scale" --method "$m" --out "$root/$m/$e" --jobs "$jobs"
+    done
+  fi
+  echo "== paper checks on the results of the $m method ($root/$m)"
+  (cd "$build" && EK_PAPER_RESULTS="$root/$m" KNOT_TABLE="$table" \
+     ctest --output-on-failure -L '^paper$' -R "$checks" -E '^paper_run_' -FS '.*')
+done
+"$exp/exp_compare_methods" --scale "$scale" --out "$root/comparison"
