@@ -469,3 +469,42 @@ TEST(Pipeline, OldFormatFileReadsAndExtends) {
   EXPECT_EQ(r.metadata().difference(dataset_metadata(other)), "grow_fugacity 0.4 vs 0.45");
   fs::remove_all(dir);
 }
+
+// Merge compares every pair of inputs: a parameter that the first input does
+// not record must still agree between the others; the merge records only what
+// every input records.
+TEST(Pipeline, MergeComparesEveryPairOfInputs) {
+  namespace fs = std::filesystem;
+  const std::string dir = fresh_dir("mergepairs");
+  DatasetMetadata meta = dataset_metadata(small_fixed_run(1, 1));
+  meta.created = "2026-01-01T00:00:00Z";
+  auto write = [&](const std::string& name, const std::string& knot, std::optional<bool> stiffness) {
+    DatasetMetadata m = meta;
+    m.compute_stiffness = stiffness;
+    KnotEntry e;  // no equilibria: only the parameters matter here
+    e.name = knot;
+    e.alexander = {1};
+    DatasetWriter w(dir + "/" + name, m);
+    w.add(e);
+    w.commit();
+    return dir + "/" + name;
+  };
+  const std::string a = write("a.h5", "3_1", std::nullopt), b = write("b.h5", "4_1", false),
+                    c = write("c.h5", "5_1", true);
+  try {
+    merge_datasets({a, b, c}, dir + "/abc.h5");
+    ADD_FAILURE() << "merged inputs with different stiffness flags";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("'" + c + "' has different parameters from '" + b +
+                                         "' (compute_stiffness 0 vs 1)"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_FALSE(fs::exists(dir + "/abc.h5"));
+  merge_datasets({a, b}, dir + "/ab.h5");
+  const DatasetReader r(dir + "/ab.h5");
+  EXPECT_EQ(r.knot_names(), (std::vector<std::string>{"3_1", "4_1"}));
+  EXPECT_FALSE(r.metadata().compute_stiffness.has_value());
+  EXPECT_EQ(r.metadata().difference(meta), "");
+  fs::remove_all(dir);
+}
