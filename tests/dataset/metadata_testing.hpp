@@ -36,6 +36,9 @@ inline DatasetMetadata complete_metadata() {
   m.contact_stiffness = 1234.5678;
   m.dhat = 0.45;
   m.twist_model = "free-theta";
+  m.relax_method = "multilevel";
+  m.coarse_levels = 2;
+  m.coarse_continuation = std::vector<double>{1e-2};
   m.max_iterations = 3000;
   m.burn_in = 7;
   m.sampling = "fixed:3,burn-in=7";

@@ -328,6 +328,9 @@ std::vector<Change> every_parameter_change() {
       {"contact_stiffness", [](ExploreOptions& o) { o.relax.contact_stiffness = 2000.0; }},
       {"dhat", [](ExploreOptions& o) { o.relax.dhat = 0.5; }},
       {"twist_model", [](ExploreOptions& o) { o.relax.full_model = true; }},
+      {"relax_method", [](ExploreOptions& o) { o.relax.method = RelaxMethod::Direct; }},
+      {"coarse_levels", [](ExploreOptions& o) { o.relax.coarse_levels = 2; }},
+      {"coarse_continuation", [](ExploreOptions& o) { o.relax.coarse_continuation = {1e-2}; }},
       {"max_iterations", [](ExploreOptions& o) { o.relax.max_iterations = 300; }},
       {"burn_in", [](ExploreOptions& o) { o.burn_in = 2; }},
       {"sampling", [](ExploreOptions& o) { o.samples = 2; }},
@@ -370,10 +373,14 @@ std::string fresh_dir(const std::string& name) {
 
 // Journals written by earlier versions keep their key, so an interrupted run
 // resumes after an upgrade; the parameters added to the key since (model,
-// edge length) are left out at the values those keys imply.
+// edge length, relaxation method) are left out at the values those keys
+// imply. Earlier versions relaxed by the direct method.
 TEST(Pipeline, JournalKeyIsTheEarlierKeyForTheEarlierParameters) {
-  std::vector<ExploreOptions> runs(6, small_fixed_run(3, 1));
+  ExploreOptions direct = small_fixed_run(3, 1);
+  direct.relax.method = RelaxMethod::Direct;
+  std::vector<ExploreOptions> runs(6, direct);
   runs[1] = ExploreOptions{};
+  runs[1].relax.method = RelaxMethod::Direct;
   runs[2].relax.contact_continuation = {1e-3, 0.1};
   runs[3].adaptive = true;
   runs[3].burn_in = 4;
@@ -385,7 +392,13 @@ TEST(Pipeline, JournalKeyIsTheEarlierKeyForTheEarlierParameters) {
     EXPECT_EQ("knot=3_1 " + journal_key(dataset_metadata(o)), earlier_journal_key("3_1", o));
   ExploreOptions full = runs[0];
   full.relax.full_model = true;
-  EXPECT_NE(journal_key(dataset_metadata(full)).find(" model=free-theta"), std::string::npos);
+  EXPECT_NE(journal_key(dataset_metadata(full)).find(" dhat=0.40000000000000002 model=free-theta iterations="),
+            std::string::npos);
+  // the multilevel method (the default) names itself and its settings
+  const std::string multilevel = journal_key(dataset_metadata(small_fixed_run(3, 1)));
+  EXPECT_NE(multilevel.find(" dhat=0.40000000000000002 method=multilevel levels=1 coarse=0.001 iterations=5000 "),
+            std::string::npos)
+      << multilevel;
 }
 
 // Every parameter changed in turn: extending a data set is refused with one
@@ -423,20 +436,22 @@ TEST(Pipeline, ExtendingNeedsEveryParameterEqual) {
   fs::remove_all(dir);
 }
 
-// A file written before the newer attributes existed (no BFACF schedule,
-// burn-in, stiffness flag or continuation; -1 for the iteration cap) reads
-// with the documented values and is extended by a run with default-equivalent
-// parameters; the extended file records only what both runs know.
+// A file written before the newer attributes existed (no relaxation method,
+// BFACF schedule, burn-in, stiffness flag or continuation; -1 for the
+// iteration cap) reads with the documented values and is extended by a run
+// with default-equivalent parameters (the direct method of earlier versions);
+// the extended file records only what both runs know.
 TEST(Pipeline, OldFormatFileReadsAndExtends) {
   namespace fs = std::filesystem;
   const std::string dir = fresh_dir("oldformat");
   const std::string out = dir + "/d.h5";
-  const ExploreOptions base = small_fixed_run(1, 1);
+  ExploreOptions base = small_fixed_run(1, 1);
+  base.relax.method = RelaxMethod::Direct;  // the method of earlier versions
   ASSERT_EQ(run_one_knot(base, "3_1", out).runs, 1);
   const hid_t f = H5Fopen(out.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
   ASSERT_GE(f, 0);
-  for (const char* name : {"grow_fugacity", "shrink_fugacity", "growth_factor", "decorrelation_moves", "burn_in",
-                           "compute_stiffness", "contact_continuation", "max_iterations"})
+  for (const char* name : {"relax_method", "grow_fugacity", "shrink_fugacity", "growth_factor", "decorrelation_moves",
+                           "burn_in", "compute_stiffness", "contact_continuation", "max_iterations"})
     ASSERT_GE(H5Adelete(f, name), 0) << name;
   const long long unknown = -1;
   const hid_t space = H5Screate(H5S_SCALAR);
@@ -447,6 +462,8 @@ TEST(Pipeline, OldFormatFileReadsAndExtends) {
   H5Fclose(f);
   {
     const DatasetMetadata m = DatasetReader(out).metadata();
+    EXPECT_EQ(m.relax_method, "direct");
+    EXPECT_FALSE(m.coarse_levels || m.coarse_continuation);
     EXPECT_EQ(m.grow_fugacity, 0.40);
     EXPECT_EQ(m.shrink_fugacity, 0.10);
     EXPECT_EQ(m.growth_factor, 10.0);
@@ -467,6 +484,7 @@ TEST(Pipeline, OldFormatFileReadsAndExtends) {
   EXPECT_EQ(r.metadata().difference(dataset_metadata(other)), "");
   other.sampling.grow_fugacity = 0.45;
   EXPECT_EQ(r.metadata().difference(dataset_metadata(other)), "grow_fugacity 0.4 vs 0.45");
+  EXPECT_EQ(r.metadata().difference(dataset_metadata(small_fixed_run(1, 1))), "relax_method direct vs multilevel");
   fs::remove_all(dir);
 }
 

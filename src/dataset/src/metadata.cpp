@@ -78,14 +78,17 @@ MetadataField field(std::optional<T> DatasetMetadata::*member, std::string name,
 
 std::vector<MetadataField> make_table() {
   constexpr auto exact = FieldMatch::Exact, relative = FieldMatch::Relative, provenance = FieldMatch::Provenance;
-  const FieldValue off = std::vector<double>{}, no_moves = std::int64_t{0};
+  const FieldValue off = std::vector<double>{}, no_moves = std::int64_t{0}, direct = std::string("direct");
   // FIELD(member): the member and its name, which is the HDF5 attribute, the
   // JSON key and the name in difference().
   // Old files: the attributes of the first version-1 files are required; the
   // BFACF schedule had these values in every run before it was recorded (it
-  // was not an option of `knots explore` or `knots dataset`); the iteration
-  // cap, the burn-in and the stiffness flag could differ between runs, so a
-  // file without them does not know them.
+  // was not an option of `knots explore` or `knots dataset`), and so had the
+  // relaxation method (a file from a version that relaxed by the multilevel
+  // method without recording it reads as direct: extending it with a
+  // multilevel run is refused, never mixed); the iteration cap, the burn-in
+  // and the stiffness flag could differ between runs, so a file without them
+  // does not know them.
   // Journal key: the fields added to it later are left out at the values
   // that older keys imply, so that older journals still resume.
   return {
@@ -99,6 +102,9 @@ std::vector<MetadataField> make_table() {
       field(FIELD(contact_stiffness),   "energy/length²", relative,   required(),          key("omega")),
       field(FIELD(dhat),                "length",         relative,   required(),          key("dhat")),
       field(FIELD(twist_model),         "",               exact,      required(),          key_unless("model", "twist-free")),
+      field(FIELD(relax_method),        "",               exact,      absent_means(direct), key_unless("method", direct)),
+      field(FIELD(coarse_levels),       "1",              exact,      not_recorded(),      key("levels")),
+      field(FIELD(coarse_continuation), "1",              exact,      not_recorded(),      key("coarse")),
       field(FIELD(max_iterations),      "1",              exact,      not_recorded(),      key("iterations")),
       field(FIELD(burn_in),             "samples",        exact,      not_recorded(),      no_key()),  // in sampling
       field(FIELD(sampling),            "",               exact,      required(),          key("sampling")),
@@ -209,7 +215,7 @@ std::string journal_key(const DatasetMetadata& meta) {
   for (const auto& f : metadata_fields()) {
     if (f.key.empty()) continue;
     const FieldValue v = f.get(meta);
-    if (!is_empty(f.key_omitted) && v == f.key_omitted) continue;
+    if (is_empty(v) || (!is_empty(f.key_omitted) && v == f.key_omitted)) continue;
     out += (out.empty() ? "" : " ") + f.key + "=" + exact_text(v);
   }
   return out;

@@ -109,6 +109,14 @@ DatasetMetadata dataset_metadata(const ExploreOptions& o) {
   m.contact_stiffness = resolved.contact_stiffness;
   m.dhat = resolved.dhat;
   m.twist_model = model_name(resolved.model);
+  // the multilevel method applies to the twist-free model without a slab (relax.hpp, RelaxMethod)
+  const bool multilevel = o.relax.method == RelaxMethod::Multilevel && resolved.model == TwistModel::TwistFree &&
+                          !o.relax.slab;
+  m.relax_method = to_string(multilevel ? RelaxMethod::Multilevel : RelaxMethod::Direct);
+  if (multilevel) {
+    m.coarse_levels = o.relax.coarse_levels;
+    m.coarse_continuation = o.relax.coarse_continuation;
+  }
   m.max_iterations = o.relax.max_iterations;
   m.burn_in = o.burn_in;
   m.sampling = o.sampling_description();

@@ -5,7 +5,7 @@
 /// its name in the journal key. The file's writer and reader, difference(),
 /// journal_key(), text() and json() are all generated from it, so a
 /// parameter added to the table is written, read, compared, journaled and
-/// described at once. README "Data-set files" lists the table for users.
+/// described at once. docs/dataset-format.md ("Parameters") lists it for users.
 ///
 /// A parameter belongs in the table when it changes which equilibria a run
 /// stores (material, n, solver, sampling, lattice walk, seed) or which
@@ -35,6 +35,12 @@ struct DatasetMetadata {
   std::optional<double> contact_stiffness;  ///< [energy/length²] ω
   std::optional<double> dhat;               ///< [length] barrier distance d̂
   std::optional<std::string> twist_model;   ///< "twist-free", "free-theta" or "fixed-link"
+  /// "multilevel" or "direct" (RelaxMethod), as relax() applies it: the
+  /// multilevel method only for the twist-free model without a slab.
+  std::optional<std::string> relax_method;
+  std::optional<int> coarse_levels;         ///< [1] multilevel: coarse levels below n (direct: empty)
+  /// [1] multilevel: continuation factors of the coarsest level (direct: empty).
+  std::optional<std::vector<double>> coarse_continuation;
   std::optional<int> max_iterations;        ///< [1] Newton iterations per relaxation phase
   std::optional<int> burn_in;               ///< [samples] walk samples discarded before sample 0
   /// ExploreOptions::sampling_description(): "fixed:50" or
@@ -116,8 +122,9 @@ const std::vector<MetadataField>& metadata_fields();
 
 /// The text identifying a run's parameters in its journals: "young=2000
 /// poisson=0.29999999999999999 ... stiffness=1", doubles with 17 significant
-/// digits, fields in table order, each under its key name; unchanged for the
-/// parameters of earlier versions, so their journals still resume.
+/// digits, fields in table order, each under its key name; empty fields and
+/// those at their MetadataField::key_omitted value are left out, so the key
+/// of a run with the parameters of earlier versions is the key they wrote.
 std::string journal_key(const DatasetMetadata& meta);
 
 /// The continuation factors as stored in the file's contact_continuation

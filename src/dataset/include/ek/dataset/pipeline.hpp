@@ -79,8 +79,9 @@ struct ExploreOptions {
 /// resolves them for the lattice samples' unit edges. Not recorded (library
 /// settings that `knots explore` and `knots dataset` do not expose, kept at
 /// their defaults there): start, similarity, mirror_amphicheiral, and the
-/// solver's inner settings (relax.newton, max_tangent_rotation, slab, the
-/// value of a prescribed link); jobs does not change the results.
+/// solver's inner settings (relax.newton, max_tangent_rotation,
+/// contact_hessian_margin, slab, the value of a prescribed link); jobs does
+/// not change the results.
 DatasetMetadata dataset_metadata(const ExploreOptions& options);
 
 /// Seed of a knot's walk: splitmix64 of the run seed and a hash of the name.
