@@ -39,6 +39,8 @@ inline DatasetMetadata complete_metadata() {
   m.relax_method = "multilevel";
   m.coarse_levels = 2;
   m.coarse_continuation = std::vector<double>{1e-2};
+  m.newton_hessian = "exact";
+  m.remove_rigid_motions = false;
   m.max_iterations = 3000;
   m.burn_in = 7;
   m.sampling = "fixed:3,burn-in=7";

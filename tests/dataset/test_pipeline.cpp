@@ -331,6 +331,8 @@ std::vector<Change> every_parameter_change() {
       {"relax_method", [](ExploreOptions& o) { o.relax.method = RelaxMethod::Direct; }},
       {"coarse_levels", [](ExploreOptions& o) { o.relax.coarse_levels = 2; }},
       {"coarse_continuation", [](ExploreOptions& o) { o.relax.coarse_continuation = {1e-2}; }},
+      {"newton_hessian", [](ExploreOptions& o) { o.relax.newton.hessian = HessianMode::Exact; }},
+      {"remove_rigid_motions", [](ExploreOptions& o) { o.relax.newton.remove_rigid_motions = false; }},
       {"max_iterations", [](ExploreOptions& o) { o.relax.max_iterations = 300; }},
       {"burn_in", [](ExploreOptions& o) { o.burn_in = 2; }},
       {"sampling", [](ExploreOptions& o) { o.samples = 2; }},
@@ -394,6 +396,17 @@ TEST(Pipeline, JournalKeyIsTheEarlierKeyForTheEarlierParameters) {
   full.relax.full_model = true;
   EXPECT_NE(journal_key(dataset_metadata(full)).find(" dhat=0.40000000000000002 model=free-theta iterations="),
             std::string::npos);
+  // every named method of with_method() has its own key and metadata
+  std::set<std::string> keys;
+  for (const char* name : {"default", "hybrid", "exact", "paper"}) {
+    ExploreOptions o = small_fixed_run(3, 1);
+    o.relax = with_method(o.relax, name);
+    keys.insert(journal_key(dataset_metadata(o)));
+    if (std::string(name) == "hybrid") {
+      EXPECT_EQ(journal_key(dataset_metadata(o)), journal_key(dataset_metadata(direct)));
+    }
+  }
+  EXPECT_EQ(keys.size(), 4u);
   // the multilevel method (the default) names itself and its settings
   const std::string multilevel = journal_key(dataset_metadata(small_fixed_run(3, 1)));
   EXPECT_NE(multilevel.find(" dhat=0.40000000000000002 method=multilevel levels=1 coarse=0.001 iterations=5000 "),
@@ -437,8 +450,8 @@ TEST(Pipeline, ExtendingNeedsEveryParameterEqual) {
 }
 
 // A file written before the newer attributes existed (no relaxation method,
-// BFACF schedule, burn-in, stiffness flag or continuation; -1 for the
-// iteration cap) reads with the documented values and is extended by a run
+// Newton settings, BFACF schedule, burn-in, stiffness flag or continuation;
+// -1 for the iteration cap) reads with the documented values and is extended by a run
 // with default-equivalent parameters (the direct method of earlier versions);
 // the extended file records only what both runs know.
 TEST(Pipeline, OldFormatFileReadsAndExtends) {
@@ -450,8 +463,9 @@ TEST(Pipeline, OldFormatFileReadsAndExtends) {
   ASSERT_EQ(run_one_knot(base, "3_1", out).runs, 1);
   const hid_t f = H5Fopen(out.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
   ASSERT_GE(f, 0);
-  for (const char* name : {"relax_method", "grow_fugacity", "shrink_fugacity", "growth_factor", "decorrelation_moves",
-                           "burn_in", "compute_stiffness", "contact_continuation", "max_iterations"})
+  for (const char* name : {"relax_method", "newton_hessian", "remove_rigid_motions", "grow_fugacity",
+                           "shrink_fugacity", "growth_factor", "decorrelation_moves", "burn_in", "compute_stiffness",
+                           "contact_continuation", "max_iterations"})
     ASSERT_GE(H5Adelete(f, name), 0) << name;
   const long long unknown = -1;
   const hid_t space = H5Screate(H5S_SCALAR);
@@ -463,7 +477,7 @@ TEST(Pipeline, OldFormatFileReadsAndExtends) {
   {
     const DatasetMetadata m = DatasetReader(out).metadata();
     EXPECT_EQ(m.relax_method, "direct");
-    EXPECT_FALSE(m.coarse_levels || m.coarse_continuation);
+    EXPECT_FALSE(m.coarse_levels || m.coarse_continuation || m.newton_hessian || m.remove_rigid_motions);
     EXPECT_EQ(m.grow_fugacity, 0.40);
     EXPECT_EQ(m.shrink_fugacity, 0.10);
     EXPECT_EQ(m.growth_factor, 10.0);

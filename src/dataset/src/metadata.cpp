@@ -78,7 +78,8 @@ MetadataField field(std::optional<T> DatasetMetadata::*member, std::string name,
 
 std::vector<MetadataField> make_table() {
   constexpr auto exact = FieldMatch::Exact, relative = FieldMatch::Relative, provenance = FieldMatch::Provenance;
-  const FieldValue off = std::vector<double>{}, no_moves = std::int64_t{0}, direct = std::string("direct");
+  const FieldValue off = std::vector<double>{}, no_moves = std::int64_t{0}, yes = std::int64_t{1};
+  const FieldValue direct = std::string("direct"), hybrid = std::string("hybrid");
   // FIELD(member): the member and its name, which is the HDF5 attribute, the
   // JSON key and the name in difference().
   // Old files: the attributes of the first version-1 files are required; the
@@ -86,11 +87,13 @@ std::vector<MetadataField> make_table() {
   // was not an option of `knots explore` or `knots dataset`), and so had the
   // relaxation method (a file from a version that relaxed by the multilevel
   // method without recording it reads as direct: extending it with a
-  // multilevel run is refused, never mixed); the iteration cap, the burn-in
-  // and the stiffness flag could differ between runs, so a file without them
-  // does not know them.
+  // multilevel run is refused, never mixed); the iteration cap, the burn-in,
+  // the Newton settings of the named methods (the earliest files used the
+  // exact Hessian) and the stiffness flag could differ between runs, so a
+  // file without them does not know them.
   // Journal key: the fields added to it later are left out at the values
-  // that older keys imply, so that older journals still resume.
+  // that the keys of earlier versions imply (their runs used the hybrid
+  // Hessian with rigid-motion removal), so that their journals still resume.
   return {
       //    member                      unit              compared    old files            journal key
       field(FIELD(young),               "pressure",       relative,   required(),          key("young")),
@@ -105,6 +108,8 @@ std::vector<MetadataField> make_table() {
       field(FIELD(relax_method),        "",               exact,      absent_means(direct), key_unless("method", direct)),
       field(FIELD(coarse_levels),       "1",              exact,      not_recorded(),      key("levels")),
       field(FIELD(coarse_continuation), "1",              exact,      not_recorded(),      key("coarse")),
+      field(FIELD(newton_hessian),      "",               exact,      not_recorded(),      key_unless("hessian", hybrid)),
+      field(FIELD(remove_rigid_motions), "",              exact,      not_recorded(),      key_unless("rigid", yes)),
       field(FIELD(max_iterations),      "1",              exact,      not_recorded(),      key("iterations")),
       field(FIELD(burn_in),             "samples",        exact,      not_recorded(),      no_key()),  // in sampling
       field(FIELD(sampling),            "",               exact,      required(),          key("sampling")),

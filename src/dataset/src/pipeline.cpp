@@ -117,6 +117,8 @@ DatasetMetadata dataset_metadata(const ExploreOptions& o) {
     m.coarse_levels = o.relax.coarse_levels;
     m.coarse_continuation = o.relax.coarse_continuation;
   }
+  m.newton_hessian = to_string(o.relax.newton.hessian);
+  m.remove_rigid_motions = o.relax.newton.remove_rigid_motions;
   m.max_iterations = o.relax.max_iterations;
   m.burn_in = o.burn_in;
   m.sampling = o.sampling_description();

@@ -41,6 +41,8 @@ struct DatasetMetadata {
   std::optional<int> coarse_levels;         ///< [1] multilevel: coarse levels below n (direct: empty)
   /// [1] multilevel: continuation factors of the coarsest level (direct: empty).
   std::optional<std::vector<double>> coarse_continuation;
+  std::optional<std::string> newton_hessian;  ///< NewtonOptions::hessian: "hybrid" or "exact"
+  std::optional<bool> remove_rigid_motions;   ///< NewtonOptions::remove_rigid_motions
   std::optional<int> max_iterations;        ///< [1] Newton iterations per relaxation phase
   std::optional<int> burn_in;               ///< [samples] walk samples discarded before sample 0
   /// ExploreOptions::sampling_description(): "fixed:50" or
