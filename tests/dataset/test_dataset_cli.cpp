@@ -13,6 +13,7 @@
 
 #include "cli_runner.hpp"
 #include "ek/dataset/dataset_file.hpp"
+#include "metadata_testing.hpp"
 
 using ek::clitest::run;
 using ek::clitest::temp_dir;
@@ -188,8 +189,7 @@ TEST(DatasetCli, BadInputOverwritesNothing) {
   expect_bad_input("dataset --max-crossings 2" + kSmall + "-o " + file, "between 3 and 12");
   expect_bad_input("explore 4_1 --samples 2 --burn-in -1" + kSmall + "-o " + file,
                    "--burn-in must be between 0 and 100000");
-  expect_bad_input("explore 4_1 --samples 2 --burn-in 3" + kSmall + "-o " + file,
-                   "different sampling (fixed:2 vs fixed:2,burn-in=3)");
+  expect_bad_input("explore 4_1 --samples 2 --burn-in 3" + kSmall + "-o " + file, "burn_in 0 vs 3");
   expect_bad_input("dataset --names 3_1 --shard 3/2" + kSmall + "-o " + file, "1 <= I <= N");
   expect_bad_input("explore 4_1 --samples 2 --continuation 1e-3" + kSmall + "-o " + file,
                    "contact_continuation off vs 0.001");
@@ -205,5 +205,65 @@ TEST(DatasetCli, BadInputOverwritesNothing) {
   EXPECT_EQ(again.json()["skipped"], true);
   ASSERT_EQ(run("explore 4_1 --samples 2" + kSmall + "-o " + file).status, 0);
   EXPECT_EQ(ek::DatasetReader(file).knot_names(), (std::vector<std::string>{"3_1", "4_1"}));
+  fs::remove_all(dir);
+}
+
+// Each parameter changed in turn: `knots explore` into an existing data set
+// and `knots merge` stop with one line naming the parameter (exit 2) and
+// leave every file as it was; `knots describe` lists the parameters.
+TEST(DatasetCli, EveryParameterMustMatchToExtendOrMerge) {
+  const std::string dir = temp_dir("ds_params");
+  const std::string file = dir + "/d.h5";
+  const std::string same = " --samples 1 -n 100 --quiet -o " + file;
+  ASSERT_EQ(run("explore 3_1 --no-stiffness" + same).status, 0);
+  const std::string before = slurp(file);
+  const std::vector<std::pair<std::string, std::string>> options = {
+      {"--young 2500", "young"},       {"--poisson 0.35", "poisson"},        {"--radius 0.15", "radius"},
+      {"--tol 1e-7", "tolerance"},     {"--max-iter 300", "max_iterations"}, {"--burn-in 2", "burn_in"},
+      {"--seed 2", "seed"},            {"--continuation 1e-3", "contact_continuation"}};
+  for (const auto& [option, field] : options)
+    expect_bad_input("explore 4_1 --no-stiffness " + option + same, "different parameters (" + field + " ");
+  expect_bad_input("explore 4_1" + same, "different parameters (compute_stiffness 0 vs 1)");
+  expect_bad_input("explore 4_1 --no-stiffness --samples 2 -n 100 --quiet -o " + file, "(sampling fixed:1 vs fixed:2)");
+  expect_bad_input("explore 4_1 --no-stiffness --adaptive -n 100 --quiet -o " + file, "(sampling fixed:1 vs adaptive:");
+  expect_bad_input("explore 4_1 --no-stiffness --samples 1 -n 120 --quiet -o " + file, "(vertices 100 vs 120)");
+  EXPECT_EQ(slurp(file), before);
+  EXPECT_FALSE(fs::exists(file + ".work"));
+  // merge: a second data set (knot 4_1) with one field of the table changed
+  const ek::KnotEntry knot = ek::DatasetReader(file).read("3_1");
+  const ek::DatasetMetadata meta = ek::DatasetReader(file).metadata();
+  for (const auto& f : ek::metadata_fields()) {
+    if (f.match == ek::FieldMatch::Provenance) continue;
+    ek::DatasetMetadata other = meta;
+    f.set(other, ek::testing_metadata::changed(f.get(meta)));
+    ek::KnotEntry renamed = knot;
+    renamed.name = "4_1";
+    {
+      ek::DatasetWriter w(dir + "/other.h5", other);
+      w.add(renamed);
+      w.commit();
+    }
+    const std::string other_before = slurp(dir + "/other.h5");
+    expect_bad_input("merge " + file + " " + dir + "/other.h5 -o " + dir + "/merged.h5", "(" + f.name + " ");
+    EXPECT_FALSE(fs::exists(dir + "/merged.h5")) << f.name;
+    EXPECT_EQ(slurp(dir + "/other.h5"), other_before) << f.name;
+  }
+  EXPECT_EQ(slurp(file), before);
+  // describe: every field of the table, with the values of the file
+  const auto d = run("describe " + file + " --json");
+  ASSERT_EQ(d.status, 0) << d.err;
+  const auto params = d.json()["parameters"];
+  ASSERT_EQ(params.size(), ek::metadata_fields().size());
+  EXPECT_EQ(params["vertices"], 100);
+  EXPECT_EQ(params["compute_stiffness"], 0);
+  EXPECT_EQ(params["sampling"], "fixed:1");
+  EXPECT_EQ(params["grow_fugacity"], 0.4);
+  EXPECT_EQ(params["contact_continuation"], nlohmann::json::array());
+  EXPECT_EQ(d.json()["knots"], nlohmann::json::parse("[\"3_1\"]"));
+  const auto t = run("describe " + file);
+  ASSERT_EQ(t.status, 0) << t.err;
+  EXPECT_NE(t.out.find("radius                0.2 [length]"), std::string::npos) << t.out;
+  EXPECT_NE(t.out.find("knots (1): 3_1"), std::string::npos) << t.out;
+  expect_bad_input("describe " + dir + "/none.h5", "not a readable HDF5 data set");
   fs::remove_all(dir);
 }

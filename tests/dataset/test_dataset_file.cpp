@@ -6,12 +6,17 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "ek/core/errors.hpp"
 #include "ek/dataset/dataset_file.hpp"
+#include "metadata_testing.hpp"
 #include "testing.hpp"
 
 using namespace ek;
+using ek::testing_metadata::changed;
+using ek::testing_metadata::complete_metadata;
 
 namespace {
 
@@ -52,11 +57,7 @@ KnotEntry sample_entry(const std::string& name, int m, int n) {
 
 TEST(DatasetFile, RoundTrip) {
   const std::string path = ::testing::TempDir() + "round.h5";
-  DatasetMetadata meta;
-  meta.project_version = "test";
-  meta.created = "2026-11-22T00:00:00Z";
-  meta.knot_table = "/x/knotinfo.csv";
-  meta.sampling = "fixed:3";
+  const DatasetMetadata meta = complete_metadata();
   {
     DatasetWriter w(path, meta);
     w.add(sample_entry("4_1", 3, 40));
@@ -64,8 +65,14 @@ TEST(DatasetFile, RoundTrip) {
     w.commit();
   }
   DatasetReader r(path);
+  // every field of the table, bit for bit
+  for (const auto& f : metadata_fields()) {
+    ASSERT_FALSE(std::holds_alternative<std::monostate>(f.get(meta))) << f.name << " is not set in the fixture";
+    EXPECT_TRUE(f.get(r.metadata()) == f.get(meta)) << f.name;
+  }
   EXPECT_EQ(r.metadata().difference(meta), "");
-  EXPECT_EQ(r.metadata().sampling, "fixed:3");
+  EXPECT_EQ(r.metadata().seed, meta.seed);  // >= 2^63 through the int64 attribute
+  EXPECT_EQ(r.metadata().contact_continuation, meta.contact_continuation);  // 17 digits: bit for bit
   EXPECT_EQ(r.knot_names(), (std::vector<std::string>{"4_1", "3_1"}));
   const KnotEntry a = r.read("4_1"), b = sample_entry("4_1", 3, 40);
   ASSERT_EQ(a.equilibria.size(), 3u);
@@ -91,7 +98,7 @@ TEST(DatasetFile, UncommittedWriterLeavesExistingFileAlone) {
   const std::string path = ::testing::TempDir() + "keep.h5";
   { std::ofstream(path) << "precious"; }
   {
-    DatasetWriter w(path, DatasetMetadata{});
+    DatasetWriter w(path, complete_metadata());
     w.add(sample_entry("4_1", 2, 20));
     // destroyed without commit
   }
@@ -113,75 +120,159 @@ TEST(DatasetFile, BadFilesAreInputErrors) {
   std::remove(path.c_str());
 }
 
-TEST(DatasetFile, MetadataDifference) {
-  DatasetMetadata a, b;
-  EXPECT_EQ(a.difference(b), "");
+
+namespace {
+
+bool is_empty(const FieldValue& v) { return std::holds_alternative<std::monostate>(v); }
+
+/// Runs f on the open file (read-write).
+void edit_file(const std::string& path, const std::function<void(hid_t)>& f) {
+  const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  f(file);
+  H5Fclose(file);
+}
+
+void write_int_attribute(hid_t f, const char* name, long long value) {
+  H5Adelete(f, name);
+  const hid_t space = H5Screate(H5S_SCALAR);
+  const hid_t a = H5Acreate2(f, name, H5T_STD_I64LE, space, H5P_DEFAULT, H5P_DEFAULT);
+  ASSERT_GE(a, 0);
+  H5Awrite(a, H5T_NATIVE_LLONG, &value);
+  H5Aclose(a);
+  H5Sclose(space);
+}
+
+void write_text_attribute(hid_t f, const char* name, const char* value) {
+  H5Adelete(f, name);
+  const hid_t type = H5Tcopy(H5T_C_S1);  // a variable-length string, as the writer stores text
+  H5Tset_size(type, H5T_VARIABLE);
+  const hid_t space = H5Screate(H5S_SCALAR);
+  const hid_t a = H5Acreate2(f, name, type, space, H5P_DEFAULT, H5P_DEFAULT);
+  ASSERT_GE(a, 0);
+  H5Awrite(a, type, &value);
+  H5Aclose(a);
+  H5Sclose(space);
+  H5Tclose(type);
+}
+
+std::string write_one_knot_file(const std::string& name, const DatasetMetadata& meta) {
+  const std::string path = ::testing::TempDir() + name;
+  DatasetWriter w(path, meta);
+  w.add(sample_entry("3_1", 1, 40));
+  w.commit();
+  return path;
+}
+
+}  // namespace
+
+// Every compared field in turn: a changed value is reported by name with
+// both values, in either order; a field that one side does not record
+// matches; provenance is never compared.
+TEST(DatasetMetadataTable, DifferenceNamesEachField) {
+  const DatasetMetadata a = complete_metadata();
+  for (const auto& f : metadata_fields()) {
+    DatasetMetadata b = a;
+    f.set(b, changed(f.get(a)));
+    ASSERT_FALSE(f.get(b) == f.get(a)) << f.name;
+    if (f.match == FieldMatch::Provenance) {
+      EXPECT_EQ(a.difference(b), "") << f.name;
+      continue;
+    }
+    EXPECT_EQ(a.difference(b).rfind(f.name + " ", 0), 0u) << f.name << ": " << a.difference(b);
+    EXPECT_EQ(b.difference(a).rfind(f.name + " ", 0), 0u) << f.name << ": " << b.difference(a);
+    f.set(b, std::monostate{});
+    EXPECT_EQ(a.difference(b), "") << f.name << " not recorded matches";
+    EXPECT_EQ(b.difference(a), "") << f.name << " not recorded matches";
+  }
+}
+
+TEST(DatasetMetadataTable, DifferenceMessagesAndTolerance) {
+  DatasetMetadata a = complete_metadata(), b = a;
+  a.radius = 0.2;
   b.radius = 0.1;
   EXPECT_EQ(a.difference(b), "radius 0.2 vs 0.1");
   b = a;
   b.vertices = 200;
-  EXPECT_EQ(a.difference(b), "vertices 400 vs 200");
-  // the iteration cap counts only when both files record it
+  EXPECT_EQ(a.difference(b), "vertices 120 vs 200");
   b = a;
-  a.max_iterations = 5000;
-  EXPECT_EQ(a.difference(b), "");
-  b.max_iterations = 2000;
-  EXPECT_EQ(a.difference(b), "max_iterations 5000 vs 2000");
-  // the continuation always counts (it changes which equilibria a walk reaches)
-  b = a;
-  b.contact_continuation = {1e-3};
+  a.contact_continuation = std::vector<double>{};
+  b.contact_continuation = std::vector<double>{1e-3};
   EXPECT_EQ(a.difference(b), "contact_continuation off vs 0.001");
-  a.contact_continuation = {1e-3, 0.1};
+  a.contact_continuation = std::vector<double>{1e-3, 0.1};
   EXPECT_EQ(a.difference(b), "contact_continuation 0.001,0.10000000000000001 vs 0.001");
+  b = a;
+  b.compute_stiffness = true;
+  EXPECT_EQ(a.difference(b), "compute_stiffness 0 vs 1");
+  // doubles are equal to a relative 1e-12 (values written and read back in binary)
+  b = a;
+  b.young = *a.young * (1.0 + 1e-13);
+  EXPECT_EQ(a.difference(b), "");
+  b.young = *a.young * (1.0 + 1e-9);
+  EXPECT_EQ(a.difference(b), "young 2100.5 vs 2100.500002");
 }
 
-// The solver's iteration cap and continuation factors are file attributes;
-// files written before they existed read as "not recorded" and "off", and a
-// malformed continuation attribute is an input error.
-TEST(DatasetFile, SolverCapAndContinuationAttributes) {
-  const std::string path = ::testing::TempDir() + "solver_meta.h5";
-  DatasetMetadata meta;
-  meta.sampling = "fixed:1";
-  meta.max_iterations = 3000;
-  meta.contact_continuation = {1e-3, 0.1 / 3.0};
-  {
-    DatasetWriter w(path, meta);
-    w.add(sample_entry("3_1", 1, 40));
-    w.commit();
+// A merged or extended file keeps only what every part records.
+TEST(DatasetMetadataTable, ForgetUnrecorded) {
+  DatasetMetadata a = complete_metadata(), old = a;
+  old.max_iterations.reset();
+  old.compute_stiffness.reset();
+  a.forget_unrecorded(old);
+  EXPECT_FALSE(a.max_iterations.has_value());
+  EXPECT_FALSE(a.compute_stiffness.has_value());
+  EXPECT_EQ(a.burn_in, 7);
+  EXPECT_EQ(a.young, 2100.5);
+}
+
+// The writer needs every field that a file must have; the others may be "not
+// recorded": left out of the file and read back as not recorded.
+TEST(DatasetMetadataTable, WriterNeedsEveryRequiredField) {
+  for (const auto& f : metadata_fields()) {
+    DatasetMetadata m = complete_metadata();
+    f.set(m, std::monostate{});
+    if (f.absent != WhenAbsent::NotRecorded) {
+      try {
+        write_one_knot_file("unset.h5", m);
+        ADD_FAILURE() << "an unset " << f.name << " was written";
+      } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("'" + f.name + "' is not set"), std::string::npos) << e.what();
+      }
+      continue;
+    }
+    const std::string path = write_one_knot_file("unrecorded.h5", m);
+    EXPECT_TRUE(is_empty(f.get(DatasetReader(path).metadata()))) << f.name;
+    std::remove(path.c_str());
   }
-  {
-    DatasetReader r(path);
-    EXPECT_EQ(r.metadata().max_iterations, 3000);
-    EXPECT_EQ(r.metadata().contact_continuation, meta.contact_continuation);  // bit for bit (17 digits)
-    EXPECT_EQ(r.metadata().difference(meta), "");
-  }
-  auto edit_attributes = [&](const std::function<void(hid_t)>& f) {
-    const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
-    ASSERT_GE(file, 0);
-    f(file);
-    H5Fclose(file);
-  };
-  edit_attributes([](hid_t f) {
-    ASSERT_GE(H5Adelete(f, "max_iterations"), 0);
-    ASSERT_GE(H5Adelete(f, "contact_continuation"), 0);
+  EXPECT_FALSE(std::filesystem::exists(::testing::TempDir() + "unset.h5"));
+}
+
+// Files written before an attribute existed: the required ones are in every
+// version-1 file (missing: an input error naming the file and attribute); the
+// others read as the documented value or as "not recorded"; earlier versions
+// wrote -1 for an unknown iteration cap.
+TEST(DatasetMetadataTable, OldFilesReadWithDocumentedValues) {
+  const std::string path = write_one_knot_file("old.h5", complete_metadata());
+  edit_file(path, [](hid_t f) {
+    for (const auto& field : metadata_fields()) {
+      if (field.absent != WhenAbsent::Required) {
+        ASSERT_GE(H5Adelete(f, field.name.c_str()), 0) << field.name;
+      }
+    }
   });
   {
-    DatasetReader r(path);
-    EXPECT_EQ(r.metadata().max_iterations, -1);
-    EXPECT_TRUE(r.metadata().contact_continuation.empty());
+    const DatasetMetadata m = DatasetReader(path).metadata();
+    for (const auto& f : metadata_fields()) {
+      const FieldValue expected = f.absent == WhenAbsent::Default    ? f.absent_value
+                                  : f.absent == WhenAbsent::Required ? f.get(complete_metadata())
+                                                                     : FieldValue{};
+      EXPECT_TRUE(f.get(m) == expected) << f.name;
+    }
+    EXPECT_EQ(m.grow_fugacity, 0.40);
+    EXPECT_EQ(m.contact_continuation, std::vector<double>{});  // off
   }
-  edit_attributes([](hid_t f) {
-    const char* bad = "0.5,,2";  // a variable-length string, as the writer stores text
-    const hid_t type = H5Tcopy(H5T_C_S1);
-    H5Tset_size(type, H5T_VARIABLE);
-    const hid_t space = H5Screate(H5S_SCALAR);
-    const hid_t a = H5Acreate2(f, "contact_continuation", type, space, H5P_DEFAULT, H5P_DEFAULT);
-    ASSERT_GE(a, 0);
-    H5Awrite(a, type, &bad);
-    H5Aclose(a);
-    H5Sclose(space);
-    H5Tclose(type);
-  });
+  edit_file(path, [](hid_t f) { write_int_attribute(f, "max_iterations", -1); });
+  EXPECT_FALSE(DatasetReader(path).metadata().max_iterations.has_value());
+  edit_file(path, [](hid_t f) { write_text_attribute(f, "contact_continuation", "0.5,,2"); });
   try {
     DatasetReader r(path);
     ADD_FAILURE() << "a malformed contact_continuation attribute was accepted";
@@ -189,5 +280,77 @@ TEST(DatasetFile, SolverCapAndContinuationAttributes) {
     EXPECT_NE(std::string(e.what()).find("malformed contact_continuation attribute '0.5,,2'"), std::string::npos)
         << e.what();
   }
+  edit_file(path, [](hid_t f) {
+    H5Adelete(f, "contact_continuation");
+    ASSERT_GE(H5Adelete(f, "dhat"), 0);
+  });
+  try {
+    DatasetReader r(path);
+    ADD_FAILURE() << "a file without dhat was accepted";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("lacks the data-set attribute 'dhat'"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+  }
   std::remove(path.c_str());
+}
+
+// The journal key names every compared field that has a key (the burn-in is
+// part of the sampling text), so a journal of a run with any other parameter
+// is refused; fields added to the key later are left out at the values that
+// older keys imply.
+TEST(DatasetMetadataTable, JournalKeyCoversEveryComparedField) {
+  const DatasetMetadata a = complete_metadata();
+  const std::string key = journal_key(a);
+  EXPECT_EQ(key,
+            "young=2100.5 poisson=0.33333333333333331 radius=0.25 n=120 tol=3.3333333333333334e-09 omega=1234.5678 "
+            "dhat=0.45000000000000001 model=free-theta method=multilevel levels=2 coarse=0.01 hessian=exact rigid=0 "
+            "iterations=3000 "
+            "sampling=fixed:3,burn-in=7 "
+            "grow=0.40999999999999998 shrink=0.089999999999999997 growth=9.5 decorrelation=12345 "
+            "seed=9223372036854775813 stiffness=0 continuation=0.001,0.033333333333333333");
+  for (const auto& f : metadata_fields()) {
+    if (f.match == FieldMatch::Provenance || f.key.empty()) {
+      EXPECT_TRUE(f.match == FieldMatch::Provenance || f.name == "burn_in") << f.name << " has no journal key";
+      continue;
+    }
+    DatasetMetadata b = a;
+    f.set(b, changed(f.get(a)));
+    EXPECT_NE(journal_key(b), key) << f.name;
+    if (!(f.get(b) == f.key_omitted)) {  // rigid=0 changed to 1 is left out
+      EXPECT_NE((" " + journal_key(b)).find(" " + f.key + "="), std::string::npos) << f.name;
+    }
+    if (!is_empty(f.key_omitted)) {  // edge=1 is left out of `key`
+      f.set(b, f.key_omitted);
+      EXPECT_EQ((" " + journal_key(b)).find(" " + f.key + "="), std::string::npos) << f.name;
+    }
+    f.set(b, std::monostate{});  // not recorded: left out
+    EXPECT_EQ((" " + journal_key(b)).find(" " + f.key + "="), std::string::npos) << f.name;
+  }
+}
+
+// text() and json() list every field in table order, with units and "not
+// recorded" (null) for empty fields.
+TEST(DatasetMetadataTable, TextAndJsonDescriptions) {
+  DatasetMetadata m = complete_metadata();
+  m.max_iterations.reset();
+  const nlohmann::json j = nlohmann::json::parse(m.json());
+  std::istringstream text(m.text());
+  std::string line;
+  for (const auto& f : metadata_fields()) {
+    ASSERT_TRUE(std::getline(text, line)) << f.name;
+    EXPECT_EQ(line.rfind(f.name + " ", 0), 0u) << line;
+    if (!f.unit.empty()) {
+      EXPECT_NE(line.find("[" + f.unit + "]"), std::string::npos) << line;
+    }
+    ASSERT_TRUE(j.contains(f.name)) << f.name;
+  }
+  EXPECT_FALSE(std::getline(text, line));
+  EXPECT_EQ(j.size(), metadata_fields().size());
+  EXPECT_TRUE(j["max_iterations"].is_null());
+  EXPECT_EQ(j["vertices"], 120);
+  EXPECT_EQ(j["twist_model"], "free-theta");
+  EXPECT_EQ(j["compute_stiffness"], 0);
+  EXPECT_EQ(j["contact_continuation"], nlohmann::json::parse("[0.001, 0.03333333333333333]"));
+  EXPECT_NE(m.text().find("max_iterations        not recorded"), std::string::npos) << m.text();
+  EXPECT_NE(m.text().find("radius                0.25 [length]"), std::string::npos) << m.text();
 }

@@ -1,9 +1,13 @@
 #include <gtest/gtest.h>
+#include <hdf5.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <filesystem>
-
-#include <unistd.h>
+#include <fstream>
+#include <functional>
+#include <set>
+#include <sstream>
 
 #include "ek/core/errors.hpp"
 #include "ek/dataset/run.hpp"
@@ -286,4 +290,253 @@ TEST(Pipeline, MirrorComparisonsForAmphicheiralKnotsOnly) {
   ExploreOptions off;
   off.mirror_amphicheiral = false;
   EXPECT_FALSE(options_for_knot(off, KnotTable::global().at("4_1")).similarity.mirror);
+}
+
+namespace {
+
+/// The journal key as earlier versions wrote it (their journals must still
+/// resume): a copy of their key function.
+std::string earlier_journal_key(const std::string& knot, const ExploreOptions& o) {
+  std::ostringstream s;
+  s.precision(17);
+  const ResolvedModel r = resolve_model(o.relax, 1.0);
+  s << "knot=" << knot << " young=" << o.relax.material.young << " poisson=" << o.relax.material.poisson
+    << " radius=" << o.relax.material.radius << " n=" << o.sampling.vertices << " tol=" << r.tolerance
+    << " omega=" << r.contact_stiffness << " dhat=" << r.dhat << " iterations=" << o.relax.max_iterations
+    << " sampling=" << o.sampling_description() << " grow=" << o.sampling.grow_fugacity
+    << " shrink=" << o.sampling.shrink_fugacity << " growth=" << o.sampling.growth_factor
+    << " decorrelation=" << o.sampling.decorrelation_moves << " seed=" << o.seed << " stiffness=" << o.stiffness;
+  if (!o.relax.contact_continuation.empty()) s << " continuation=" << continuation_text(o.relax.contact_continuation);
+  return s.str();
+}
+
+/// One parameter of a run changed: the field that must name it, and the change.
+struct Change {
+  std::string field;
+  std::function<void(ExploreOptions&)> apply;
+};
+
+/// Every field of the table that ExploreOptions reaches, changed in turn
+/// (edge_length is fixed by the lattice: unit edges).
+std::vector<Change> every_parameter_change() {
+  return {
+      {"young", [](ExploreOptions& o) { o.relax.material.young = 2500.0; }},
+      {"poisson", [](ExploreOptions& o) { o.relax.material.poisson = 0.35; }},
+      {"radius", [](ExploreOptions& o) { o.relax.material.radius = 0.15; }},
+      {"vertices", [](ExploreOptions& o) { o.sampling.vertices = 120; }},
+      {"tolerance", [](ExploreOptions& o) { o.relax.tolerance = 1e-7; }},
+      {"contact_stiffness", [](ExploreOptions& o) { o.relax.contact_stiffness = 2000.0; }},
+      {"dhat", [](ExploreOptions& o) { o.relax.dhat = 0.5; }},
+      {"twist_model", [](ExploreOptions& o) { o.relax.full_model = true; }},
+      {"relax_method", [](ExploreOptions& o) { o.relax.method = RelaxMethod::Direct; }},
+      {"coarse_levels", [](ExploreOptions& o) { o.relax.coarse_levels = 2; }},
+      {"coarse_continuation", [](ExploreOptions& o) { o.relax.coarse_continuation = {1e-2}; }},
+      {"newton_hessian", [](ExploreOptions& o) { o.relax.newton.hessian = HessianMode::Exact; }},
+      {"remove_rigid_motions", [](ExploreOptions& o) { o.relax.newton.remove_rigid_motions = false; }},
+      {"max_iterations", [](ExploreOptions& o) { o.relax.max_iterations = 300; }},
+      {"burn_in", [](ExploreOptions& o) { o.burn_in = 2; }},
+      {"sampling", [](ExploreOptions& o) { o.samples = 2; }},
+      {"sampling", [](ExploreOptions& o) { o.adaptive = true; }},
+      {"grow_fugacity", [](ExploreOptions& o) { o.sampling.grow_fugacity = 0.45; }},
+      {"shrink_fugacity", [](ExploreOptions& o) { o.sampling.shrink_fugacity = 0.12; }},
+      {"growth_factor", [](ExploreOptions& o) { o.sampling.growth_factor = 8.0; }},
+      {"decorrelation_moves", [](ExploreOptions& o) { o.sampling.decorrelation_moves = 100; }},
+      {"seed", [](ExploreOptions& o) { o.seed = 2; }},
+      {"compute_stiffness", [](ExploreOptions& o) { o.stiffness = !o.stiffness; }},
+      {"contact_continuation", [](ExploreOptions& o) { o.relax.contact_continuation = {1e-3}; }},
+  };
+}
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+DatasetRunSummary run_one_knot(const ExploreOptions& o, const std::string& knot, const std::string& out) {
+  DatasetRunOptions ro;
+  ro.explore = o;
+  ro.knots = {&KnotTable::global().at(knot)};
+  ro.output = out;
+  ro.progress = false;
+  return run_dataset(ro);
+}
+
+std::string fresh_dir(const std::string& name) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("ek_" + name + "_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir.string();
+}
+
+}  // namespace
+
+// Journals written by earlier versions keep their key, so an interrupted run
+// resumes after an upgrade; the parameters added to the key since (model,
+// edge length, relaxation method) are left out at the values those keys
+// imply. Earlier versions relaxed by the direct method.
+TEST(Pipeline, JournalKeyIsTheEarlierKeyForTheEarlierParameters) {
+  ExploreOptions direct = small_fixed_run(3, 1);
+  direct.relax.method = RelaxMethod::Direct;
+  std::vector<ExploreOptions> runs(6, direct);
+  runs[1] = ExploreOptions{};
+  runs[1].relax.method = RelaxMethod::Direct;
+  runs[2].relax.contact_continuation = {1e-3, 0.1};
+  runs[3].adaptive = true;
+  runs[3].burn_in = 4;
+  runs[4].relax.material.radius = 0.15;
+  runs[4].relax.max_iterations = 300;
+  runs[5].seed = 12345;
+  runs[5].sampling.decorrelation_moves = 1000;
+  for (const auto& o : runs)
+    EXPECT_EQ("knot=3_1 " + journal_key(dataset_metadata(o)), earlier_journal_key("3_1", o));
+  ExploreOptions full = runs[0];
+  full.relax.full_model = true;
+  EXPECT_NE(journal_key(dataset_metadata(full)).find(" dhat=0.40000000000000002 model=free-theta iterations="),
+            std::string::npos);
+  // every named method of with_method() has its own key and metadata
+  std::set<std::string> keys;
+  for (const char* name : {"default", "hybrid", "exact", "paper"}) {
+    ExploreOptions o = small_fixed_run(3, 1);
+    o.relax = with_method(o.relax, name);
+    keys.insert(journal_key(dataset_metadata(o)));
+    if (std::string(name) == "hybrid") {
+      EXPECT_EQ(journal_key(dataset_metadata(o)), journal_key(dataset_metadata(direct)));
+    }
+  }
+  EXPECT_EQ(keys.size(), 4u);
+  // the multilevel method (the default) names itself and its settings
+  const std::string multilevel = journal_key(dataset_metadata(small_fixed_run(3, 1)));
+  EXPECT_NE(multilevel.find(" dhat=0.40000000000000002 method=multilevel levels=1 coarse=0.001 iterations=5000 "),
+            std::string::npos)
+      << multilevel;
+}
+
+// Every parameter changed in turn: extending a data set is refused with one
+// line naming the parameter, and the file and its folder are left as they were.
+// The journal key changes too (an interrupted run's journal is not reused).
+TEST(Pipeline, ExtendingNeedsEveryParameterEqual) {
+  namespace fs = std::filesystem;
+  const std::string dir = fresh_dir("extend");
+  const std::string out = dir + "/d.h5";
+  const ExploreOptions base = small_fixed_run(1, 1);
+  ASSERT_EQ(run_one_knot(base, "3_1", out).runs, 1);
+  const std::string before = slurp(out);
+  std::set<std::string> covered = {"edge_length"};
+  for (const Change& change : every_parameter_change()) {
+    ExploreOptions o = base;
+    change.apply(o);
+    covered.insert(change.field);
+    EXPECT_NE(journal_key(dataset_metadata(o)), journal_key(dataset_metadata(base))) << change.field;
+    try {
+      run_one_knot(o, "4_1", out);
+      ADD_FAILURE() << "extended with another " << change.field;
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find("exists with different parameters (" + change.field + " "), std::string::npos) << what;
+      EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+    }
+    EXPECT_EQ(slurp(out), before) << change.field;
+    EXPECT_FALSE(fs::exists(out + ".work")) << change.field;
+  }
+  for (const auto& f : metadata_fields()) {
+    if (f.match != FieldMatch::Provenance) {
+      EXPECT_TRUE(covered.count(f.name)) << f.name << " is not tested";
+    }
+  }
+  fs::remove_all(dir);
+}
+
+// A file written before the newer attributes existed (no relaxation method,
+// Newton settings, BFACF schedule, burn-in, stiffness flag or continuation;
+// -1 for the iteration cap) reads with the documented values and is extended by a run
+// with default-equivalent parameters (the direct method of earlier versions);
+// the extended file records only what both runs know.
+TEST(Pipeline, OldFormatFileReadsAndExtends) {
+  namespace fs = std::filesystem;
+  const std::string dir = fresh_dir("oldformat");
+  const std::string out = dir + "/d.h5";
+  ExploreOptions base = small_fixed_run(1, 1);
+  base.relax.method = RelaxMethod::Direct;  // the method of earlier versions
+  ASSERT_EQ(run_one_knot(base, "3_1", out).runs, 1);
+  const hid_t f = H5Fopen(out.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
+  ASSERT_GE(f, 0);
+  for (const char* name : {"relax_method", "newton_hessian", "remove_rigid_motions", "grow_fugacity",
+                           "shrink_fugacity", "growth_factor", "decorrelation_moves", "burn_in", "compute_stiffness",
+                           "contact_continuation", "max_iterations"})
+    ASSERT_GE(H5Adelete(f, name), 0) << name;
+  const long long unknown = -1;
+  const hid_t space = H5Screate(H5S_SCALAR);
+  const hid_t a = H5Acreate2(f, "max_iterations", H5T_STD_I64LE, space, H5P_DEFAULT, H5P_DEFAULT);
+  H5Awrite(a, H5T_NATIVE_LLONG, &unknown);
+  H5Aclose(a);
+  H5Sclose(space);
+  H5Fclose(f);
+  {
+    const DatasetMetadata m = DatasetReader(out).metadata();
+    EXPECT_EQ(m.relax_method, "direct");
+    EXPECT_FALSE(m.coarse_levels || m.coarse_continuation || m.newton_hessian || m.remove_rigid_motions);
+    EXPECT_EQ(m.grow_fugacity, 0.40);
+    EXPECT_EQ(m.shrink_fugacity, 0.10);
+    EXPECT_EQ(m.growth_factor, 10.0);
+    EXPECT_EQ(m.decorrelation_moves, 0);
+    EXPECT_EQ(m.contact_continuation, std::vector<double>{});
+    EXPECT_FALSE(m.max_iterations || m.burn_in || m.compute_stiffness);
+    EXPECT_EQ(m.difference(dataset_metadata(base)), "");
+  }
+  ASSERT_EQ(run_one_knot(base, "4_1", out).runs, 1);
+  const DatasetReader r(out);
+  EXPECT_EQ(r.knot_names(), (std::vector<std::string>{"3_1", "4_1"}));
+  EXPECT_FALSE(r.metadata().max_iterations || r.metadata().burn_in || r.metadata().compute_stiffness);
+  EXPECT_EQ(r.metadata().grow_fugacity, 0.40);
+  // not recorded matches any value; a documented value must match
+  ExploreOptions other = base;
+  other.stiffness = true;
+  other.relax.max_iterations = 300;
+  EXPECT_EQ(r.metadata().difference(dataset_metadata(other)), "");
+  other.sampling.grow_fugacity = 0.45;
+  EXPECT_EQ(r.metadata().difference(dataset_metadata(other)), "grow_fugacity 0.4 vs 0.45");
+  EXPECT_EQ(r.metadata().difference(dataset_metadata(small_fixed_run(1, 1))), "relax_method direct vs multilevel");
+  fs::remove_all(dir);
+}
+
+// Merge compares every pair of inputs: a parameter that the first input does
+// not record must still agree between the others; the merge records only what
+// every input records.
+TEST(Pipeline, MergeComparesEveryPairOfInputs) {
+  namespace fs = std::filesystem;
+  const std::string dir = fresh_dir("mergepairs");
+  DatasetMetadata meta = dataset_metadata(small_fixed_run(1, 1));
+  meta.created = "2026-01-01T00:00:00Z";
+  auto write = [&](const std::string& name, const std::string& knot, std::optional<bool> stiffness) {
+    DatasetMetadata m = meta;
+    m.compute_stiffness = stiffness;
+    KnotEntry e;  // no equilibria: only the parameters matter here
+    e.name = knot;
+    e.alexander = {1};
+    DatasetWriter w(dir + "/" + name, m);
+    w.add(e);
+    w.commit();
+    return dir + "/" + name;
+  };
+  const std::string a = write("a.h5", "3_1", std::nullopt), b = write("b.h5", "4_1", false),
+                    c = write("c.h5", "5_1", true);
+  try {
+    merge_datasets({a, b, c}, dir + "/abc.h5");
+    ADD_FAILURE() << "merged inputs with different stiffness flags";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("'" + c + "' has different parameters from '" + b +
+                                         "' (compute_stiffness 0 vs 1)"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_FALSE(fs::exists(dir + "/abc.h5"));
+  merge_datasets({a, b}, dir + "/ab.h5");
+  const DatasetReader r(dir + "/ab.h5");
+  EXPECT_EQ(r.knot_names(), (std::vector<std::string>{"3_1", "4_1"}));
+  EXPECT_FALSE(r.metadata().compute_stiffness.has_value());
+  EXPECT_EQ(r.metadata().difference(meta), "");
+  fs::remove_all(dir);
 }

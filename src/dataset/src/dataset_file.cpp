@@ -4,10 +4,8 @@
 
 #include <algorithm>
 #include <atomic>
-#include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <sstream>
+#include <variant>
 
 #include "ek/core/atomic_file.hpp"
 #include "ek/core/errors.hpp"
@@ -17,48 +15,60 @@ namespace ek {
 namespace {
 
 constexpr const char* kFormat = "elastic-knots-dataset";
+/// Attributes added since the first version-1 files are optional: the table
+/// (metadata.hpp) says what a file without them reads as, and older readers
+/// ignore them, so the version stays 1.
 constexpr std::int64_t kFormatVersion = 1;
 
-std::string fmt(double x) {
-  std::ostringstream s;
-  s.precision(10);
-  s << x;
-  return s.str();
+void write_value(hid_t f, const std::string& name, const FieldValue& v) {
+  if (const auto* x = std::get_if<double>(&v)) h5::set_attr(f, name, *x);
+  else if (const auto* i = std::get_if<std::int64_t>(&v)) h5::set_attr(f, name, *i);
+  else if (const auto* u = std::get_if<std::uint64_t>(&v)) h5::set_attr(f, name, static_cast<std::int64_t>(*u));
+  else if (const auto* t = std::get_if<std::string>(&v)) h5::set_attr(f, name, *t);
+  else if (const auto* list = std::get_if<std::vector<double>>(&v)) h5::set_attr(f, name, continuation_text(*list));
 }
 
-std::vector<double> parse_continuation(const std::string& text, const std::string& path) {
-  std::vector<double> out;
-  std::istringstream s(text);
-  std::string item;
-  while (std::getline(s, item, ',')) {
-    char* end = nullptr;
-    const double f = std::strtod(item.c_str(), &end);
-    if (item.empty() || end != item.c_str() + item.size() || !(f > 0.0 && f < 1.0))
-      throw InputError("'" + path + "' has a malformed contact_continuation attribute '" + text + "'");
-    out.push_back(f);
-  }
-  return out;
-}
-
+/// Every field of the table; an empty field is left out (not recorded), which
+/// only the fields that older files may lack allow.
 void write_meta(hid_t f, const DatasetMetadata& m) {
   h5::set_attr(f, "format", std::string(kFormat));
   h5::set_attr(f, "format_version", kFormatVersion);
-  h5::set_attr(f, "project_version", m.project_version);
-  h5::set_attr(f, "created", m.created);
-  h5::set_attr(f, "knot_table", m.knot_table);
-  h5::set_attr(f, "young", m.young);
-  h5::set_attr(f, "poisson", m.poisson);
-  h5::set_attr(f, "radius", m.radius);
-  h5::set_attr(f, "vertices", static_cast<std::int64_t>(m.vertices));
-  h5::set_attr(f, "edge_length", m.edge_length);
-  h5::set_attr(f, "tolerance", m.tolerance);
-  h5::set_attr(f, "contact_stiffness", m.contact_stiffness);
-  h5::set_attr(f, "dhat", m.dhat);
-  h5::set_attr(f, "twist_model", m.twist_model);
-  h5::set_attr(f, "sampling", m.sampling);
-  h5::set_attr(f, "seed", static_cast<std::int64_t>(m.seed));
-  h5::set_attr(f, "max_iterations", static_cast<std::int64_t>(m.max_iterations));
-  h5::set_attr(f, "contact_continuation", continuation_text(m.contact_continuation));
+  for (const auto& field : metadata_fields()) {
+    const FieldValue v = field.get(m);
+    require(!std::holds_alternative<std::monostate>(v) || field.absent == WhenAbsent::NotRecorded,
+            "DatasetWriter: the metadata field '" + field.name + "' is not set");
+    write_value(f, field.name, v);
+  }
+}
+
+FieldValue read_present(hid_t f, const MetadataField& field, const std::string& path) {
+  switch (field.kind) {
+    case FieldKind::Real: return h5::get_attr_double(f, field.name);
+    case FieldKind::Integer: {
+      const std::int64_t v = h5::get_attr_int(f, field.name);
+      // earlier versions wrote -1 for an iteration cap they did not know
+      if (v < 0 && field.absent == WhenAbsent::NotRecorded) return std::monostate{};
+      return v;
+    }
+    case FieldKind::Unsigned: return static_cast<std::uint64_t>(h5::get_attr_int(f, field.name));
+    case FieldKind::Text: return h5::get_attr_string(f, field.name);
+    case FieldKind::List: {
+      const std::string text = h5::get_attr_string(f, field.name);
+      if (auto list = parse_continuation(text)) return *list;
+      throw InputError("'" + path + "' has a malformed " + field.name + " attribute '" + text + "'");
+    }
+  }
+  return std::monostate{};
+}
+
+FieldValue read_value(hid_t f, const MetadataField& field, const std::string& path) {
+  if (h5::has_attr(f, field.name)) return read_present(f, field, path);
+  switch (field.absent) {
+    case WhenAbsent::Required: throw InputError("'" + path + "' lacks the data-set attribute '" + field.name + "'");
+    case WhenAbsent::Default: return field.absent_value;
+    case WhenAbsent::NotRecorded: break;
+  }
+  return std::monostate{};
 }
 
 DatasetMetadata read_meta(hid_t f, const std::string& path) {
@@ -69,55 +79,11 @@ DatasetMetadata read_meta(hid_t f, const std::string& path) {
     throw InputError("'" + path + "' has data-set format version " + std::to_string(version) + ", expected " +
                      std::to_string(kFormatVersion));
   DatasetMetadata m;
-  m.project_version = h5::get_attr_string(f, "project_version");
-  m.created = h5::get_attr_string(f, "created");
-  m.knot_table = h5::get_attr_string(f, "knot_table");
-  m.young = h5::get_attr_double(f, "young");
-  m.poisson = h5::get_attr_double(f, "poisson");
-  m.radius = h5::get_attr_double(f, "radius");
-  m.vertices = static_cast<int>(h5::get_attr_int(f, "vertices"));
-  m.edge_length = h5::get_attr_double(f, "edge_length");
-  m.tolerance = h5::get_attr_double(f, "tolerance");
-  m.contact_stiffness = h5::get_attr_double(f, "contact_stiffness");
-  m.dhat = h5::get_attr_double(f, "dhat");
-  m.twist_model = h5::get_attr_string(f, "twist_model");
-  m.sampling = h5::get_attr_string(f, "sampling");
-  m.seed = static_cast<std::uint64_t>(h5::get_attr_int(f, "seed"));
-  // optional (absent in files written before they were recorded)
-  if (h5::has_attr(f, "max_iterations")) m.max_iterations = static_cast<int>(h5::get_attr_int(f, "max_iterations"));
-  if (h5::has_attr(f, "contact_continuation"))
-    m.contact_continuation = parse_continuation(h5::get_attr_string(f, "contact_continuation"), path);
+  for (const auto& field : metadata_fields()) field.set(m, read_value(f, field, path));
   return m;
 }
 
 }  // namespace
-
-std::string continuation_text(const std::vector<double>& factors) {
-  std::ostringstream s;
-  s.precision(17);
-  for (size_t k = 0; k < factors.size(); ++k) s << (k ? "," : "") << factors[k];
-  return s.str();
-}
-
-std::string DatasetMetadata::difference(const DatasetMetadata& o) const {
-  auto num = [](const char* name, double a, double b) -> std::string {
-    if (a == b || std::fabs(a - b) <= 1e-12 * std::max(std::fabs(a), std::fabs(b))) return "";
-    return std::string(name) + " " + fmt(a) + " vs " + fmt(b);
-  };
-  for (auto d : {num("young", young, o.young), num("poisson", poisson, o.poisson), num("radius", radius, o.radius),
-                 num("vertices", vertices, o.vertices), num("edge_length", edge_length, o.edge_length),
-                 num("tolerance", tolerance, o.tolerance),
-                 num("contact_stiffness", contact_stiffness, o.contact_stiffness), num("dhat", dhat, o.dhat)})
-    if (!d.empty()) return d;
-  if (twist_model != o.twist_model) return "twist_model " + twist_model + " vs " + o.twist_model;
-  if (max_iterations >= 0 && o.max_iterations >= 0 && max_iterations != o.max_iterations)
-    return "max_iterations " + std::to_string(max_iterations) + " vs " + std::to_string(o.max_iterations);
-  if (contact_continuation != o.contact_continuation) {
-    auto text = [](const std::vector<double>& f) { return f.empty() ? std::string("off") : continuation_text(f); };
-    return "contact_continuation " + text(contact_continuation) + " vs " + text(o.contact_continuation);
-  }
-  return "";
-}
 
 int KnotEntry::attribute_column(const std::string& attribute) const {
   for (size_t k = 0; k < attribute_names.size(); ++k)

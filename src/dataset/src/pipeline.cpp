@@ -20,20 +20,21 @@ namespace ek {
 namespace {
 
 
-/// Canonical text of every option that changes results (the journal key).
+/// Rest edge length of the lattice samples (unit edges).
+constexpr double kLatticeEdgeLength = 1.0;
+
+std::string model_name(TwistModel m) {
+  switch (m) {
+    case TwistModel::TwistFree: return "twist-free";
+    case TwistModel::FreeTheta: return "free-theta";
+    case TwistModel::FixedLink: return "fixed-link";
+  }
+  return "?";
+}
+
+/// The journal key: the knot and every parameter of the data set.
 std::string options_text(const std::string& knot, const ExploreOptions& o) {
-  std::ostringstream s;
-  s.precision(17);
-  const auto meta = dataset_metadata(o);
-  s << "knot=" << knot << " young=" << meta.young << " poisson=" << meta.poisson << " radius=" << meta.radius
-    << " n=" << meta.vertices << " tol=" << meta.tolerance << " omega=" << meta.contact_stiffness
-    << " dhat=" << meta.dhat << " iterations=" << o.relax.max_iterations << " sampling=" << o.sampling_description()
-    << " grow=" << o.sampling.grow_fugacity << " shrink=" << o.sampling.shrink_fugacity
-    << " growth=" << o.sampling.growth_factor << " decorrelation=" << o.sampling.decorrelation_moves
-    << " seed=" << o.seed << " stiffness=" << o.stiffness;
-  // only when on, so that the keys of journals written before it existed stay valid
-  if (!meta.contact_continuation.empty()) s << " continuation=" << continuation_text(meta.contact_continuation);
-  return s.str();
+  return "knot=" + knot + " " + journal_key(dataset_metadata(o));
 }
 
 JournalRun run_one(const Points& sample, int index, std::uint64_t seed, const ExploreOptions& o) {
@@ -102,16 +103,32 @@ DatasetMetadata dataset_metadata(const ExploreOptions& o) {
   m.poisson = mat.poisson;
   m.radius = mat.radius;
   m.vertices = o.sampling.vertices;
-  m.edge_length = 1.0;
-  const ResolvedModel resolved = resolve_model(o.relax, m.edge_length);
+  m.edge_length = kLatticeEdgeLength;
+  const ResolvedModel resolved = resolve_model(o.relax, kLatticeEdgeLength);
   m.tolerance = resolved.tolerance;
   m.contact_stiffness = resolved.contact_stiffness;
   m.dhat = resolved.dhat;
-  m.twist_model = o.relax.full_model ? "free-theta" : "twist-free";
+  m.twist_model = model_name(resolved.model);
+  // the multilevel method applies to the twist-free model without a slab (relax.hpp, RelaxMethod)
+  const bool multilevel = o.relax.method == RelaxMethod::Multilevel && resolved.model == TwistModel::TwistFree &&
+                          !o.relax.slab;
+  m.relax_method = to_string(multilevel ? RelaxMethod::Multilevel : RelaxMethod::Direct);
+  if (multilevel) {
+    m.coarse_levels = o.relax.coarse_levels;
+    m.coarse_continuation = o.relax.coarse_continuation;
+  }
+  m.newton_hessian = to_string(o.relax.newton.hessian);
+  m.remove_rigid_motions = o.relax.newton.remove_rigid_motions;
   m.max_iterations = o.relax.max_iterations;
-  m.contact_continuation = o.relax.contact_continuation;
+  m.burn_in = o.burn_in;
   m.sampling = o.sampling_description();
+  m.grow_fugacity = o.sampling.grow_fugacity;
+  m.shrink_fugacity = o.sampling.shrink_fugacity;
+  m.growth_factor = o.sampling.growth_factor;
+  m.decorrelation_moves = o.sampling.decorrelation_moves;
   m.seed = o.seed;
+  m.compute_stiffness = o.stiffness;
+  m.contact_continuation = o.relax.contact_continuation;
   m.project_version = project_version();
   m.knot_table = knot_table_path();
   return m;

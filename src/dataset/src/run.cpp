@@ -119,16 +119,9 @@ DatasetRunSummary run_dataset(const DatasetRunOptions& o) {
     if (!diff.empty())
       throw InputError("'" + o.output + "' exists with different parameters (" + diff +
                        "); choose another output or the same parameters");
-    if (old.metadata().sampling != meta.sampling)
-      throw InputError("'" + o.output + "' exists with different sampling (" + old.metadata().sampling + " vs " +
-                       meta.sampling + ")");
-    if (old.metadata().seed != meta.seed)
-      throw InputError("'" + o.output + "' exists with a different seed (" + std::to_string(old.metadata().seed) +
-                       " vs " + std::to_string(meta.seed) + ")");
     existing = old.knot_names();
     meta.created = old.metadata().created;
-    // knots of a file that did not record the cap were run at an unknown one
-    if (old.metadata().max_iterations < 0) meta.max_iterations = -1;
+    meta.forget_unrecorded(old.metadata());  // its knots were computed at values it does not know
   }
   std::vector<const KnotRecord*> mine;
   for (size_t k = 0; k < o.knots.size(); ++k)
@@ -153,11 +146,8 @@ DatasetRunSummary run_dataset(const DatasetRunOptions& o) {
     if (fs::exists(part)) {
       try {
         DatasetReader check(part);
-        // the same physical parameters, sampling (count, adaptive rule,
-        // burn-in) and seed as this run, or the part is recomputed
-        const DatasetMetadata& pm = check.metadata();
-        if (check.has_knot(knot->name) && pm.difference(meta).empty() && pm.sampling == meta.sampling &&
-            pm.seed == meta.seed) {
+        // the same parameters as this run, or the part is recomputed
+        if (check.has_knot(knot->name) && check.metadata().difference(meta).empty()) {
           parts.push_back(part);
           ++summary.knots_resumed;
           progress.knot_finished();
@@ -218,13 +208,14 @@ void merge_datasets(const std::vector<std::string>& inputs, const std::string& o
   std::map<std::pair<int, std::string>, size_t> order;
   for (size_t k = 0; k < readers.size(); ++k) {
     const auto& m = readers[k]->metadata();
-    const std::string diff = meta.difference(m);
-    if (!diff.empty())
-      throw InputError("merge: '" + inputs[k] + "' has different parameters from '" + inputs[0] + "' (" + diff + ")");
-    if (m.sampling != meta.sampling || m.seed != meta.seed)
-      throw InputError("merge: '" + inputs[k] + "' has different sampling or seed from '" + inputs[0] + "'");
+    // every pair: a field that one input does not record must still agree between the others
+    for (size_t j = 0; j < k; ++j) {
+      const std::string diff = readers[j]->metadata().difference(m);
+      if (!diff.empty())
+        throw InputError("merge: '" + inputs[k] + "' has different parameters from '" + inputs[j] + "' (" + diff + ")");
+    }
     if (m.created < meta.created) meta.created = m.created;
-    if (m.max_iterations < 0) meta.max_iterations = -1;  // not recorded by one input: unknown for the merge
+    meta.forget_unrecorded(m);  // not recorded by one input: unknown for the merge
     for (const auto& name : readers[k]->knot_names()) {
       const auto key = std::make_pair(table_index(name), name);
       if (order.count(key))

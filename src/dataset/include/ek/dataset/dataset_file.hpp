@@ -2,10 +2,10 @@
 /// The data-set file: one HDF5 file holds the equilibria of many knot types
 /// (paper Section 7.4). Layout (docs/dataset-format.md documents it for users):
 ///
-///   /                                  attributes: format = "elastic-knots-dataset", format_version,
-///                                      project_version, created, knot_table, material and solver
-///                                      parameters (young, poisson, radius, vertices, edge_length,
-///                                      tolerance, contact_stiffness, dhat, twist_model), seed, sampling
+///   /                                  attributes: format = "elastic-knots-dataset", format_version = 1,
+///                                      and one per field of metadata_fields() (metadata.hpp): material,
+///                                      n, solver, sampling, lattice walk, seed, stiffness flag, provenance
+///   knot_names          string  [k]    the knots, in table order
 ///   /knots/<name>/                     one group per knot type; attributes: name, crossing_number,
 ///                                      bridge_index, braid_index (-1 unknown), alexander (int list),
 ///                                      samples_used, adaptive (0/1), complete (0/1)
@@ -26,44 +26,10 @@
 #include <string>
 #include <vector>
 
+#include "ek/dataset/metadata.hpp"
 #include "ek/geometry/types.hpp"
 
 namespace ek {
-
-/// Parameters shared by every knot of a data set.
-struct DatasetMetadata {
-  double young = 2000.0;             ///< [pressure] E
-  double poisson = 0.3;              ///< [1] ν
-  double radius = 0.2;               ///< [length] wire radius r
-  int vertices = 400;                ///< [1] n per curve
-  double edge_length = 1.0;          ///< [length] rest edge length
-  double tolerance = 1e-8;           ///< [energy/length] solver gradient tolerance
-  double contact_stiffness = 1e3;    ///< [1] ω
-  double dhat = 0.4;                 ///< [length] barrier distance
-  std::string twist_model = "twist-free";
-  /// [1] Newton iterations per relaxation phase (RelaxOptions::max_iterations);
-  /// -1: not recorded (files written before this attribute existed).
-  int max_iterations = -1;
-  /// [1] contact-stiffness continuation factors (RelaxOptions::contact_continuation),
-  /// in order; empty: off (also for files written before this attribute existed).
-  std::vector<double> contact_continuation;
-  std::string sampling;              ///< e.g. "fixed:50" or "adaptive:50+10,max=500,S>0.1"
-  std::uint64_t seed = 1;
-  std::string project_version;
-  std::string knot_table;
-  std::string created;               ///< ISO 8601 time of the first write
-
-  /// Empty when the physical and numerical parameters equal o's; otherwise a
-  /// one-line description of the first difference ("radius 0.2 vs 0.1").
-  /// The iteration cap is compared only when both record it; the
-  /// continuation always (it changes which equilibria a walk reaches).
-  std::string difference(const DatasetMetadata& o) const;
-};
-
-/// The continuation factors as stored in the file's contact_continuation
-/// attribute: "0.001,0.10000000000000001" (17 significant digits, so the text
-/// reads back bit for bit); "" when off.
-std::string continuation_text(const std::vector<double>& factors);
 
 /// One relaxation run (successful or not).
 struct RunRecord {
@@ -104,7 +70,9 @@ struct KnotEntry {
 
 /// Streams knots into a new data-set file, written to "<path>.tmp.*" and
 /// renamed onto `path` by commit(). Destroying an uncommitted writer removes
-/// the temporary and leaves any existing file untouched.
+/// the temporary and leaves any existing file untouched. Every field of
+/// `meta` must be set except those that may be "not recorded"
+/// (WhenAbsent::NotRecorded, left out of the file); otherwise std::invalid_argument.
 class DatasetWriter {
  public:
   DatasetWriter(const std::string& path, const DatasetMetadata& meta);
@@ -120,7 +88,9 @@ class DatasetWriter {
 };
 
 /// Reads a data-set file. Every problem (not HDF5, wrong format, missing
-/// fields) is an InputError naming the file.
+/// fields) is an InputError naming the file. Attributes that files written
+/// before them lack read as metadata_fields() says (a documented value, or
+/// "not recorded").
 class DatasetReader {
  public:
   explicit DatasetReader(const std::string& path);

@@ -74,7 +74,15 @@ struct ExploreOptions {
   std::string sampling_description() const;
 };
 
-/// The file-level metadata of a data set computed with these options.
+/// The file-level metadata of a data set computed with these options: every
+/// field of metadata_fields() set, d̂, ω and the tolerance as resolve_model()
+/// resolves them for the lattice samples' unit edges. Not recorded (library
+/// settings that `knots explore` and `knots dataset` do not expose, kept at
+/// their defaults there): start, similarity, mirror_amphicheiral, and the
+/// solver's inner settings (relax.newton apart from the Hessian mode and the
+/// rigid-motion removal that the named methods of with_method() set,
+/// max_tangent_rotation, contact_hessian_margin, slab, the value of a
+/// prescribed link); jobs does not change the results.
 DatasetMetadata dataset_metadata(const ExploreOptions& options);
 
 /// Seed of a knot's walk: splitmix64 of the run seed and a hash of the name.
