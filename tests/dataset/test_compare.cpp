@@ -41,7 +41,9 @@ KnotEntry entry(const std::vector<int>& counts, double energy_shift = 0.0) {
 
 std::string write(const std::string& name, const KnotEntry& e) {
   const std::string path = (std::filesystem::temp_directory_path() / ("compare_" + name + ".h5")).string();
-  DatasetWriter w(path, DatasetMetadata{});
+  DatasetMetadata meta = dataset_metadata(ExploreOptions{});
+  meta.created = "2026-01-01T00:00:00Z";
+  DatasetWriter w(path, meta);
   w.add(e);
   w.commit();
   return path;

@@ -14,6 +14,7 @@ struct ExploreArgs {
   bool no_stiffness = false;
   bool quiet = false;
   std::string continuation;
+  std::string method = "default";
 };
 
 inline void add_explore_options(ArgParser& args, ExploreArgs& a) {
@@ -35,6 +36,12 @@ inline void add_explore_options(ArgParser& args, ExploreArgs& a) {
   args.option("--continuation", &a.continuation,
               "contact-stiffness continuation F[,F...]: each relaxation first solves with the stiffness times each "
               "factor in (0, 1), then at the stiffness (default: off; recorded in the data set)");
+  args.option("--method", &a.method,
+              "relaxation method as for knots relax: default (multilevel), hybrid (Newton at n from the sample), "
+              "exact or paper (recorded in the data set)");
+  args.option("--coarse-levels", &a.options.relax.coarse_levels,
+              "multilevel: coarse levels below n (default " + std::to_string(kDefaultCoarseLevels) +
+                  "; recorded in the data set)");
   args.flag("--no-stiffness", &a.no_stiffness, "skip the stiffness attribute (an eigenvalue per equilibrium)");
   args.flag("--quiet", &a.quiet, "no progress output");
 }
@@ -46,6 +53,7 @@ inline void finish_explore_options(ExploreArgs& a) {
   a.options.adaptive = a.adaptive;
   if (a.samples) a.options.samples = *a.samples;
   a.options.stiffness = !a.no_stiffness;
+  a.options.relax = with_method(a.options.relax, a.method);
   a.options.relax.contact_continuation = parse_number_list(a.continuation, "--continuation");
   if (a.adaptive && a.options.max_samples < a.options.initial_samples) a.options.initial_samples = a.options.max_samples;
   a.options.validate();
