@@ -138,6 +138,9 @@ TEST(DatasetCli, KilledRunResumesWithoutLoss) {
   waitpid(pid, &status, 0);
   ASSERT_TRUE(killed) << "the run finished before it could be killed";
   EXPECT_FALSE(fs::exists(out));  // nothing committed yet, and certainly nothing half-written
+  // the interrupted run is no data set to merge
+  expect_bad_input("merge " + out + " -o " + dir + "/merged.h5", "'" + out + "' is unfinished");
+  EXPECT_FALSE(fs::exists(dir + "/merged.h5"));
   // re-run the same command: resumes from the journal
   const auto resumed = run(args + "-o " + out + " --json");
   ASSERT_EQ(resumed.status, 0) << resumed.err;
@@ -147,7 +150,8 @@ TEST(DatasetCli, KilledRunResumesWithoutLoss) {
   fs::remove_all(dir);
 }
 
-// A merge of two shards equals the unsharded run.
+// A merge of two shards equals the unsharded run; overlapping, missing,
+// repeated and unfinished shards are refused.
 TEST(DatasetCli, MergedShardsEqualTheUnshardedRun) {
   const std::string dir = temp_dir("ds_shards");
   const std::string args = "dataset --names 3_1,4_1,5_2 --samples 4 --jobs 2" + kSmall;
@@ -170,6 +174,15 @@ TEST(DatasetCli, MergedShardsEqualTheUnshardedRun) {
   }
   // merging a knot twice is an error and writes nothing
   expect_bad_input("merge " + dir + "/s1.h5 " + dir + "/all.h5 -o " + dir + "/bad.h5", "is in both");
+  // a missing shard, a shard given twice, an unfinished shard (its work
+  // folder exists: its run is still going or was interrupted)
+  expect_bad_input("merge " + dir + "/s1.h5 " + dir + "/s3.h5 -o " + dir + "/bad.h5",
+                   "'" + dir + "/s3.h5' does not exist");
+  expect_bad_input("merge " + dir + "/s1.h5 " + dir + "/s2.h5 " + dir + "/s1.h5 -o " + dir + "/bad.h5",
+                   "'" + dir + "/s1.h5' is given twice");
+  fs::create_directory(dir + "/s2.h5.work");
+  expect_bad_input("merge " + dir + "/s1.h5 " + dir + "/s2.h5 -o " + dir + "/bad.h5",
+                   "'" + dir + "/s2.h5' is unfinished");
   EXPECT_FALSE(fs::exists(dir + "/bad.h5"));
   fs::remove_all(dir);
 }

@@ -86,6 +86,25 @@ int table_index(const std::string& name) {
   return r ? r->row : 1 << 30;
 }
 
+/// Every merge input exists, is named once and is finished: a `knots dataset`
+/// run keeps its work folder "<output>.work/" until it has written its output,
+/// so an input beside such a folder is a shard still running or interrupted
+/// (an extended output's old version, or none at all).
+void require_finished_inputs(const std::vector<std::string>& inputs) {
+  std::map<std::string, std::string> seen;  // canonical path -> as given
+  for (const auto& in : inputs) {
+    if (fs::exists(in + ".work"))
+      throw InputError("merge: '" + in + "' is unfinished: its run left '" + in +
+                       ".work/' (running or interrupted); rerun the same knots dataset command to finish it");
+    if (!fs::exists(in)) throw InputError("merge: '" + in + "' does not exist");
+    std::error_code ec;
+    const std::string key = fs::weakly_canonical(in, ec).string();
+    if (seen.count(key))
+      throw InputError("merge: '" + in + "' is given twice" + (seen[key] == in ? "" : " (also as '" + seen[key] + "')"));
+    seen[key] = in;
+  }
+}
+
 }  // namespace
 
 std::pair<int, int> parse_shard(const std::string& text) {
@@ -202,6 +221,7 @@ DatasetRunSummary run_dataset(const DatasetRunOptions& o) {
 void merge_datasets(const std::vector<std::string>& inputs, const std::string& output) {
   require_input(!inputs.empty(), "merge: no input data sets");
   check_writable(output);
+  require_finished_inputs(inputs);
   std::vector<std::unique_ptr<DatasetReader>> readers;
   for (const auto& in : inputs) readers.push_back(std::make_unique<DatasetReader>(in));
   DatasetMetadata meta = readers.front()->metadata();

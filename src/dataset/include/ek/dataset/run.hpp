@@ -44,7 +44,10 @@ DatasetRunSummary run_dataset(const DatasetRunOptions& options);
 
 /// Merges data sets (for example shards) into `output`: parameters must
 /// agree, a knot may appear in one input only; knots are written in table
-/// order. Throws InputError otherwise (the output is not touched).
+/// order. Throws InputError otherwise (the output is not touched), also for
+/// an input that does not exist, is given twice, or is unfinished (its
+/// "<input>.work/" folder exists: its `knots dataset` run is still running or
+/// was interrupted).
 void merge_datasets(const std::vector<std::string>& inputs, const std::string& output);
 
 /// Parses "I/N" (1 <= I <= N) into a 0-based index and a count.
