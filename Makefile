@@ -12,10 +12,10 @@ CMAKE_ARGS ?=
 CONFIGURE = cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DEK_KNOT_TABLE=$(KNOT_TABLE) $(CMAKE_ARGS)
 CTEST     = cd $(BUILD) && KNOT_TABLE=$(KNOT_TABLE) ctest --output-on-failure -j$(JOBS)
 
-.PHONY: help help-experiments deps configure build test unit sanitize stress bench figures experiments claims paper-open manifest compare-methods clean
+.PHONY: help help-experiments deps configure build test unit sanitize stress slurm-test bench figures experiments claims paper-open manifest compare-methods clean
 
 help:
-	@echo "make test      build, run all tests (unit, parsers, short stress, paper claims at ci scale, sanitizers)"
+	@echo "make test      build, run all tests (unit, parsers, short stress, paper claims at ci scale, Slurm, sanitizers)"
 	@echo "make figures   build, run every experiment at SCALE=$(SCALE), write figures/out/*.png|pdf"
 	@echo "make experiment-NAME   run one experiment (NAME: $(PAPER_EXPERIMENTS) $(BENCH_EXPERIMENTS))"
 	@echo "make help-experiments  each experiment's inputs and run time per scale (experiments/manifest.json)"
@@ -25,13 +25,15 @@ help:
 	@echo "make bench     Google Benchmark microbenchmarks and macro benchmarks (results/bench/; docs/performance.md)"
 	@echo "make stress    the long numerical stress tests (label stress-long)"
 	@echo "make sanitize  parsers and readers built and tested with AddressSanitizer and UBSan"
+	@echo "make slurm-test  the data set as a Slurm job array on a single-host Slurm (docs/cluster.md; root)"
 	@echo "make unit      unit tests only"
 	@echo "make deps      install missing Debian packages (scripts/install-deps.sh)"
 	@echo "make manifest  regenerate experiments/manifest.mk from experiments/manifest.json"
 	@echo "make clean     remove build folders (results/ and figures/out/ are kept)"
 	@echo "Variables: KNOT_TABLE=$(KNOT_TABLE) SCALE=ci|default|paper JOBS=$(JOBS) BUILD=$(BUILD)"
 	@echo "Documentation: README.md; docs/reproducing.md (targets, scales, claims), docs/cli.md (knots),"
-	@echo "  docs/models.md, docs/performance.md, docs/dataset-format.md, docs/results.md (results files)"
+	@echo "  docs/models.md, docs/performance.md, docs/dataset-format.md, docs/results.md (results files),"
+	@echo "  docs/cluster.md (Slurm)"
 
 deps:
 	@scripts/install-deps.sh
@@ -53,6 +55,12 @@ sanitize: deps
 	  -DEK_KNOT_TABLE=$(KNOT_TABLE) > /dev/null
 	cmake --build $(BUILD)-asan -j$(JOBS)
 	cd $(BUILD)-asan && KNOT_TABLE=$(KNOT_TABLE) ctest --output-on-failure -j$(JOBS) -L parsers
+
+# The data set as a Slurm job array (scripts/slurm/) on a single-host Slurm
+# that the test starts and stops itself (tests/slurm/; docs/cluster.md).
+slurm-test: configure
+	cmake --build $(BUILD) -j$(JOBS) --target knots
+	$(CTEST) -L slurm
 
 # Prints the counts of every stress test (-V) and keeps one CSV row per run
 # of the 10,000-sample volume in results/stress/volume.csv.
