@@ -8,7 +8,8 @@
 # RESULTS/compare_methods/comparison/. A method's experiments are rerun when
 # one of their summaries is missing or older than a program.
 set -euo pipefail
-build=$1 scale=$2 results=$3 jobs=$4 table=$5
+build=$1 scale=$2 results=$3 jobs=$4
+table=$(realpath "$5")  # the checks run inside BUILD
 exp=$(cd "$build" && pwd)/experiments
 mkdir -p "$results/compare_methods"
 root=$(cd "$results/compare_methods" && pwd)
