@@ -40,7 +40,9 @@ KnotEntry entry(const std::vector<int>& counts, double energy_shift = 0.0) {
 }
 
 std::string write(const std::string& name, const KnotEntry& e) {
-  const std::string path = (std::filesystem::temp_directory_path() / ("compare_" + name + ".h5")).string();
+  // one file per test: CTest runs the tests of this file in parallel processes
+  const std::string test = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+  const std::string path = (std::filesystem::temp_directory_path() / ("compare_" + test + "_" + name + ".h5")).string();
   DatasetMetadata meta = dataset_metadata(ExploreOptions{});
   meta.created = "2026-01-01T00:00:00Z";
   DatasetWriter w(path, meta);
