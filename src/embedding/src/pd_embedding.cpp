@@ -18,21 +18,53 @@ struct Dart {
   int crossing, slot;
 };
 
-/// The dense 3D curve of the PD drawing after `rounds` Tutte reweightings.
-Points pd_dense_curve(const PDCode& pd, const EmbeddingOptions& o, int rounds) {
-  const int c = pd.size(), m = 2 * c;
-  require_input(c >= 1, "PD embedding: empty code");
-  // where[label] = the two (crossing, slot) occurrences of the edge label
-  std::vector<std::vector<Dart>> where(static_cast<size_t>(m + 1));
-  for (int x = 0; x < c; ++x)
-    for (int k = 0; k < 4; ++k) where[static_cast<size_t>(pd.crossings[static_cast<size_t>(x)].e[static_cast<size_t>(k)])].push_back({x, k});
-  auto label = [&](Dart d) { return pd.crossings[static_cast<size_t>(d.crossing)].e[static_cast<size_t>(d.slot)]; };
-  auto partner = [&](Dart d) {
+/// The plane graph of a PD drawing: the two darts of every edge label, and
+/// the faces traced from the rotation system.
+struct PlaneGraph {
+  const PDCode* pd = nullptr;
+  std::vector<std::vector<Dart>> where;  // where[label] = the two (crossing, slot) occurrences of the label
+  std::vector<std::vector<Dart>> faces;
+
+  int label(Dart d) const { return pd->crossings[static_cast<size_t>(d.crossing)].e[static_cast<size_t>(d.slot)]; }
+  Dart partner(Dart d) const {
     const auto& w = where[static_cast<size_t>(label(d))];
     return (w[0].crossing == d.crossing && w[0].slot == d.slot) ? w[1] : w[0];
-  };
+  }
+};
+
+/// Node numbering of the Tutte graph: crossings [0, c), edge midpoints
+/// [c, c + m), face centres [c + m, c + m + F).
+struct TutteNodes {
+  int c, m, F;
+  int mid(int lab) const { return c + lab - 1; }
+  int face(int f) const { return c + m + f; }
+  int count() const { return c + m + F; }
+};
+
+/// A Tutte layout in progress: positions, the pinned nodes (1: on the unit
+/// circle, 2: removed) and the free nodes' unknown indices.
+struct TutteLayout {
+  std::vector<Vec2> pos;
+  std::vector<int> fixed;
+  std::vector<int> index;  // -1 for pinned and removed nodes
+  int nfree = 0;
+};
+
+using WeightedAdjacency = std::vector<std::vector<std::pair<int, double>>>;
+
+struct Corner {
+  Vec2 p;
+  double z;
+};
+
+PlaneGraph plane_graph(const PDCode& pd) {
+  const int c = pd.size(), m = 2 * c;
+  PlaneGraph g;
+  g.pd = &pd;
+  g.where.resize(static_cast<size_t>(m + 1));
+  for (int x = 0; x < c; ++x)
+    for (int k = 0; k < 4; ++k) g.where[static_cast<size_t>(g.label({x, k}))].push_back({x, k});
   // Faces of the plane graph from the rotation system (slots are counterclockwise).
-  std::vector<std::vector<Dart>> faces;
   std::vector<char> used(static_cast<size_t>(4 * c), 0);
   for (int x = 0; x < c; ++x)
     for (int k = 0; k < 4; ++k) {
@@ -42,125 +74,152 @@ Points pd_dense_curve(const PDCode& pd, const EmbeddingOptions& o, int rounds) {
       while (!used[static_cast<size_t>(4 * d.crossing + d.slot)]) {
         used[static_cast<size_t>(4 * d.crossing + d.slot)] = 1;
         face.push_back(d);
-        const Dart p = partner(d);
+        const Dart p = g.partner(d);
         d = {p.crossing, (p.slot + 1) % 4};
       }
-      faces.push_back(std::move(face));
+      g.faces.push_back(std::move(face));
     }
-  const int F = static_cast<int>(faces.size());
+  const int F = static_cast<int>(g.faces.size());
   if (F != c + 2)
     throw InputError("PD code " + to_string(pd) + ": its diagram is not planar (Euler characteristic " +
                      std::to_string(c - m + F) + " instead of 2)");
-  // Nodes: crossings [0, c), edge midpoints [c, c + m), face centres [c + m, c + m + F).
-  auto mid = [&](int lab) { return c + lab - 1; };
-  auto fnode = [&](int f) { return c + m + f; };
-  const int N = c + m + F;
-  std::vector<std::set<int>> adj(static_cast<size_t>(N));
+  return g;
+}
+
+/// Edges of the Tutte graph: crossing - midpoint along the knot, face centre -
+/// corner and face centre - midpoint around every face; throws for the
+/// nugatory crossings that make an edge a loop or a face meet a crossing twice.
+std::vector<std::set<int>> tutte_adjacency(const PlaneGraph& g, const TutteNodes& nodes) {
+  const PDCode& pd = *g.pd;
+  std::vector<std::set<int>> adj(static_cast<size_t>(nodes.count()));
   auto link = [&](int a, int b) {
     if (a == b) throw InputError("PD code " + to_string(pd) + ": has a nugatory crossing (a loop edge)");
     adj[static_cast<size_t>(a)].insert(b);
     adj[static_cast<size_t>(b)].insert(a);
   };
-  for (int x = 0; x < c; ++x)
-    for (int k = 0; k < 4; ++k) link(x, mid(pd.crossings[static_cast<size_t>(x)].e[static_cast<size_t>(k)]));
-  for (int f = 0; f < F; ++f) {
+  for (int x = 0; x < nodes.c; ++x)
+    for (int k = 0; k < 4; ++k) link(x, nodes.mid(pd.crossings[static_cast<size_t>(x)].e[static_cast<size_t>(k)]));
+  for (int f = 0; f < nodes.F; ++f) {
     std::set<int> corners;
-    for (const Dart& d : faces[static_cast<size_t>(f)]) {
+    for (const Dart& d : g.faces[static_cast<size_t>(f)]) {
       if (!corners.insert(d.crossing).second)
         throw InputError("PD code " + to_string(pd) + ": has a nugatory crossing (a face meets crossing " +
                          std::to_string(d.crossing + 1) + " twice)");
-      link(fnode(f), d.crossing);
-      link(fnode(f), mid(label(d)));
+      link(nodes.face(f), d.crossing);
+      link(nodes.face(f), nodes.mid(g.label(d)));
     }
   }
-  // Outer face: the largest; its boundary nodes go on the unit circle in order.
+  return adj;
+}
+
+/// Outer face: the largest; its boundary nodes go on the unit circle in
+/// order, its centre is removed, every other node is free.
+TutteLayout pin_outer_face(const PlaneGraph& g, const TutteNodes& nodes) {
   int outer = 0;
-  for (int f = 1; f < F; ++f)
-    if (faces[static_cast<size_t>(f)].size() > faces[static_cast<size_t>(outer)].size()) outer = f;
+  for (int f = 1; f < nodes.F; ++f)
+    if (g.faces[static_cast<size_t>(f)].size() > g.faces[static_cast<size_t>(outer)].size()) outer = f;
   std::vector<int> boundary;
-  for (const Dart& d : faces[static_cast<size_t>(outer)]) {
+  for (const Dart& d : g.faces[static_cast<size_t>(outer)]) {
     boundary.push_back(d.crossing);
-    boundary.push_back(mid(label(d)));
+    boundary.push_back(nodes.mid(g.label(d)));
   }
-  std::vector<Vec2> pos(static_cast<size_t>(N), Vec2::Zero());
-  std::vector<int> fixed(static_cast<size_t>(N), 0);
-  fixed[static_cast<size_t>(fnode(outer))] = 2;  // removed
+  const int N = nodes.count();
+  TutteLayout L;
+  L.pos.assign(static_cast<size_t>(N), Vec2::Zero());
+  L.fixed.assign(static_cast<size_t>(N), 0);
+  L.fixed[static_cast<size_t>(nodes.face(outer))] = 2;  // removed
   for (size_t k = 0; k < boundary.size(); ++k) {
     const double a = 2.0 * M_PI * static_cast<double>(k) / static_cast<double>(boundary.size());
-    pos[static_cast<size_t>(boundary[k])] = Vec2(std::cos(a), std::sin(a));
-    fixed[static_cast<size_t>(boundary[k])] = 1;
+    L.pos[static_cast<size_t>(boundary[k])] = Vec2(std::cos(a), std::sin(a));
+    L.fixed[static_cast<size_t>(boundary[k])] = 1;
   }
-  // Tutte: every free node at the mean of its neighbours (the removed outer
-  // face node is not a neighbour).
-  std::vector<int> index(static_cast<size_t>(N), -1);
-  int nfree = 0;
+  L.index.assign(static_cast<size_t>(N), -1);
   for (int v = 0; v < N; ++v)
-    if (!fixed[static_cast<size_t>(v)]) index[static_cast<size_t>(v)] = nfree++;
-  // Tutte's barycentric embedding is planar with convex faces for any positive
-  // edge weights (Floater 1997). Uniform weights crowd the inner nodes
-  // exponentially; reweighting every edge by its current length (repeatedly)
-  // spreads them out, which keeps the resampled polygon faithful.
-  std::vector<std::vector<std::pair<int, double>>> wadj(static_cast<size_t>(N));
+    if (!L.fixed[static_cast<size_t>(v)]) L.index[static_cast<size_t>(v)] = L.nfree++;
+  return L;
+}
+
+/// Multiplies every edge weight by its current length over the mean length
+/// (clamped to [0.2, 5]), keeping the weights symmetric.
+void reweight_by_length(WeightedAdjacency& wadj, const std::vector<Vec2>& pos) {
+  const int N = static_cast<int>(wadj.size());
+  double mean = 0.0;
+  int count = 0;
+  for (int v = 0; v < N; ++v)
+    for (auto& [w, weight] : wadj[static_cast<size_t>(v)]) {
+      mean += (pos[static_cast<size_t>(v)] - pos[static_cast<size_t>(w)]).norm();
+      ++count;
+    }
+  mean /= std::max(count, 1);
+  for (int v = 0; v < N; ++v)
+    for (auto& [w, weight] : wadj[static_cast<size_t>(v)])
+      weight *= std::clamp((pos[static_cast<size_t>(v)] - pos[static_cast<size_t>(w)]).norm() / mean, 0.2, 5.0);
+  // keep the weights symmetric
+  for (int v = 0; v < N; ++v)
+    for (auto& [w, weight] : wadj[static_cast<size_t>(v)])
+      for (auto& [x, wx] : wadj[static_cast<size_t>(w)])
+        if (x == v && w > v) wx = weight;
+}
+
+/// Moves every free node to the weighted mean of its neighbours (one sparse
+/// solve of the weighted graph Laplacian with the pinned nodes on the right).
+void solve_tutte(const WeightedAdjacency& wadj, TutteLayout& L) {
+  const int N = static_cast<int>(wadj.size());
+  std::vector<Eigen::Triplet<double>> trip;
+  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(L.nfree, 2);
+  for (int v = 0; v < N; ++v) {
+    const int i = L.index[static_cast<size_t>(v)];
+    if (i < 0) continue;
+    double deg = 0.0;
+    for (auto [w, weight] : wadj[static_cast<size_t>(v)]) {
+      deg += weight;
+      if (L.fixed[static_cast<size_t>(w)] == 1)
+        rhs.row(i) += weight * L.pos[static_cast<size_t>(w)].transpose();
+      else
+        trip.emplace_back(i, L.index[static_cast<size_t>(w)], -weight);
+    }
+    trip.emplace_back(i, i, deg);
+  }
+  Eigen::SparseMatrix<double> A(L.nfree, L.nfree);
+  A.setFromTriplets(trip.begin(), trip.end());
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(A);
+  require(solver.info() == Eigen::Success, "PD embedding: Tutte system is singular");
+  const Eigen::MatrixXd X = solver.solve(rhs);
+  for (int v = 0; v < N; ++v)
+    if (L.index[static_cast<size_t>(v)] >= 0)
+      L.pos[static_cast<size_t>(v)] = X.row(L.index[static_cast<size_t>(v)]).transpose();
+}
+
+/// Tutte's barycentric embedding is planar with convex faces for any positive
+/// edge weights (Floater 1997). Uniform weights crowd the inner nodes
+/// exponentially; reweighting every edge by its current length (repeatedly)
+/// spreads them out, which keeps the resampled polygon faithful. The removed
+/// outer face node is not a neighbour.
+void tutte_layout(const std::vector<std::set<int>>& adj, TutteLayout& L, int rounds) {
+  const int N = static_cast<int>(adj.size());
+  WeightedAdjacency wadj(static_cast<size_t>(N));
   for (int v = 0; v < N; ++v)
     for (int w : adj[static_cast<size_t>(v)])
-      if (fixed[static_cast<size_t>(w)] != 2) wadj[static_cast<size_t>(v)].emplace_back(w, 1.0);
-  for (int round = 0; round <= rounds && nfree > 0; ++round) {
-    if (round > 0) {
-      double mean = 0.0;
-      int count = 0;
-      for (int v = 0; v < N; ++v)
-        for (auto& [w, weight] : wadj[static_cast<size_t>(v)]) {
-          mean += (pos[static_cast<size_t>(v)] - pos[static_cast<size_t>(w)]).norm();
-          ++count;
-        }
-      mean /= std::max(count, 1);
-      for (int v = 0; v < N; ++v)
-        for (auto& [w, weight] : wadj[static_cast<size_t>(v)])
-          weight *= std::clamp((pos[static_cast<size_t>(v)] - pos[static_cast<size_t>(w)]).norm() / mean, 0.2, 5.0);
-      // keep the weights symmetric
-      for (int v = 0; v < N; ++v)
-        for (auto& [w, weight] : wadj[static_cast<size_t>(v)])
-          for (auto& [x, wx] : wadj[static_cast<size_t>(w)])
-            if (x == v && w > v) wx = weight;
-    }
-    std::vector<Eigen::Triplet<double>> trip;
-    Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(nfree, 2);
-    for (int v = 0; v < N; ++v) {
-      const int i = index[static_cast<size_t>(v)];
-      if (i < 0) continue;
-      double deg = 0.0;
-      for (auto [w, weight] : wadj[static_cast<size_t>(v)]) {
-        deg += weight;
-        if (fixed[static_cast<size_t>(w)] == 1)
-          rhs.row(i) += weight * pos[static_cast<size_t>(w)].transpose();
-        else
-          trip.emplace_back(i, index[static_cast<size_t>(w)], -weight);
-      }
-      trip.emplace_back(i, i, deg);
-    }
-    Eigen::SparseMatrix<double> A(nfree, nfree);
-    A.setFromTriplets(trip.begin(), trip.end());
-    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(A);
-    require(solver.info() == Eigen::Success, "PD embedding: Tutte system is singular");
-    const Eigen::MatrixXd X = solver.solve(rhs);
-    for (int v = 0; v < N; ++v)
-      if (index[static_cast<size_t>(v)] >= 0) pos[static_cast<size_t>(v)] = X.row(index[static_cast<size_t>(v)]).transpose();
+      if (L.fixed[static_cast<size_t>(w)] != 2) wadj[static_cast<size_t>(v)].emplace_back(w, 1.0);
+  for (int round = 0; round <= rounds && L.nfree > 0; ++round) {
+    if (round > 0) reweight_by_length(wadj, L.pos);
+    solve_tutte(wadj, L);
   }
-  // The knot: edge e leaves crossing s(e) and enters t(e) = s(e + 1); it runs
-  // s(e) -> midpoint(e). At s(e) the strand is over when e is the over strand's head.
-  double shortest = 1e300;
-  struct Corner {
-    Vec2 p;
-    double z;
-  };
+}
+
+/// The knot's corners in order: edge e leaves crossing s(e) and enters
+/// t(e) = s(e + 1); it runs s(e) -> midpoint(e), at height +1 at s(e) when
+/// the strand is over there (e is the over strand's head), -1 under, 0 at the midpoint.
+std::vector<Corner> knot_corners(const PlaneGraph& g, const TutteNodes& nodes, const std::vector<Vec2>& pos) {
+  const PDCode& pd = *g.pd;
   std::vector<Corner> corners;
-  for (int e = 1; e <= m; ++e) {
+  for (int e = 1; e <= nodes.m; ++e) {
     // the crossing where e is outgoing: slot 2 (under) or the over strand's head
     int from = -1;
     bool over = false;
-    for (const Dart& d : where[static_cast<size_t>(e)]) {
+    for (const Dart& d : g.where[static_cast<size_t>(e)]) {
       const auto& X = pd.crossings[static_cast<size_t>(d.crossing)];
-      const int sign = X.sign(m);
+      const int sign = X.sign(nodes.m);
       const int over_head_slot = sign > 0 ? 1 : 3;
       if (d.slot == 2 || d.slot == over_head_slot) {
         from = d.crossing;
@@ -169,23 +228,33 @@ Points pd_dense_curve(const PDCode& pd, const EmbeddingOptions& o, int rounds) {
     }
     require(from >= 0, "PD embedding: edge without a tail (code not validated)");
     corners.push_back({pos[static_cast<size_t>(from)], over ? 1.0 : -1.0});
-    corners.push_back({pos[static_cast<size_t>(mid(e))], 0.0});
+    corners.push_back({pos[static_cast<size_t>(nodes.mid(e))], 0.0});
   }
+  return corners;
+}
+
+/// Control polygon: crossings at ±h, midpoints at 0. The crossing height h is
+/// a fraction of the shortest piece, but at least about one output edge so
+/// that the resampled polygon keeps the strands apart.
+std::vector<Vec3> control_polygon(const std::vector<Corner>& corners, const EmbeddingOptions& o) {
+  double shortest = 1e300;
   for (size_t k = 0; k < corners.size(); ++k)
     shortest = std::min(shortest, (corners[(k + 1) % corners.size()].p - corners[k].p).norm());
   require_input(shortest > 1e-12, "PD embedding: degenerate drawing");
-  // Crossing height: a fraction of the shortest piece, but at least about one
-  // output edge so that the resampled polygon keeps the strands apart.
   double planar_length = 0.0;
   for (size_t k = 0; k < corners.size(); ++k) planar_length += (corners[(k + 1) % corners.size()].p - corners[k].p).norm();
   const double h = std::max(o.pd_crossing_height * shortest, o.pd_min_crossing_height * planar_length / o.vertices);
-  // Control polygon: crossings at ±h, midpoints at 0. Chaikin corner cutting
-  // rounds its corners (so that the equal-chord resampling sees a smooth
-  // curve); each round replaces an edge PQ by the points 3/4 P + 1/4 Q and
-  // 1/4 P + 3/4 Q, staying inside the triangles of consecutive corners.
   std::vector<Vec3> ctrl;
   for (const Corner& q : corners) ctrl.emplace_back(q.p.x(), q.p.y(), q.z * h);
-  for (int round = 0; round < 3; ++round) {
+  return ctrl;
+}
+
+/// Chaikin corner cutting rounds the polygon's corners (so that the
+/// equal-chord resampling sees a smooth curve); each round replaces an edge PQ
+/// by the points 3/4 P + 1/4 Q and 1/4 P + 3/4 Q, staying inside the triangles
+/// of consecutive corners.
+void chaikin(std::vector<Vec3>& ctrl, int rounds) {
+  for (int round = 0; round < rounds; ++round) {
     std::vector<Vec3> next;
     next.reserve(2 * ctrl.size());
     for (size_t k = 0; k < ctrl.size(); ++k) {
@@ -196,7 +265,10 @@ Points pd_dense_curve(const PDCode& pd, const EmbeddingOptions& o, int rounds) {
     }
     ctrl.swap(next);
   }
-  const int K = o.samples_per_piece;
+}
+
+/// K equally spaced points on every edge of the closed polygon, from its start.
+Points dense_samples(const std::vector<Vec3>& ctrl, int K) {
   Points dense(static_cast<Eigen::Index>(ctrl.size()) * K, 3);
   for (size_t k = 0; k < ctrl.size(); ++k)
     for (int s = 0; s < K; ++s) {
@@ -204,6 +276,20 @@ Points pd_dense_curve(const PDCode& pd, const EmbeddingOptions& o, int rounds) {
       dense.row(static_cast<Eigen::Index>(k) * K + s) = ((1.0 - u) * ctrl[k] + u * ctrl[(k + 1) % ctrl.size()]).transpose();
     }
   return dense;
+}
+
+/// The dense 3D curve of the PD drawing after `rounds` Tutte reweightings.
+Points pd_dense_curve(const PDCode& pd, const EmbeddingOptions& o, int rounds) {
+  const int c = pd.size();
+  require_input(c >= 1, "PD embedding: empty code");
+  const PlaneGraph g = plane_graph(pd);
+  const TutteNodes nodes{c, 2 * c, static_cast<int>(g.faces.size())};
+  const std::vector<std::set<int>> adj = tutte_adjacency(g, nodes);
+  TutteLayout layout = pin_outer_face(g, nodes);
+  tutte_layout(adj, layout, rounds);
+  std::vector<Vec3> ctrl = control_polygon(knot_corners(g, nodes, layout.pos), o);
+  chaikin(ctrl, 3);
+  return dense_samples(ctrl, o.samples_per_piece);
 }
 
 }  // namespace
