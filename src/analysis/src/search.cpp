@@ -79,28 +79,12 @@ Points apply_symmetry(const Points& C, int symmetry) {
   return S;
 }
 
-}  // namespace
-
-void AlignmentOptions::validate() const {
-  require(samples >= 4, "AlignmentOptions: samples must be >= 4");
-  require(refine_starts >= 1, "AlignmentOptions: refine_starts must be >= 1");
-  require(max_iterations >= 0, "AlignmentOptions: max_iterations must be >= 0");
-  require(polish_iterations >= 0, "AlignmentOptions: polish_iterations must be >= 0");
-  require(relative_tolerance >= 0.0 && std::isfinite(relative_tolerance),
-          "AlignmentOptions: relative_tolerance must be finite and >= 0");
-}
-
-Alignment align_curves(const Points& query, const Points& candidate, const AlignmentOptions& options) {
-  options.validate();
-  require(query.rows() >= 3 && candidate.rows() >= 3, "align_curves: closed polygons with >= 3 vertices expected");
-  require(query.allFinite() && candidate.allFinite(), "align_curves: non-finite coordinates");
+/// The closed-form residual of every (symmetry, shift)
+/// correspondence; the local minima over the shift, best first, at most
+/// options.refine_starts of them.
+std::vector<Start> closed_form_starts(const Points& Qc, const Points& C, const AlignmentOptions& options) {
   const int m = options.samples;
-  const Points Q = resample_arclength(query, m);
-  const Points C = resample_arclength(candidate, m);
-  const Points Qc = centred(Q);
   const double q2 = Qc.squaredNorm();
-
-  // 1. closed-form residual of every (symmetry, shift) correspondence
   std::vector<int> symmetries = {0};
   if (options.reversal) symmetries.push_back(1);
   if (options.mirror) symmetries.push_back(2);
@@ -126,71 +110,178 @@ Alignment align_curves(const Points& query, const Points& candidate, const Align
   }
   std::stable_sort(starts.begin(), starts.end(), [](const Start& a, const Start& b) { return a.residual < b.residual; });
   if (static_cast<int>(starts.size()) > options.refine_starts) starts.resize(static_cast<size_t>(options.refine_starts));
+  return starts;
+}
+
+/// Nearest neighbours both ways between two point sets of m points each
+/// (brute force, O(m²)): squared distances and indices.
+struct NearestPairs {
+  std::vector<double> bq, by;  // Q_i to its nearest Y, Y_j to its nearest Q
+  std::vector<int> iq, iy;
+};
+
+NearestPairs nearest_both_ways(const Points& Q, const Points& Y) {
+  const int m = static_cast<int>(Q.rows());
+  NearestPairs p;
+  p.bq.assign(static_cast<size_t>(m), std::numeric_limits<double>::infinity());
+  p.by = p.bq;
+  p.iq.assign(static_cast<size_t>(m), 0);
+  p.iy.assign(static_cast<size_t>(m), 0);
+  for (int i = 0; i < m; ++i) {
+    for (int j = 0; j < m; ++j) {
+      const double d2 = (Q.row(i) - Y.row(j)).squaredNorm();
+      if (d2 < p.bq[static_cast<size_t>(i)]) {
+        p.bq[static_cast<size_t>(i)] = d2;
+        p.iq[static_cast<size_t>(i)] = j;
+      }
+      if (d2 < p.by[static_cast<size_t>(j)]) {
+        p.by[static_cast<size_t>(j)] = d2;
+        p.iy[static_cast<size_t>(j)] = i;
+      }
+    }
+  }
+  return p;
+}
+
+/// One symmetric ICP refinement: the rigid motion (R, t) of the candidate and
+/// the moved resampled candidate Y.
+struct IcpResult {
+  Mat3 R;
+  Vec3 t;
+  Points Y;
+  int iterations = 0;
+  AlignmentStatus status = AlignmentStatus::MaxIterations;
+};
+
+/// Symmetric point-to-point ICP of the resampled
+/// candidate C (under the start's symmetry) onto Q, from the Kabsch motion of
+/// the start's correspondence.
+IcpResult icp_from_start(const Points& Q, const Points& C, const Start& st, const AlignmentOptions& options) {
+  const int m = options.samples;
+  Points src(2 * m, 3), dst(2 * m, 3);
+  const Points S = apply_symmetry(C, st.symmetry);
+  Points rolled(m, 3);
+  for (int i = 0; i < m; ++i) rolled.row(i) = S.row((i + st.shift) % m);
+  IcpResult out;
+  kabsch(rolled, Q, out.R, out.t);
+  out.Y = (S * out.R.transpose()).rowwise() + out.t.transpose();
+  double prev = std::numeric_limits<double>::infinity();
+  int& it = out.iterations;
+  for (;; ++it) {
+    const NearestPairs nn = nearest_both_ways(Q, out.Y);
+    double mse = 0.0;
+    for (int k = 0; k < m; ++k) mse += nn.bq[static_cast<size_t>(k)] + nn.by[static_cast<size_t>(k)];
+    mse /= 2.0 * m;
+    if (prev - mse <= options.relative_tolerance * mse) {
+      out.status = AlignmentStatus::Converged;
+      break;
+    }
+    if (it >= options.max_iterations) break;
+    prev = mse;
+    for (int k = 0; k < m; ++k) {
+      src.row(k) = out.Y.row(nn.iq[static_cast<size_t>(k)]);
+      dst.row(k) = Q.row(k);
+      src.row(m + k) = out.Y.row(k);
+      dst.row(m + k) = Q.row(nn.iy[static_cast<size_t>(k)]);
+    }
+    Mat3 G;
+    Vec3 g;
+    kabsch(src, dst, G, g);
+    out.Y = (out.Y * G.transpose()).rowwise() + g.transpose();
+    out.R = G * out.R;
+    out.t = G * out.t + g;
+  }
+  return out;
+}
+
+/// Gauss-Newton normal equations of the point-to-line residuals, for the
+/// small motion (ω, τ) about the centre c.
+struct PointToLine {
+  Vec3 c;
+  Eigen::Matrix<double, 6, 6> A = Eigen::Matrix<double, 6, 6>::Zero();
+  Eigen::Matrix<double, 6, 1> b = Eigen::Matrix<double, 6, 1>::Zero();
+
+  /// Pair (y moving with C, x fixed on Q, unit tangent tg of the segment of the closest point).
+  void add_pair(const Vec3& y, const Vec3& x, const Vec3& tg) {
+    const Mat3 Pp = Mat3::Identity() - tg * tg.transpose();
+    Eigen::Matrix<double, 3, 6> J;
+    const Vec3 r = y - c;
+    J.leftCols<3>() << 0.0, r.z(), -r.y(), -r.z(), 0.0, r.x(), r.y(), -r.x(), 0.0;  // ω × r = -[r]× ω
+    J.rightCols<3>() = Mat3::Identity();
+    const Eigen::Matrix<double, 3, 6> PJ = Pp * J;
+    A += PJ.transpose() * PJ;
+    b -= PJ.transpose() * (Pp * (y - x));
+  }
+};
+
+/// One point-to-line Gauss-Newton step of the polishing: Csym and
+/// Cres are the original and the resampled candidate under the best
+/// symmetry. Updates best's motion; returns false once the step is below
+/// rounding (relative to `scale`).
+bool polish_step(const Points& query, const Points& Q, const Points& Csym, const Points& Cres, double scale,
+                 Alignment& best) {
+  const int m = static_cast<int>(Q.rows());
+  const Points Corig = (Csym * best.rotation.transpose()).rowwise() + best.translation.transpose();
+  const Points Cmoved = (Cres * best.rotation.transpose()).rowwise() + best.translation.transpose();
+  PointToLine ne;
+  ne.c = Q.colwise().mean().transpose();
+  const Vec3& c = ne.c;
+  for (int k = 0; k < m; ++k) {
+    Vec3 tg;
+    const Vec3 y = closest_on_polygon(Q.row(k).transpose(), Corig, &tg);
+    ne.add_pair(y, Q.row(k).transpose(), tg);
+    const Vec3 x = closest_on_polygon(Cmoved.row(k).transpose(), query, &tg);
+    ne.add_pair(Cmoved.row(k).transpose(), x, tg);
+  }
+  // damped solve: a circle's rotation about its axis is a free direction
+  const double damping = 1e-12 * std::max(ne.A.diagonal().maxCoeff(), 1e-300);
+  const Eigen::Matrix<double, 6, 1> d = (ne.A + damping * Eigen::Matrix<double, 6, 6>::Identity()).ldlt().solve(ne.b);
+  const Vec3 w = d.head<3>(), tau = d.tail<3>();
+  const double angle = w.norm();
+  const Mat3 Rw = angle > 0.0 ? Mat3(Eigen::AngleAxisd(angle, w / angle)) : Mat3::Identity();
+  best.rotation = Rw * best.rotation;
+  best.translation = Rw * best.translation + c - Rw * c + tau;
+  return !(angle + tau.norm() / scale < 1e-13);
+}
+
+}  // namespace
+
+void AlignmentOptions::validate() const {
+  require(samples >= 4, "AlignmentOptions: samples must be >= 4");
+  require(refine_starts >= 1, "AlignmentOptions: refine_starts must be >= 1");
+  require(max_iterations >= 0, "AlignmentOptions: max_iterations must be >= 0");
+  require(polish_iterations >= 0, "AlignmentOptions: polish_iterations must be >= 0");
+  require(relative_tolerance >= 0.0 && std::isfinite(relative_tolerance),
+          "AlignmentOptions: relative_tolerance must be finite and >= 0");
+}
+
+Alignment align_curves(const Points& query, const Points& candidate, const AlignmentOptions& options) {
+  options.validate();
+  require(query.rows() >= 3 && candidate.rows() >= 3, "align_curves: closed polygons with >= 3 vertices expected");
+  require(query.allFinite() && candidate.allFinite(), "align_curves: non-finite coordinates");
+  const int m = options.samples;
+  const Points Q = resample_arclength(query, m);
+  const Points C = resample_arclength(candidate, m);
+  const Points Qc = centred(Q);
+
+  // 1. closed-form residual of every (symmetry, shift) correspondence
+  const std::vector<Start> starts = closed_form_starts(Qc, C, options);
 
   // 2. ICP from each start
   Alignment best;
   best.distance = std::numeric_limits<double>::infinity();
-  Points src(2 * m, 3), dst(2 * m, 3);
   for (const Start& st : starts) {
-    const Points S = apply_symmetry(C, st.symmetry);
-    Points rolled(m, 3);
-    for (int i = 0; i < m; ++i) rolled.row(i) = S.row((i + st.shift) % m);
-    Mat3 R;
-    Vec3 t;
-    kabsch(rolled, Q, R, t);
-    Points Y = (S * R.transpose()).rowwise() + t.transpose();
-    double prev = std::numeric_limits<double>::infinity();
-    int it = 0;
-    AlignmentStatus status = AlignmentStatus::MaxIterations;
-    for (;; ++it) {
-      // nearest neighbours both ways (brute force, O(m²))
-      std::vector<double> bq(static_cast<size_t>(m), std::numeric_limits<double>::infinity()), by = bq;
-      std::vector<int> iq(static_cast<size_t>(m), 0), iy(static_cast<size_t>(m), 0);
-      for (int i = 0; i < m; ++i) {
-        for (int j = 0; j < m; ++j) {
-          const double d2 = (Q.row(i) - Y.row(j)).squaredNorm();
-          if (d2 < bq[static_cast<size_t>(i)]) {
-            bq[static_cast<size_t>(i)] = d2;
-            iq[static_cast<size_t>(i)] = j;
-          }
-          if (d2 < by[static_cast<size_t>(j)]) {
-            by[static_cast<size_t>(j)] = d2;
-            iy[static_cast<size_t>(j)] = i;
-          }
-        }
-      }
-      double mse = 0.0;
-      for (int k = 0; k < m; ++k) mse += bq[static_cast<size_t>(k)] + by[static_cast<size_t>(k)];
-      mse /= 2.0 * m;
-      if (prev - mse <= options.relative_tolerance * mse) {
-        status = AlignmentStatus::Converged;
-        break;
-      }
-      if (it >= options.max_iterations) break;
-      prev = mse;
-      for (int k = 0; k < m; ++k) {
-        src.row(k) = Y.row(iq[static_cast<size_t>(k)]);
-        dst.row(k) = Q.row(k);
-        src.row(m + k) = Y.row(k);
-        dst.row(m + k) = Q.row(iy[static_cast<size_t>(k)]);
-      }
-      Mat3 G;
-      Vec3 g;
-      kabsch(src, dst, G, g);
-      Y = (Y * G.transpose()).rowwise() + g.transpose();
-      R = G * R;
-      t = G * t + g;
-    }
-    const double dist = symmetric_rms(Q, Y);
+    const IcpResult r = icp_from_start(Q, C, st, options);
+    const double dist = symmetric_rms(Q, r.Y);
     if (dist < best.distance) {
       best.distance = dist;
-      best.rotation = R;
-      best.translation = t;
+      best.rotation = r.R;
+      best.translation = r.t;
       best.shift = st.shift;
       best.reversed = st.symmetry & 1;
       best.mirrored = st.symmetry & 2;
-      best.iterations = it;
-      best.status = status;
+      best.iterations = r.iterations;
+      best.status = r.status;
     }
   }
 
@@ -200,40 +291,8 @@ Alignment align_curves(const Points& query, const Points& candidate, const Align
   const Points Csym = apply_symmetry(candidate, sym);
   const Points Cres = apply_symmetry(C, sym);
   const double scale = std::max(Qc.cwiseAbs().maxCoeff(), 1e-300);
-  for (int it = 0; it < options.polish_iterations; ++it) {
-    const Points Corig = (Csym * best.rotation.transpose()).rowwise() + best.translation.transpose();
-    const Points Cmoved = (Cres * best.rotation.transpose()).rowwise() + best.translation.transpose();
-    const Vec3 c = Q.colwise().mean().transpose();
-    Eigen::Matrix<double, 6, 6> A = Eigen::Matrix<double, 6, 6>::Zero();
-    Eigen::Matrix<double, 6, 1> b = Eigen::Matrix<double, 6, 1>::Zero();
-    // pair (y moving with C, x fixed on Q, unit tangent tg of the segment of the closest point)
-    auto add_pair = [&](const Vec3& y, const Vec3& x, const Vec3& tg) {
-      const Mat3 Pp = Mat3::Identity() - tg * tg.transpose();
-      Eigen::Matrix<double, 3, 6> J;
-      const Vec3 r = y - c;
-      J.leftCols<3>() << 0.0, r.z(), -r.y(), -r.z(), 0.0, r.x(), r.y(), -r.x(), 0.0;  // ω × r = -[r]× ω
-      J.rightCols<3>() = Mat3::Identity();
-      const Eigen::Matrix<double, 3, 6> PJ = Pp * J;
-      A += PJ.transpose() * PJ;
-      b -= PJ.transpose() * (Pp * (y - x));
-    };
-    for (int k = 0; k < m; ++k) {
-      Vec3 tg;
-      const Vec3 y = closest_on_polygon(Q.row(k).transpose(), Corig, &tg);
-      add_pair(y, Q.row(k).transpose(), tg);
-      const Vec3 x = closest_on_polygon(Cmoved.row(k).transpose(), query, &tg);
-      add_pair(Cmoved.row(k).transpose(), x, tg);
-    }
-    // damped solve: a circle's rotation about its axis is a free direction
-    const double damping = 1e-12 * std::max(A.diagonal().maxCoeff(), 1e-300);
-    const Eigen::Matrix<double, 6, 1> d = (A + damping * Eigen::Matrix<double, 6, 6>::Identity()).ldlt().solve(b);
-    const Vec3 w = d.head<3>(), tau = d.tail<3>();
-    const double angle = w.norm();
-    const Mat3 Rw = angle > 0.0 ? Mat3(Eigen::AngleAxisd(angle, w / angle)) : Mat3::Identity();
-    best.rotation = Rw * best.rotation;
-    best.translation = Rw * best.translation + c - Rw * c + tau;
-    if (angle + tau.norm() / scale < 1e-13) break;
-  }
+  for (int it = 0; it < options.polish_iterations; ++it)
+    if (!polish_step(query, Q, Csym, Cres, scale, best)) break;
 
   // 4. the distance between the original polygons (vertices of each to the other)
   const Points Cfinal = (Csym * best.rotation.transpose()).rowwise() + best.translation.transpose();
