@@ -61,12 +61,7 @@ void SparseAssembler::add_slow(Index i, Index j, double v) {
 bool SparseAssembler::end() {
   require(in_pass_, "SparseAssembler::end: call begin() first");
   in_pass_ = false;
-  bool all_replayed = replay_ok_ && used_segments_ == static_cast<int>(segments_.size());
-  for (int k = 0; k < used_segments_ && all_replayed; ++k) {
-    const Segment& s = segments_[static_cast<size_t>(k)];
-    if (!s.replay || s.cursor != s.slots.size()) all_replayed = false;
-  }
-  if (all_replayed) {
+  if (all_replayed()) {
     changed_ = false;
     return false;
   }
@@ -78,20 +73,34 @@ bool SparseAssembler::end() {
   // setFromTriplets gives. Cost O(nnz + n + recorded), no search.
   Matrix old;
   old.swap(H_);
-  const Index old_nnz = static_cast<Index>(old.nonZeros());
-  const Index* old_outer = old.outerIndexPtr();
-  const Index* old_inner = old.innerIndexPtr();
-  const double* old_value = old.valuePtr();
   segments_.resize(static_cast<size_t>(used_segments_));
-  // adds written into slots this pass: a replayed segment's all, a segment
-  // that fell back to recording those before it did
-  auto written = [](const Segment& s) { return s.replay ? s.cursor : s.written; };
+  mark_written_slots(static_cast<Index>(old.nonZeros()));
+  const size_t recorded = bucket_recorded_by_column();
+  sort_recorded_by_row();
+  merge_patterns(old, recorded);
+  assign_slots();
+  ++version_;
+  changed_ = true;
+  return true;
+}
+
+bool SparseAssembler::all_replayed() const {
+  bool all = replay_ok_ && used_segments_ == static_cast<int>(segments_.size());
+  for (int k = 0; k < used_segments_ && all; ++k) {
+    const Segment& s = segments_[static_cast<size_t>(k)];
+    if (!s.replay || s.cursor != s.slots.size()) all = false;
+  }
+  return all;
+}
+
+void SparseAssembler::mark_written_slots(Index old_nnz) {
   std::vector<Index>& old_to_new = scratch_old_to_new_;  // -1: slot not written this pass
   old_to_new.assign(static_cast<size_t>(old_nnz), -1);
   for (const Segment& s : segments_)
-    for (size_t k = 0; k < written(s); ++k) old_to_new[static_cast<size_t>(s.slots[k])] = 0;
-  // recorded adds, by column (counting sort), then by row and call within
-  // a column (insertion sort: columns hold few adds)
+    for (size_t k = 0; k < s.written_slots(); ++k) old_to_new[static_cast<size_t>(s.slots[k])] = 0;
+}
+
+size_t SparseAssembler::bucket_recorded_by_column() {
   size_t r = 0;
   for (const Segment& s : segments_)
     if (!s.replay) r += s.recorded.size();
@@ -107,19 +116,25 @@ bool SparseAssembler::end() {
   rec_row.resize(r);
   rec_call.resize(r);
   rec_val.resize(r);
-  {
-    std::vector<Index>& next = scratch_next_;
-    next.assign(rec_start.begin(), rec_start.end() - 1);
-    Index call = 0;
-    for (const Segment& s : segments_)
-      if (!s.replay)
-        for (const auto& t : s.recorded) {
-          const Index q = next[static_cast<size_t>(t.col())]++;
-          rec_row[static_cast<size_t>(q)] = t.row();
-          rec_call[static_cast<size_t>(q)] = call++;
-          rec_val[static_cast<size_t>(q)] = t.value();
-        }
-  }
+  std::vector<Index>& next = scratch_next_;
+  next.assign(rec_start.begin(), rec_start.end() - 1);
+  Index call = 0;
+  for (const Segment& s : segments_)
+    if (!s.replay)
+      for (const auto& t : s.recorded) {
+        const Index q = next[static_cast<size_t>(t.col())]++;
+        rec_row[static_cast<size_t>(q)] = t.row();
+        rec_call[static_cast<size_t>(q)] = call++;
+        rec_val[static_cast<size_t>(q)] = t.value();
+      }
+  return r;
+}
+
+void SparseAssembler::sort_recorded_by_row() {
+  const std::vector<Index>& rec_start = scratch_rec_start_;
+  std::vector<Index>& rec_row = scratch_rec_row_;
+  std::vector<Index>& rec_call = scratch_rec_call_;
+  std::vector<double>& rec_val = scratch_rec_val_;
   for (Index c = 0; c < dofs_; ++c) {
     // stable by call already (filled in call order): sort by row, keeping it
     const Index lo = rec_start[static_cast<size_t>(c)], hi = rec_start[static_cast<size_t>(c) + 1];
@@ -137,17 +152,28 @@ bool SparseAssembler::end() {
       rec_val[static_cast<size_t>(z)] = vv;
     }
   }
-  // merge
+}
+
+void SparseAssembler::merge_patterns(const Matrix& old, size_t recorded) {
+  const Index* old_outer = old.outerIndexPtr();
+  const Index* old_inner = old.innerIndexPtr();
+  const double* old_value = old.valuePtr();
+  const Index old_nnz = static_cast<Index>(old.nonZeros());
+  std::vector<Index>& old_to_new = scratch_old_to_new_;
+  const std::vector<Index>& rec_start = scratch_rec_start_;
+  const std::vector<Index>& rec_row = scratch_rec_row_;
+  const std::vector<Index>& rec_call = scratch_rec_call_;
+  const std::vector<double>& rec_val = scratch_rec_val_;
   std::vector<Index>& call_pos = scratch_call_pos_;  // new position of each recorded call
-  call_pos.resize(r);
+  call_pos.resize(recorded);
   std::vector<Index>& outer = scratch_outer_;
   std::vector<Index>& inner = scratch_inner_;
   std::vector<double>& values = scratch_values_;
   outer.assign(static_cast<size_t>(dofs_) + 1, 0);
   inner.clear();
   values.clear();
-  inner.reserve(static_cast<size_t>(old_nnz) + r);
-  values.reserve(static_cast<size_t>(old_nnz) + r);
+  inner.reserve(static_cast<size_t>(old_nnz) + recorded);
+  values.reserve(static_cast<size_t>(old_nnz) + recorded);
   const Index old_cols = static_cast<Index>(old.outerSize());
   for (Index c = 0; c < dofs_; ++c) {
     Index p = c < old_cols ? old_outer[c] : 0, p_end = c < old_cols ? old_outer[c + 1] : 0;
@@ -183,10 +209,14 @@ bool SparseAssembler::end() {
   std::copy(outer.begin(), outer.end(), H_.outerIndexPtr());
   std::copy(inner.begin(), inner.end(), H_.innerIndexPtr());
   std::copy(values.begin(), values.end(), H_.valuePtr());
-  // Slots for every segment's adds in the new pattern.
+}
+
+void SparseAssembler::assign_slots() {
+  const std::vector<Index>& old_to_new = scratch_old_to_new_;
+  const std::vector<Index>& call_pos = scratch_call_pos_;
   Index call = 0;
   for (Segment& s : segments_) {
-    const size_t w = written(s);
+    const size_t w = s.written_slots();
     if (!s.replay) s.slots.resize(w + s.recorded.size());
     for (size_t k = 0; k < w; ++k) s.slots[k] = old_to_new[static_cast<size_t>(s.slots[k])];
     if (!s.replay) {
@@ -199,9 +229,6 @@ bool SparseAssembler::end() {
     s.has_slots = true;
     s.replay = false;
   }
-  ++version_;
-  changed_ = true;
-  return true;
 }
 
 }  // namespace ek

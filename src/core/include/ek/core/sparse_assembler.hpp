@@ -88,9 +88,26 @@ class SparseAssembler {
     size_t written = 0;  // adds written into slots before falling back to recording
     bool replay = false;
     bool has_slots = false;  // slots describe the current pattern (possibly empty)
+    // adds written into slots this pass: a replayed segment's all, a segment
+    // that fell back to recording those before it did
+    size_t written_slots() const { return replay ? cursor : written; }
   };
   using Matrix = Eigen::SparseMatrix<double, Eigen::ColMajor, Index>;
   void add_slow(Index i, Index j, double v);
+  // The steps of end(): whether every segment replayed its pattern whole; and
+  // the rebuild of the pattern from the old one (`old`, H_ before the pass).
+  bool all_replayed() const;
+  // scratch_old_to_new_: 0 for the old slots written this pass, -1 for the others
+  void mark_written_slots(Index old_nnz);
+  // the recorded adds in the scratch_rec_* buffers, by column (counting sort); returns their count
+  size_t bucket_recorded_by_column();
+  // within each column by row, keeping call order (insertion sort: columns hold few adds)
+  void sort_recorded_by_row();
+  // H_ = the written old entries merged with the recorded adds; the new
+  // position of each old slot (scratch_old_to_new_) and recorded call (scratch_call_pos_)
+  void merge_patterns(const Matrix& old, size_t recorded);
+  // every segment's slots in the new pattern; the recorded adds are dropped
+  void assign_slots();
   Matrix H_;
   // end()'s rebuild buffers, kept between rebuilds (no allocation once grown)
   std::vector<Index> scratch_old_to_new_, scratch_rec_start_, scratch_next_, scratch_rec_row_, scratch_rec_call_,
