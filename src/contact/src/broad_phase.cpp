@@ -145,9 +145,24 @@ void EdgeBroadPhase::find_pairs() {
   raw_.clear();
   pairs_.clear();
   if (n == 0) return;
+  const Grid grid = grid_of_boxes();
+  const size_t total = assign_cells(grid);
+  hash_entries(total);
+  pairs_in_cells(grid, total);
+  pairs_with_large_boxes();
+  sort_pairs();
+}
+
+int EdgeBroadPhase::Grid::cell(double v, int k) const {
+  return static_cast<int>((v - origin[k]) * inv_h);  // v >= origin, so truncation is the floor
+}
+
+EdgeBroadPhase::Grid EdgeBroadPhase::grid_of_boxes() const {
+  const int n = topology_.num_vertices();
   // Cell size: kCellScale times the mean largest box side; origin: lower corner of all boxes.
-  double origin[3] = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
-                      std::numeric_limits<double>::infinity()};
+  Grid grid;
+  double* origin = grid.origin;
+  for (int k = 0; k < 3; ++k) origin[k] = std::numeric_limits<double>::infinity();
   double top[3] = {-origin[0], -origin[0], -origin[0]};
   double sum = 0.0;
   for (int i = 0; i < n; ++i) {
@@ -165,10 +180,12 @@ void EdgeBroadPhase::find_pairs() {
   const double span = std::max({top[0] - origin[0], top[1] - origin[1], top[2] - origin[2]});
   if (!(h > 0.0)) h = span > 0.0 ? span : 1.0;
   h = std::max(h, span * 1e-8);  // cell coordinates stay well inside int range
-  const double inv_h = 1.0 / h;
-  // v >= origin, so truncation is the floor
-  auto cell = [&](double v, int k) { return static_cast<int>((v - origin[k]) * inv_h); };
+  grid.inv_h = 1.0 / h;
+  return grid;
+}
 
+size_t EdgeBroadPhase::assign_cells(const Grid& grid) {
+  const int n = topology_.num_vertices();
   cell_lo_.resize(3 * static_cast<size_t>(n));
   cell_hi_.resize(3 * static_cast<size_t>(n));
   large_.clear();
@@ -180,8 +197,8 @@ void EdgeBroadPhase::find_pairs() {
     bool is_large = false;
     size_t cells = 1;
     for (int k = 0; k < 3; ++k) {
-      lo[k] = cell(b[k], k);
-      hi[k] = cell(b[3 + k], k);
+      lo[k] = grid.cell(b[k], k);
+      hi[k] = grid.cell(b[3 + k], k);
       if (hi[k] - lo[k] + 1 > kMaxCellsPerAxis) is_large = true;
       cells *= static_cast<size_t>(hi[k] - lo[k] + 1);
     }
@@ -193,43 +210,44 @@ void EdgeBroadPhase::find_pairs() {
       total += cells;
     }
   }
+  return total;
+}
 
-  // Hash table: counting sort of the (box, cell) entries by bucket.
+void EdgeBroadPhase::hash_entries(size_t total) {
+  const int n = topology_.num_vertices();
   size_t T = 64;
   while (T < total) T *= 2;
   const std::uint32_t mask = static_cast<std::uint32_t>(T - 1);
   bucket_start_.assign(T + 1, 0u);
   entry_bucket_.resize(total);
   entries_.resize(total);
-  {
-    size_t e = 0;
-    for (int i = 0; i < n; ++i) {
-      const int* lo = cell_lo_.data() + 3 * i;
-      const int* hi = cell_hi_.data() + 3 * i;
-      for (int cx = lo[0]; cx <= hi[0]; ++cx)
-        for (int cy = lo[1]; cy <= hi[1]; ++cy)
-          for (int cz = lo[2]; cz <= hi[2]; ++cz) {
-            const std::uint32_t bkt = cell_hash(cx, cy, cz) & mask;
-            entry_bucket_[e++] = bkt;
-            ++bucket_start_[bkt + 1];
-          }
-    }
-    for (size_t k = 0; k < T; ++k) bucket_start_[k + 1] += bucket_start_[k];
-    e = 0;
-    for (int i = 0; i < n; ++i) {
-      const int* lo = cell_lo_.data() + 3 * i;
-      const int* hi = cell_hi_.data() + 3 * i;
-      for (int cx = lo[0]; cx <= hi[0]; ++cx)
-        for (int cy = lo[1]; cy <= hi[1]; ++cy)
-          for (int cz = lo[2]; cz <= hi[2]; ++cz) {
-            const std::uint32_t bkt = entry_bucket_[e++];
-            entries_[bucket_start_[bkt]++] = {i, cx, cy, cz, bkt};
-          }
-    }
+  size_t e = 0;
+  for (int i = 0; i < n; ++i) {
+    const int* lo = cell_lo_.data() + 3 * i;
+    const int* hi = cell_hi_.data() + 3 * i;
+    for (int cx = lo[0]; cx <= hi[0]; ++cx)
+      for (int cy = lo[1]; cy <= hi[1]; ++cy)
+        for (int cz = lo[2]; cz <= hi[2]; ++cz) {
+          const std::uint32_t bkt = cell_hash(cx, cy, cz) & mask;
+          entry_bucket_[e++] = bkt;
+          ++bucket_start_[bkt + 1];
+        }
   }
+  for (size_t k = 0; k < T; ++k) bucket_start_[k + 1] += bucket_start_[k];
+  e = 0;
+  for (int i = 0; i < n; ++i) {
+    const int* lo = cell_lo_.data() + 3 * i;
+    const int* hi = cell_hi_.data() + 3 * i;
+    for (int cx = lo[0]; cx <= hi[0]; ++cx)
+      for (int cy = lo[1]; cy <= hi[1]; ++cy)
+        for (int cz = lo[2]; cz <= hi[2]; ++cz) {
+          const std::uint32_t bkt = entry_bucket_[e++];
+          entries_[bucket_start_[bkt]++] = {i, cx, cy, cz, bkt};
+        }
+  }
+}
 
-  // Pairs within each bucket (entries are grouped by bucket), reported in the
-  // cell of the lower corner of the boxes' intersection only.
+void EdgeBroadPhase::pairs_in_cells(const Grid& grid, size_t total) {
   for (size_t u0 = 0; u0 < total;) {
     size_t u1 = u0 + 1;
     while (u1 < total && entries_[u1].bucket == entries_[u0].bucket) ++u1;
@@ -241,8 +259,8 @@ void EdgeBroadPhase::find_pairs() {
         if (ev.cx != eu.cx || ev.cy != eu.cy || ev.cz != eu.cz) continue;
         const double* bv = box_.data() + 6 * ev.edge;
         if (!boxes_overlap(bu, bv)) continue;
-        if (cell(std::max(bu[0], bv[0]), 0) != eu.cx || cell(std::max(bu[1], bv[1]), 1) != eu.cy ||
-            cell(std::max(bu[2], bv[2]), 2) != eu.cz)
+        if (grid.cell(std::max(bu[0], bv[0]), 0) != eu.cx || grid.cell(std::max(bu[1], bv[1]), 1) != eu.cy ||
+            grid.cell(std::max(bu[2], bv[2]), 2) != eu.cz)
           continue;
         if (excluded(eu.edge, ev.edge)) continue;
         raw_.push_back({std::min(eu.edge, ev.edge), std::max(eu.edge, ev.edge)});
@@ -250,7 +268,10 @@ void EdgeBroadPhase::find_pairs() {
     }
     u0 = u1;
   }
-  // Large boxes against every box (large-large pairs once).
+}
+
+void EdgeBroadPhase::pairs_with_large_boxes() {
+  const int n = topology_.num_vertices();
   for (size_t k = 0; k < large_.size(); ++k) {
     const int i = large_[k];
     const double* bi = box_.data() + 6 * i;
@@ -262,8 +283,10 @@ void EdgeBroadPhase::find_pairs() {
       raw_.push_back({std::min(i, j), std::max(i, j)});
     }
   }
+}
 
-  // Sort by (a, b): counting sort by a, insertion sort of each (short) run by b.
+void EdgeBroadPhase::sort_pairs() {
+  const int n = topology_.num_vertices();
   count_.assign(static_cast<size_t>(n) + 1, 0);
   for (const EdgePair& p : raw_) ++count_[static_cast<size_t>(p.a) + 1];
   for (int i = 0; i < n; ++i) count_[static_cast<size_t>(i) + 1] += count_[static_cast<size_t>(i)];

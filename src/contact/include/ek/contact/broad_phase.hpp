@@ -63,7 +63,20 @@ class EdgeBroadPhase {
   bool excluded(int i, int j) const;
 
  private:
+  /// The grid: cell (v - origin) / h per axis, h = 1 / inv_h.
+  struct Grid {
+    double origin[3] = {0.0, 0.0, 0.0};  // [length] lower corner of all boxes
+    double inv_h = 1.0;  // [1/length]
+    int cell(double v, int k) const;  // cell coordinate of v >= origin[k] on axis k
+  };
+  // All non-excluded pairs of overlapping boxes of box_ into pairs_, sorted, in the steps below.
   void find_pairs();
+  Grid grid_of_boxes() const;  // cell size: kCellScale times the mean largest box side
+  size_t assign_cells(const Grid& grid);  // cell_lo_, cell_hi_, large_; returns the (box, cell) entry count
+  void hash_entries(size_t total);  // entries_ grouped by hash bucket (counting sort)
+  void pairs_in_cells(const Grid& grid, size_t total);  // raw_ += pairs sharing a cell, reported once
+  void pairs_with_large_boxes();  // raw_ += large boxes against every box (large-large pairs once)
+  void sort_pairs();  // pairs_ = raw_ sorted by (a, b)
 
   CurveTopology topology_;
   int excluded_;
