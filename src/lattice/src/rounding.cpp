@@ -111,6 +111,140 @@ struct Event {
   int dir;
 };
 
+/// The cell walk along a polygon: key points (crossings of cell boundaries
+/// and polygon vertices) in curve order, and the walk's sites with the key
+/// index at which each is entered.
+struct CellWalk {
+  std::vector<Vec3> keys;
+  std::vector<Site> walk;
+  std::vector<int> arrive;
+  Site cur;                   // the current site
+  std::vector<Event> events;  // scratch of piece()
+
+  /// Starts at the point S, in its cell.
+  explicit CellWalk(const Vec3& S, int m) : cur(round_site(S)) {
+    keys.reserve(static_cast<size_t>(4 * m));
+    keys.push_back(S);
+    walk.push_back(cur);
+    arrive.push_back(0);
+  }
+
+  /// Walks the straight piece A -> B (A is the last key): one step at every
+  /// crossing of a cell boundary, in order along the piece (ties by axis).
+  void piece(const Vec3& A, const Vec3& B) {
+    events.clear();
+    for (int k = 0; k < 3; ++k) {
+      const double a = A[k], b = B[k];
+      if (a == b) continue;
+      const long long ca = static_cast<long long>(std::floor(a + 0.5));
+      const long long cb = static_cast<long long>(std::floor(b + 0.5));
+      for (long long c = ca; c < cb; ++c)
+        events.push_back({std::clamp((static_cast<double>(c) + 0.5 - a) / (b - a), 0.0, 1.0), k, +1});
+      for (long long c = ca; c > cb; --c)
+        events.push_back({std::clamp((static_cast<double>(c) - 0.5 - a) / (b - a), 0.0, 1.0), k, -1});
+    }
+    std::sort(events.begin(), events.end(),
+              [](const Event& x, const Event& y) { return x.tau < y.tau || (x.tau == y.tau && x.axis < y.axis); });
+    for (const Event& ev : events) {
+      keys.push_back(A + ev.tau * (B - A));
+      cur.p[ev.axis] += ev.dir;
+      walk.push_back(cur);
+      arrive.push_back(static_cast<int>(keys.size()) - 1);
+    }
+    keys.push_back(B);
+  }
+
+  /// [lattice units] largest distance from site s to the keys from .. to.
+  double range_max(const Site& s, int from, int to) const {
+    double d = 0.0;
+    for (int q = from; q <= to; ++q) d = std::max(d, s.distance_to(keys[static_cast<size_t>(q)]));
+    return d;
+  }
+};
+
+/// Index j of the longest edge [Q_j, Q_{j+1}] (the first of equals).
+int longest_edge(const Points& Q) {
+  const int m = static_cast<int>(Q.rows());
+  int j0 = 0;
+  double lmax = -1.0;
+  for (int i = 0; i < m; ++i) {
+    const double l = (Q.row((i + 1) % m) - Q.row(i)).norm();
+    if (l > lmax) lmax = l, j0 = i;
+  }
+  return j0;
+}
+
+/// The cell walk once around the closed polygon Q, from and back to the
+/// point S on its edge j0.
+CellWalk cell_walk(const Points& Q, int j0, const Vec3& S) {
+  const int m = static_cast<int>(Q.rows());
+  CellWalk w(S, m);
+  w.piece(S, Q.row((j0 + 1) % m).transpose());
+  for (int e = 1; e < m; ++e) {
+    const int i = (j0 + e) % m;
+    w.piece(Q.row(i).transpose(), Q.row((i + 1) % m).transpose());
+  }
+  w.piece(Q.row(j0).transpose(), S);
+  return w;
+}
+
+/// The loop-erased walk: its sites and the key index at which each is entered.
+struct ErasedWalk {
+  std::vector<Site> path;
+  std::vector<int> arrive;
+  int loops_erased = 0;
+};
+
+/// Chronological loop erasure of w_0 .. w_{N-1} (w_N = w_0 closes the polygon).
+ErasedWalk erase_loops(const CellWalk& w, int N) {
+  ErasedWalk out;
+  std::unordered_map<std::uint64_t, int> where;
+  where.reserve(static_cast<size_t>(2 * N));
+  for (int a = 0; a < N; ++a) {
+    const Site& site = w.walk[static_cast<size_t>(a)];
+    const auto it = where.find(site.key());
+    if (it != where.end()) {
+      const int q = it->second;
+      while (static_cast<int>(out.path.size()) > q + 1) {
+        where.erase(out.path.back().key());
+        out.path.pop_back();
+        out.arrive.pop_back();
+      }
+      ++out.loops_erased;
+    } else {
+      where.emplace(site.key(), static_cast<int>(out.path.size()));
+      out.path.push_back(site);
+      out.arrive.push_back(w.arrive[static_cast<size_t>(a)]);
+    }
+  }
+  return out;
+}
+
+/// [lattice units] δ₀: the largest distance of a walk site to the keys of its
+/// stretch, before loop erasure (w_0 also owns the tail from w_N back to S).
+double walk_displacement(const CellWalk& w, int N) {
+  const int K = static_cast<int>(w.keys.size());
+  double d = 0.0;
+  for (int a = 0; a < N; ++a)
+    d = std::max(d, w.range_max(w.walk[static_cast<size_t>(a)], w.arrive[static_cast<size_t>(a)],
+                                w.arrive[static_cast<size_t>(a) + 1]));
+  return std::max(d, w.range_max(w.walk[0], w.arrive[static_cast<size_t>(N)], K - 1));
+}
+
+/// [lattice units] δ after loop erasure. Preimage of path entry q: keys
+/// [arrive_q, arrive_{q+1}]; the last entry's ends where the walk returns to
+/// w_0, and w_0 also owns the tail up to S.
+double erased_displacement(const CellWalk& w, const ErasedWalk& e, int N) {
+  const int K = static_cast<int>(w.keys.size());
+  const int M = static_cast<int>(e.path.size());
+  double d = 0.0;
+  for (int q = 0; q < M; ++q) {
+    const int to = q + 1 < M ? e.arrive[static_cast<size_t>(q) + 1] : w.arrive[static_cast<size_t>(N)];
+    d = std::max(d, w.range_max(e.path[static_cast<size_t>(q)], e.arrive[static_cast<size_t>(q)], to));
+  }
+  return std::max(d, w.range_max(e.path[0], w.arrive[static_cast<size_t>(N)], K - 1));
+}
+
 }  // namespace
 
 int monotone_window(const Points& P, int max_window, double min_direction_cosine) {
@@ -143,121 +277,39 @@ RoundingResult lattice_walk_of(const Points& P, double scale, const Mat3& rotati
   require(m >= 4, "lattice walk: need at least 4 vertices");
   require(std::isfinite(scale) && scale > 0.0, "lattice walk: the scale must be positive");
   const Points Q = rotated(P, rotation) * scale;
-  int j0 = 0;
-  double lmax = -1.0;
-  for (int i = 0; i < m; ++i) {
-    const double l = (Q.row((i + 1) % m) - Q.row(i)).norm();
-    if (l > lmax) lmax = l, j0 = i;
-  }
+  const int j0 = longest_edge(Q);
   const Vec3 S = 0.5 * (Q.row(j0) + Q.row((j0 + 1) % m)).transpose();
-
-  // Cell walk: key points (crossings and polygon vertices) in curve order,
-  // walk sites with the key index at which they are entered.
-  std::vector<Vec3> keys;
-  std::vector<Site> walk;
-  std::vector<int> arrive;
-  keys.reserve(static_cast<size_t>(4 * m));
-  Site cur = round_site(S);
-  keys.push_back(S);
-  walk.push_back(cur);
-  arrive.push_back(0);
-  std::vector<Event> events;
-  auto piece = [&](const Vec3& A, const Vec3& B) {
-    events.clear();
-    for (int k = 0; k < 3; ++k) {
-      const double a = A[k], b = B[k];
-      if (a == b) continue;
-      const long long ca = static_cast<long long>(std::floor(a + 0.5));
-      const long long cb = static_cast<long long>(std::floor(b + 0.5));
-      for (long long c = ca; c < cb; ++c)
-        events.push_back({std::clamp((static_cast<double>(c) + 0.5 - a) / (b - a), 0.0, 1.0), k, +1});
-      for (long long c = ca; c > cb; --c)
-        events.push_back({std::clamp((static_cast<double>(c) - 0.5 - a) / (b - a), 0.0, 1.0), k, -1});
-    }
-    std::sort(events.begin(), events.end(),
-              [](const Event& x, const Event& y) { return x.tau < y.tau || (x.tau == y.tau && x.axis < y.axis); });
-    for (const Event& ev : events) {
-      keys.push_back(A + ev.tau * (B - A));
-      cur.p[ev.axis] += ev.dir;
-      walk.push_back(cur);
-      arrive.push_back(static_cast<int>(keys.size()) - 1);
-    }
-    keys.push_back(B);
-  };
-  piece(S, Q.row((j0 + 1) % m).transpose());
-  for (int e = 1; e < m; ++e) {
-    const int i = (j0 + e) % m;
-    piece(Q.row(i).transpose(), Q.row((i + 1) % m).transpose());
-  }
-  piece(Q.row(j0).transpose(), S);
-  const int N = static_cast<int>(walk.size()) - 1;  // w_N = w_0
-  const int K = static_cast<int>(keys.size());
-  if (walk[static_cast<size_t>(N)].key() != walk[0].key())
+  const CellWalk w = cell_walk(Q, j0, S);
+  const int N = static_cast<int>(w.walk.size()) - 1;  // w_N = w_0
+  const int K = static_cast<int>(w.keys.size());
+  if (w.walk[static_cast<size_t>(N)].key() != w.walk[0].key())
     throw std::logic_error("lattice walk: the cell walk does not close");
 
-  auto range_max = [&](const Site& s, int from, int to) {
-    double d = 0.0;
-    for (int q = from; q <= to; ++q) d = std::max(d, s.distance_to(keys[static_cast<size_t>(q)]));
-    return d;
-  };
   RoundingResult res;
   res.scale = scale;
   res.rotation = rotation;
   res.walk_length = N;
-  for (int a = 0; a < N; ++a)
-    res.walk_displacement = std::max(
-        res.walk_displacement,
-        range_max(walk[static_cast<size_t>(a)], arrive[static_cast<size_t>(a)], arrive[static_cast<size_t>(a) + 1]));
-  res.walk_displacement = std::max(res.walk_displacement, range_max(walk[0], arrive[static_cast<size_t>(N)], K - 1));
-
+  res.walk_displacement = walk_displacement(w, N);
   res.max_turning_angle = turning_angles(P).maxCoeff();
   if (N < 4) {  // the whole curve within a few cells: every point goes to w_0
     res.defect = "the cell walk has only " + std::to_string(N) + " steps";
-    res.displacement = range_max(walk[0], 0, K - 1);
+    res.displacement = w.range_max(w.walk[0], 0, K - 1);
     res.points.resize(1, 3);
-    for (int k = 0; k < 3; ++k) res.points(0, k) = walk[0].p[k];
+    for (int k = 0; k < 3; ++k) res.points(0, k) = w.walk[0].p[k];
     return res;
   }
 
-  // Chronological loop erasure of w_0 .. w_{N-1} (w_N = w_0 closes the polygon).
-  std::vector<Site> path;
-  std::vector<int> path_arrive;
-  std::unordered_map<std::uint64_t, int> where;
-  where.reserve(static_cast<size_t>(2 * N));
-  for (int a = 0; a < N; ++a) {
-    const Site& w = walk[static_cast<size_t>(a)];
-    const auto it = where.find(w.key());
-    if (it != where.end()) {
-      const int q = it->second;
-      while (static_cast<int>(path.size()) > q + 1) {
-        where.erase(path.back().key());
-        path.pop_back();
-        path_arrive.pop_back();
-      }
-      ++res.loops_erased;
-    } else {
-      where.emplace(w.key(), static_cast<int>(path.size()));
-      path.push_back(w);
-      path_arrive.push_back(arrive[static_cast<size_t>(a)]);
-    }
-  }
-  const int M = static_cast<int>(path.size());
+  const ErasedWalk e = erase_loops(w, N);
+  res.loops_erased = e.loops_erased;
+  const int M = static_cast<int>(e.path.size());
   if (M >= kMaxLatticeLength)
     throw InputError("lattice rounding: the lattice polygon would have " + std::to_string(M) +
                      " vertices, more than the limit " + std::to_string(kMaxLatticeLength) +
                      "; the curve's clearance is too small for its length");
-  // Preimage of path entry q: keys [arrive_q, arrive_{q+1}]; the last entry's
-  // ends where the walk returns to w_0, and w_0 also owns the tail up to S.
-  for (int q = 0; q < M; ++q) {
-    const int to = q + 1 < M ? path_arrive[static_cast<size_t>(q) + 1] : arrive[static_cast<size_t>(N)];
-    res.displacement =
-        std::max(res.displacement, range_max(path[static_cast<size_t>(q)], path_arrive[static_cast<size_t>(q)], to));
-  }
-  res.displacement = std::max(res.displacement, range_max(path[0], arrive[static_cast<size_t>(N)], K - 1));
-
+  res.displacement = erased_displacement(w, e, N);
   res.points.resize(M, 3);
   for (int q = 0; q < M; ++q)
-    for (int k = 0; k < 3; ++k) res.points(q, k) = path[static_cast<size_t>(q)].p[k];
+    for (int k = 0; k < 3; ++k) res.points(q, k) = e.path[static_cast<size_t>(q)].p[k];
   const LatticePolygonCheck check = check_lattice_polygon(res.points);
   if (!check.ok) res.defect = "loop erasure left a defect: " + check.problem;
   return res;
