@@ -26,56 +26,150 @@ struct Projection {
 
 inline double cross2(double ax, double ay, double bx, double by) { return ax * by - ay * bx; }
 
+/// The curve in the right-handed frame (u, v, d) of the view direction d:
+/// plane coordinates (X, Y) and height H along d, per vertex.
+struct ViewCoordinates {
+  int n = 0;
+  std::vector<double> X, Y, H;
+  int next(int i) const { return (i + 1) % n; }
+  /// Length of the projected edge i.
+  double edge_length(int i) const {
+    return std::hypot(X[static_cast<size_t>(next(i))] - X[static_cast<size_t>(i)],
+                      Y[static_cast<size_t>(next(i))] - Y[static_cast<size_t>(i)]);
+  }
+};
+
+ViewCoordinates view_coordinates(const Points& P, const Vec3& dir) {
+  ViewCoordinates c;
+  c.n = static_cast<int>(P.rows());
+  const Vec3 d = dir.normalized();
+  Vec3 u = (std::fabs(d.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY()).cross(d).normalized();
+  const Vec3 v = d.cross(u);
+  u = v.cross(d);  // right-handed (u, v, d): u × v = d
+  c.X.resize(static_cast<size_t>(c.n));
+  c.Y.resize(static_cast<size_t>(c.n));
+  c.H.resize(static_cast<size_t>(c.n));
+  for (int i = 0; i < c.n; ++i) {
+    const Vec3 p = P.row(i).transpose();
+    c.X[static_cast<size_t>(i)] = p.dot(u);
+    c.Y[static_cast<size_t>(i)] = p.dot(v);
+    c.H[static_cast<size_t>(i)] = p.dot(d);
+  }
+  return c;
+}
+
+/// Projected edges must not vanish (length eps), and adjacent edges must not
+/// fold back (sine of their angle below tol).
+bool edges_generic(const ViewCoordinates& c, double eps, double tol) {
+  const std::vector<double>& X = c.X;
+  const std::vector<double>& Y = c.Y;
+  for (int i = 0; i < c.n; ++i) {
+    const double ex = X[static_cast<size_t>(c.next(i))] - X[static_cast<size_t>(i)];
+    const double ey = Y[static_cast<size_t>(c.next(i))] - Y[static_cast<size_t>(i)];
+    const double len = std::hypot(ex, ey);
+    if (len < eps) return false;
+    const int j = c.next(i);
+    const double fx = X[static_cast<size_t>(c.next(j))] - X[static_cast<size_t>(j)];
+    const double fy = Y[static_cast<size_t>(c.next(j))] - Y[static_cast<size_t>(j)];
+    const double flen = std::hypot(fx, fy);
+    if (std::fabs(cross2(ex, ey, fx, fy)) < tol * len * flen && ex * fx + ey * fy < 0.0) return false;
+  }
+  return true;
+}
+
+struct Box {
+  double x0, x1, y0, y1;
+};
+
+/// The projected edges' boxes, inflated by eps.
+std::vector<Box> edge_boxes(const ViewCoordinates& c, double eps) {
+  const std::vector<double>& X = c.X;
+  const std::vector<double>& Y = c.Y;
+  std::vector<Box> box(static_cast<size_t>(c.n));
+  for (int i = 0; i < c.n; ++i) {
+    const size_t a = static_cast<size_t>(i), b = static_cast<size_t>(c.next(i));
+    box[a] = {std::min(X[a], X[b]) - eps, std::max(X[a], X[b]) + eps, std::min(Y[a], Y[b]) - eps,
+              std::max(Y[a], Y[b]) + eps};
+  }
+  return box;
+}
+
+enum class PairTest { Apart, Crossing, Degenerate };
+
+/// Whether the projected edges a < b (not adjacent) cross; a crossing is
+/// written to `out` (with its sign unless count_only). Degenerate: an endpoint
+/// within eps of the other line near the other segment, nearly parallel
+/// edges, or heights within eps at the crossing.
+PairTest test_pair(const ViewCoordinates& c, int a, int b, double eps, double tol, bool count_only, Crossing& out) {
+  const std::vector<double>& X = c.X;
+  const std::vector<double>& Y = c.Y;
+  const std::vector<double>& H = c.H;
+  const size_t a0 = static_cast<size_t>(a), a1 = static_cast<size_t>(c.next(a));
+  const size_t b0 = static_cast<size_t>(b), b1 = static_cast<size_t>(c.next(b));
+  const double ax = X[a1] - X[a0], ay = Y[a1] - Y[a0];
+  const double bx = X[b1] - X[b0], by = Y[b1] - Y[b0];
+  const double la = std::hypot(ax, ay), lb = std::hypot(bx, by);
+  // signed distances of b's endpoints to line a and of a's endpoints to line b
+  const double o1 = cross2(ax, ay, X[b0] - X[a0], Y[b0] - Y[a0]) / la;
+  const double o2 = cross2(ax, ay, X[b1] - X[a0], Y[b1] - Y[a0]) / la;
+  const double o3 = cross2(bx, by, X[a0] - X[b0], Y[a0] - Y[b0]) / lb;
+  const double o4 = cross2(bx, by, X[a1] - X[b0], Y[a1] - Y[b0]) / lb;
+  const bool straddle_a = (o1 > 0) != (o2 > 0);
+  const bool straddle_b = (o3 > 0) != (o4 > 0);
+  // An endpoint within eps of the other line, near the other segment,
+  // makes the crossing ambiguous.
+  const bool near = std::fabs(o1) < eps || std::fabs(o2) < eps || std::fabs(o3) < eps || std::fabs(o4) < eps;
+  if (near && (straddle_a || straddle_b)) return PairTest::Degenerate;
+  if (!(straddle_a && straddle_b)) return PairTest::Apart;
+  const double s = o3 / (o3 - o4);
+  const double t = o1 / (o1 - o2);
+  if (std::fabs(cross2(ax, ay, bx, by)) < tol * la * lb) return PairTest::Degenerate;
+  const double ha = H[a0] + s * (H[a1] - H[a0]);
+  const double hb = H[b0] + t * (H[b1] - H[b0]);
+  if (std::fabs(ha - hb) < eps) return PairTest::Degenerate;
+  out = Crossing{a, b, s, t, ha > hb, 0};
+  if (!count_only) {
+    // sign = sign of (over × under) · d in the right-handed (u, v, d) frame
+    const double cr = out.a_over ? cross2(ax, ay, bx, by) : cross2(bx, by, ax, ay);
+    out.sign = cr > 0 ? 1 : -1;
+  }
+  return PairTest::Crossing;
+}
+
+/// Two crossings at the same place of one edge (a triple point) are not
+/// generic: false when two are within eps of each other along an edge.
+bool crossings_apart(const ViewCoordinates& vc, const std::vector<Crossing>& crossings, double eps) {
+  std::vector<std::pair<int, double>> at;  // (edge, arc position along it)
+  for (const auto& c : crossings) {
+    const auto la = vc.edge_length(c.seg_a);
+    const auto lb = vc.edge_length(c.seg_b);
+    at.emplace_back(c.seg_a, c.s * la);
+    at.emplace_back(c.seg_b, c.t * lb);
+  }
+  std::sort(at.begin(), at.end());
+  for (size_t k = 1; k < at.size(); ++k)
+    if (at[k].first == at[k - 1].first && at[k].second - at[k - 1].second < eps) return false;
+  return true;
+}
+
 /// Projects P along d and finds all crossings; `generic` is false when the
 /// projection is degenerate within tol (relative to the curve's size).
 Projection project(const Points& P, const Vec3& dir, double tol, bool count_only) {
   Projection out;
   const int n = static_cast<int>(P.rows());
-  const Vec3 d = dir.normalized();
-  Vec3 u = (std::fabs(d.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY()).cross(d).normalized();
-  const Vec3 v = d.cross(u);
-  u = v.cross(d);  // right-handed (u, v, d): u × v = d
-  std::vector<double> X(static_cast<size_t>(n)), Y(static_cast<size_t>(n)), H(static_cast<size_t>(n));
-  for (int i = 0; i < n; ++i) {
-    const Vec3 p = P.row(i).transpose();
-    X[static_cast<size_t>(i)] = p.dot(u);
-    Y[static_cast<size_t>(i)] = p.dot(v);
-    H[static_cast<size_t>(i)] = p.dot(d);
-  }
+  const ViewCoordinates c = view_coordinates(P, dir);
   const double scale = (P.colwise().maxCoeff() - P.colwise().minCoeff()).norm();
   const double eps = tol * scale;
-  auto nx = [n](int i) { return (i + 1) % n; };
-  // Projected edges must not vanish, and adjacent edges must not fold back.
-  for (int i = 0; i < n; ++i) {
-    const double ex = X[static_cast<size_t>(nx(i))] - X[static_cast<size_t>(i)];
-    const double ey = Y[static_cast<size_t>(nx(i))] - Y[static_cast<size_t>(i)];
-    const double len = std::hypot(ex, ey);
-    if (len < eps) {
-      out.generic = false;
-      return out;
-    }
-    const int j = nx(i);
-    const double fx = X[static_cast<size_t>(nx(j))] - X[static_cast<size_t>(j)];
-    const double fy = Y[static_cast<size_t>(nx(j))] - Y[static_cast<size_t>(j)];
-    const double flen = std::hypot(fx, fy);
-    if (std::fabs(cross2(ex, ey, fx, fy)) < tol * len * flen && ex * fx + ey * fy < 0.0) {
-      out.generic = false;
-      return out;
-    }
+  if (!edges_generic(c, eps, tol)) {
+    out.generic = false;
+    return out;
   }
-  struct Box {
-    double x0, x1, y0, y1;
-  };
-  std::vector<Box> box(static_cast<size_t>(n));
-  for (int i = 0; i < n; ++i) {
-    const size_t a = static_cast<size_t>(i), b = static_cast<size_t>(nx(i));
-    box[a] = {std::min(X[a], X[b]) - eps, std::max(X[a], X[b]) + eps, std::min(Y[a], Y[b]) - eps,
-              std::max(Y[a], Y[b]) + eps};
-  }
+  const std::vector<Box> box = edge_boxes(c, eps);
   std::vector<int> order(static_cast<size_t>(n));
   std::iota(order.begin(), order.end(), 0);
   std::sort(order.begin(), order.end(),
             [&](int a, int b) { return box[static_cast<size_t>(a)].x0 < box[static_cast<size_t>(b)].x0; });
+  // sweep along x over the boxes' overlaps
   for (int oi = 0; oi < n; ++oi) {
     const int i = order[static_cast<size_t>(oi)];
     const Box& bi = box[static_cast<size_t>(i)];
@@ -84,67 +178,17 @@ Projection project(const Points& P, const Vec3& dir, double tol, bool count_only
       const Box& bj = box[static_cast<size_t>(j)];
       if (bj.x0 > bi.x1) break;
       if (bj.y0 > bi.y1 || bi.y0 > bj.y1) continue;
-      if (j == nx(i) || i == nx(j)) continue;  // adjacent edges meet only at their shared vertex
-      const int a = std::min(i, j), b = std::max(i, j);
-      const size_t a0 = static_cast<size_t>(a), a1 = static_cast<size_t>(nx(a));
-      const size_t b0 = static_cast<size_t>(b), b1 = static_cast<size_t>(nx(b));
-      const double ax = X[a1] - X[a0], ay = Y[a1] - Y[a0];
-      const double bx = X[b1] - X[b0], by = Y[b1] - Y[b0];
-      const double la = std::hypot(ax, ay), lb = std::hypot(bx, by);
-      // signed distances of b's endpoints to line a and of a's endpoints to line b
-      const double o1 = cross2(ax, ay, X[b0] - X[a0], Y[b0] - Y[a0]) / la;
-      const double o2 = cross2(ax, ay, X[b1] - X[a0], Y[b1] - Y[a0]) / la;
-      const double o3 = cross2(bx, by, X[a0] - X[b0], Y[a0] - Y[b0]) / lb;
-      const double o4 = cross2(bx, by, X[a1] - X[b0], Y[a1] - Y[b0]) / lb;
-      const bool straddle_a = (o1 > 0) != (o2 > 0);
-      const bool straddle_b = (o3 > 0) != (o4 > 0);
-      // An endpoint within eps of the other line, near the other segment,
-      // makes the crossing ambiguous.
-      const bool near = std::fabs(o1) < eps || std::fabs(o2) < eps || std::fabs(o3) < eps || std::fabs(o4) < eps;
-      if (near && (straddle_a || straddle_b)) {
+      if (j == c.next(i) || i == c.next(j)) continue;  // adjacent edges meet only at their shared vertex
+      Crossing x{};
+      const PairTest t = test_pair(c, std::min(i, j), std::max(i, j), eps, tol, count_only, x);
+      if (t == PairTest::Degenerate) {
         out.generic = false;
         return out;
       }
-      if (!(straddle_a && straddle_b)) continue;
-      const double s = o3 / (o3 - o4);
-      const double t = o1 / (o1 - o2);
-      if (std::fabs(cross2(ax, ay, bx, by)) < tol * la * lb) {
-        out.generic = false;
-        return out;
-      }
-      const double ha = H[a0] + s * (H[a1] - H[a0]);
-      const double hb = H[b0] + t * (H[b1] - H[b0]);
-      if (std::fabs(ha - hb) < eps) {
-        out.generic = false;
-        return out;
-      }
-      Crossing c{a, b, s, t, ha > hb, 0};
-      if (!count_only) {
-        // sign = sign of (over × under) · d in the right-handed (u, v, d) frame
-        const double cr = c.a_over ? cross2(ax, ay, bx, by) : cross2(bx, by, ax, ay);
-        c.sign = cr > 0 ? 1 : -1;
-      }
-      out.crossings.push_back(c);
+      if (t == PairTest::Crossing) out.crossings.push_back(x);
     }
   }
-  if (!count_only) {
-    // Two crossings at the same place of one edge (a triple point) are not generic.
-    std::vector<std::pair<int, double>> at;  // (edge, arc position along it)
-    for (const auto& c : out.crossings) {
-      const auto la = std::hypot(X[static_cast<size_t>(nx(c.seg_a))] - X[static_cast<size_t>(c.seg_a)],
-                                 Y[static_cast<size_t>(nx(c.seg_a))] - Y[static_cast<size_t>(c.seg_a)]);
-      const auto lb = std::hypot(X[static_cast<size_t>(nx(c.seg_b))] - X[static_cast<size_t>(c.seg_b)],
-                                 Y[static_cast<size_t>(nx(c.seg_b))] - Y[static_cast<size_t>(c.seg_b)]);
-      at.emplace_back(c.seg_a, c.s * la);
-      at.emplace_back(c.seg_b, c.t * lb);
-    }
-    std::sort(at.begin(), at.end());
-    for (size_t k = 1; k < at.size(); ++k)
-      if (at[k].first == at[k - 1].first && at[k].second - at[k - 1].second < eps) {
-        out.generic = false;
-        return out;
-      }
-  }
+  if (!count_only && !crossings_apart(c, out.crossings, eps)) out.generic = false;
   return out;
 }
 
