@@ -34,115 +34,158 @@ std::string numbered(const std::string& dir, const std::string& stem, int k, con
   return (std::filesystem::path(dir) / (stem + buf + ext)).string();
 }
 
-}  // namespace
-
-int cmd_sample(int argc, char** argv) {
+/// The command line of `knots sample`.
+struct SampleArgs {
   std::string input, dir, format = "obj";
   int count = 1;
   long long seed = 1;
   bool json = false, overwrite = false;
   SampleOptions opt;
+};
+
+/// Parses and checks the command line; false when it asked for help.
+bool parse_sample_args(int argc, char** argv, SampleArgs& a) {
+  SampleOptions& opt = a.opt;
   ArgParser args("sample",
                  "NAME|FILE --count K [-n N] [--seed S] -o DIR [--decorrelation STEPS] [--format obj|txt] "
                  "[--overwrite] [--json]");
-  args.positional("NAME|FILE", &input,
+  args.positional("NAME|FILE", &a.input,
                   "knot name as in the table, or a closed curve file (.obj or .txt) to start from");
-  args.option("--count", &count, "number of samples K (default 1), one continuing BFACF walk");
+  args.option("--count", &a.count, "number of samples K (default 1), one continuing BFACF walk");
   args.option("-n,--vertices", &opt.vertices, "vertices of every sample, even (default 400)");
-  args.option("--seed", &seed, "seed of the walk's random numbers, >= 0 (default 1)");
-  args.option("-o,--output", &dir, "output folder (created if missing); files <name>-0000.<ext>, ...");
+  args.option("--seed", &a.seed, "seed of the walk's random numbers, >= 0 (default 1)");
+  args.option("-o,--output", &a.dir, "output folder (created if missing); files <name>-0000.<ext>, ...");
   args.option("--decorrelation", &opt.decorrelation_moves,
               "extra attempted BFACF moves at the peak length between samples (default 0)");
   args.option("--grow-fugacity", &opt.grow_fugacity, "fugacity of the growth phase, > 0.2135 (default 0.4)");
   args.option("--shrink-fugacity", &opt.shrink_fugacity, "fugacity of the shrink phase, < 0.2135 (default 0.1)");
   args.option("--growth-factor", &opt.growth_factor, "the growth phase ends at this multiple of n (default 10)");
-  args.option("--format", &format, "obj (default) or txt");
-  args.flag("--overwrite", &overwrite, "replace existing output files (otherwise they are an error)");
-  args.flag("--json", &json, "print a JSON summary");
-  if (!args.parse(argc, argv)) return 0;
-  if (dir.empty()) throw InputError("missing -o DIR");
-  if (format != "obj" && format != "txt") throw InputError("--format: expected obj or txt, got '" + format + "'");
-  if (count < 1) throw InputError("--count: need at least 1 sample, got " + std::to_string(count));
-  if (count > 9999) throw InputError("--count: at most 9999 samples per run, got " + std::to_string(count));
-  if (seed < 0) throw InputError("--seed: must be >= 0");
-  opt.count = count;
-  opt.seed = static_cast<std::uint64_t>(seed);
+  args.option("--format", &a.format, "obj (default) or txt");
+  args.flag("--overwrite", &a.overwrite, "replace existing output files (otherwise they are an error)");
+  args.flag("--json", &a.json, "print a JSON summary");
+  if (!args.parse(argc, argv)) return false;
+  if (a.dir.empty()) throw InputError("missing -o DIR");
+  if (a.format != "obj" && a.format != "txt") throw InputError("--format: expected obj or txt, got '" + a.format + "'");
+  if (a.count < 1) throw InputError("--count: need at least 1 sample, got " + std::to_string(a.count));
+  if (a.count > 9999) throw InputError("--count: at most 9999 samples per run, got " + std::to_string(a.count));
+  if (a.seed < 0) throw InputError("--seed: must be >= 0");
+  opt.count = a.count;
+  opt.seed = static_cast<std::uint64_t>(a.seed);
+  return true;
+}
 
-  // The start: a table knot or a curve file.
-  const bool from_file = ends_with(input, ".obj") || ends_with(input, ".txt");
-  std::string name, start_method;
-  LatticePoints start;
-  AlexanderPolynomial expected;
-  std::optional<double> scale;
+/// What the walk starts from: a table knot or a curve file (read here, so
+/// that a bad input fails before anything is written).
+struct SampleSource {
+  bool from_file = false;
+  std::string name;  // names the outputs
   const KnotRecord* knot = nullptr;
   Points curve;
-  if (from_file) {
-    name = std::filesystem::path(input).stem().string();
-    if (name.empty()) throw InputError("cannot name the outputs after '" + input + "'");
-    curve = read_curve(input);
-  } else {
-    knot = &KnotTable::global().at(input);
-    name = knot->name;
-  }
+};
 
-  // Outputs: checked before the (possibly long) run.
+SampleSource open_source(const std::string& input) {
+  SampleSource src;
+  src.from_file = ends_with(input, ".obj") || ends_with(input, ".txt");
+  if (src.from_file) {
+    src.name = std::filesystem::path(input).stem().string();
+    if (src.name.empty()) throw InputError("cannot name the outputs after '" + input + "'");
+    src.curve = read_curve(input);
+  } else {
+    src.knot = &KnotTable::global().at(input);
+    src.name = src.knot->name;
+  }
+  return src;
+}
+
+/// The output files DIR/<name>-0000.<ext>, ...: the folder is created, and
+/// the files checked before the (possibly long) run.
+std::vector<std::string> output_files(const SampleArgs& a, const std::string& name) {
   std::error_code ec;
-  std::filesystem::create_directories(dir, ec);
-  if (ec || !std::filesystem::is_directory(dir))
-    throw InputError("cannot create the output folder '" + dir + "'" + (ec ? ": " + ec.message() : ""));
+  std::filesystem::create_directories(a.dir, ec);
+  if (ec || !std::filesystem::is_directory(a.dir))
+    throw InputError("cannot create the output folder '" + a.dir + "'" + (ec ? ": " + ec.message() : ""));
   std::vector<std::string> files;
-  for (int k = 0; k < count; ++k) {
-    files.push_back(numbered(dir, name, k, format));
-    if (!overwrite && std::filesystem::exists(files.back()))
+  for (int k = 0; k < a.count; ++k) {
+    files.push_back(numbered(a.dir, name, k, a.format));
+    if (!a.overwrite && std::filesystem::exists(files.back()))
       throw InputError("output file " + files.back() + " exists (use --overwrite to replace it)");
     check_writable(files.back());
   }
+  return files;
+}
 
-  if (from_file) {
-    expected = alexander(curve);
-    if (as_lattice_polygon(curve, &start)) {
-      start_method = "lattice";
+/// The lattice polygon the walk starts from, and how it was made.
+struct SampleStart {
+  std::string method;  // "lattice", "rounded", or lattice_start()'s method
+  LatticePoints points;
+  AlexanderPolynomial expected;
+  std::optional<double> scale;  // rounding scale, when the start was rounded
+};
+
+/// A curve file is used as it is when it is a lattice polygon and rounded
+/// otherwise; a table knot starts from lattice_start().
+SampleStart sample_start(const SampleSource& src) {
+  SampleStart st;
+  if (src.from_file) {
+    st.expected = alexander(src.curve);
+    if (as_lattice_polygon(src.curve, &st.points)) {
+      st.method = "lattice";
     } else {
-      const RoundingResult r = round_to_lattice(curve, {}, expected);
-      start = r.points;
-      start_method = "rounded";
-      scale = r.scale;
+      const RoundingResult r = round_to_lattice(src.curve, {}, st.expected);
+      st.points = r.points;
+      st.method = "rounded";
+      st.scale = r.scale;
     }
   } else {
-    const LatticeStart s = lattice_start(*knot);
-    start = s.points;
-    start_method = s.method;
-    expected = s.alexander;
-    if (s.method != "square") scale = s.rounding.scale;
+    const LatticeStart s = lattice_start(*src.knot);
+    st.points = s.points;
+    st.method = s.method;
+    st.expected = s.alexander;
+    if (s.method != "square") st.scale = s.rounding.scale;
   }
-  const SampleBatch batch = sample_lattice_polygons(start, opt, expected, name);
-  for (int k = 0; k < count; ++k)
-    write_curve(files[static_cast<size_t>(k)], to_points(batch.samples[static_cast<size_t>(k)]));
+  return st;
+}
 
+void print_summary(const SampleArgs& a, const SampleSource& src, const SampleStart& st, const SampleBatch& batch,
+                   const std::vector<std::string>& files) {
   long long moves = 0;
   for (const SampleReport& r : batch.reports) moves += r.decorrelation.attempts + r.grow.attempts + r.shrink.attempts;
-  if (json) {
+  if (a.json) {
     Json j;
-    j["name"] = name;
-    j["input"] = from_file ? Json(input) : Json(nullptr);
-    j["start"] = start_method;
-    j["start_vertices"] = start.rows();
-    j["rounding_scale"] = scale ? number(*scale) : Json(nullptr);
-    j["vertices"] = opt.vertices;
-    j["count"] = count;
-    j["seed"] = seed;
-    j["decorrelation"] = opt.decorrelation_moves;
-    j["alexander"] = expected.coefficients;
+    j["name"] = src.name;
+    j["input"] = src.from_file ? Json(a.input) : Json(nullptr);
+    j["start"] = st.method;
+    j["start_vertices"] = st.points.rows();
+    j["rounding_scale"] = st.scale ? number(*st.scale) : Json(nullptr);
+    j["vertices"] = a.opt.vertices;
+    j["count"] = a.count;
+    j["seed"] = a.seed;
+    j["decorrelation"] = a.opt.decorrelation_moves;
+    j["alexander"] = st.expected.coefficients;
     j["attempted_moves"] = moves;
     j["files"] = files;
     print_json(j);
   } else {
-    std::cout << "wrote " << count << " sample" << (count > 1 ? "s" : "") << " of " << name << " (" << opt.vertices
-              << " vertices, Alexander " << expected.to_string() << ") from a " << start.rows() << "-vertex "
-              << start_method << " lattice polygon: " << files.front();
-    if (count > 1) std::cout << " ... " << files.back();
+    std::cout << "wrote " << a.count << " sample" << (a.count > 1 ? "s" : "") << " of " << src.name << " ("
+              << a.opt.vertices << " vertices, Alexander " << st.expected.to_string() << ") from a "
+              << st.points.rows() << "-vertex " << st.method << " lattice polygon: " << files.front();
+    if (a.count > 1) std::cout << " ... " << files.back();
     std::cout << "\n";
   }
+}
+
+}  // namespace
+
+int cmd_sample(int argc, char** argv) {
+  SampleArgs a;
+  if (!parse_sample_args(argc, argv, a)) return 0;
+  const SampleSource src = open_source(a.input);
+  const std::vector<std::string> files = output_files(a, src.name);
+  const SampleStart st = sample_start(src);
+  const SampleBatch batch = sample_lattice_polygons(st.points, a.opt, st.expected, src.name);
+  for (int k = 0; k < a.count; ++k)
+    write_curve(files[static_cast<size_t>(k)], to_points(batch.samples[static_cast<size_t>(k)]));
+  print_summary(a, src, st, batch, files);
   return 0;
 }
 
