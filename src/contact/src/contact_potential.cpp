@@ -22,6 +22,16 @@ inline std::uint64_t mix(std::uint64_t h, std::uint64_t v) {
 
 inline Vec3 row(const Points& x, int i) { return x.row(i).transpose(); }
 
+// Whether the boxes of segments [a0, a1] and [b0, b1] of x, inflated by r, overlap.
+inline bool boxes_overlap(const Points& x, int a0, int a1, int b0, int b1, double r) {
+  const double *pa0 = x.data() + 3 * a0, *pa1 = x.data() + 3 * a1, *pb0 = x.data() + 3 * b0, *pb1 = x.data() + 3 * b1;
+  bool overlap = true;
+  for (int k = 0; k < 3 && overlap; ++k)
+    overlap = std::min(pa0[k], pa1[k]) - r <= std::max(pb0[k], pb1[k]) + r &&
+              std::min(pb0[k], pb1[k]) - r <= std::max(pa0[k], pa1[k]) + r;
+  return overlap;
+}
+
 }  // namespace
 
 void ContactOptions::validate() const {
@@ -52,6 +62,18 @@ void ContactPotential::update(const Points& x) {
   if (x.rows() != n_)  // (checks in hot paths build their message only on failure)
     require(false, "ContactPotential::update: expected " + std::to_string(n_) + " points, got " +
                        std::to_string(x.rows()));
+  narrow_phase(x, candidate_pairs(x));
+  // The Hessian's pattern: the active set itself (margin 0), or the pairs
+  // within d̂ + margin at the last rebuild, rebuilt when an active pair is
+  // not among them. active_slot_[k]: index of active pair k in pattern_.
+  active_slot_.resize(active_.size());
+  if (!(options_.hessian_margin > 0.0 && have_pattern_ && pattern_covers_active())) rebuild_pattern();
+  // The Hessian plan is built by add_hessian() when the pattern has changed:
+  // the line search calls update() at every trial, and most trials' active
+  // sets are never assembled.
+}
+
+const std::vector<EdgePair>& ContactPotential::candidate_pairs(const Points& x) {
   const double dhat = options_.dhat;
   const double skin = options_.broad_phase_skin;
   // Reuse the pairs of the last broad phase while no vertex has moved skin/2,
@@ -62,18 +84,9 @@ void ContactPotential::update(const Points& x) {
   if (reuse)
     for (int i = 0; i < n_ && reuse; ++i) reuse = (x.row(i) - x_ref_.row(i)).squaredNorm() < limit;
   const std::vector<EdgePair>* list = &verlet_;
-  if (!reuse && path_valid_ && skin > 0.0) {
-    bool on_path = true;
-    for (int i = 0; i < n_ && on_path; ++i) {
-      const Vec3 p = (x.row(i) - path_x_.row(i)).transpose(), u = path_dx_.row(i).transpose();
-      const double uu = u.squaredNorm();
-      const double s = uu > 0.0 ? std::clamp(p.dot(u) / uu, 0.0, 1.0) : 0.0;
-      on_path = (p - s * u).squaredNorm() < limit;
-    }
-    if (on_path) {
-      list = &path_pairs_;
-      reuse = true;
-    }
+  if (!reuse && path_valid_ && skin > 0.0 && on_path(x, limit)) {
+    list = &path_pairs_;
+    reuse = true;
   }
   if (!reuse) {
     // pairs within d̂ + hessian_margin now, and (with the skin) until a vertex has moved skin/2
@@ -82,6 +95,23 @@ void ContactPotential::update(const Points& x) {
     verlet_valid_ = skin > 0.0;
     ++broad_phase_runs_;
   }
+  return *list;
+}
+
+bool ContactPotential::on_path(const Points& x, double limit) const {
+  bool inside = true;
+  for (int i = 0; i < n_ && inside; ++i) {
+    const Vec3 p = (x.row(i) - path_x_.row(i)).transpose(), u = path_dx_.row(i).transpose();
+    const double uu = u.squaredNorm();
+    const double s = uu > 0.0 ? std::clamp(p.dot(u) / uu, 0.0, 1.0) : 0.0;
+    inside = (p - s * u).squaredNorm() < limit;
+  }
+  return inside;
+}
+
+void ContactPotential::narrow_phase(const Points& x, const std::vector<EdgePair>& list) {
+  const double dhat = options_.dhat;
+  const double skin = options_.broad_phase_skin;
   const double margin = options_.hessian_margin;
   active_.clear();
   near_.clear();
@@ -89,17 +119,10 @@ void ContactPotential::update(const Points& x) {
   double min_d2 = std::numeric_limits<double>::infinity();
   const double r = 0.5 * (dhat + margin);
   const double near2 = (dhat + margin) * (dhat + margin);
-  for (const EdgePair& p : *list) {
+  for (const EdgePair& p : list) {
     const int a1 = broad_.edge_end(p.a), b1 = broad_.edge_end(p.b);
-    if (skin > 0.0) {  // the boxes of the current segments, inflated by (d̂ + margin)/2, must overlap
-      const double *pa0 = x.data() + 3 * p.a, *pa1 = x.data() + 3 * a1, *pb0 = x.data() + 3 * p.b,
-                   *pb1 = x.data() + 3 * b1;
-      bool overlap = true;
-      for (int k = 0; k < 3 && overlap; ++k)
-        overlap = std::min(pa0[k], pa1[k]) - r <= std::max(pb0[k], pb1[k]) + r &&
-                  std::min(pb0[k], pb1[k]) - r <= std::max(pa0[k], pa1[k]) + r;
-      if (!overlap) continue;
-    }
+    // the boxes of the current segments, inflated by (d̂ + margin)/2, must overlap
+    if (skin > 0.0 && !boxes_overlap(x, p.a, a1, p.b, b1, r)) continue;
     ++candidates_;
     ContactPair c;
     c.edge_a = p.a;
@@ -118,43 +141,39 @@ void ContactPotential::update(const Points& x) {
     if (margin > 0.0 && cl.distance_squared < near2) near_.push_back(p);
   }
   min_distance_ = std::sqrt(min_d2);
-  // The Hessian's pattern: the active set itself (margin 0), or the pairs
-  // within d̂ + margin at the last rebuild, rebuilt when an active pair is
-  // not among them. active_slot_[k]: index of active pair k in pattern_.
-  active_slot_.resize(active_.size());
-  bool covered = margin > 0.0 && have_pattern_;
-  if (covered) {
-    size_t q = 0;
-    for (size_t k = 0; k < active_.size() && covered; ++k) {
-      const EdgePair e{active_[k].edge_a, active_[k].edge_b};
-      while (q < pattern_.size() && pattern_[q] < e) ++q;
-      covered = q < pattern_.size() && pattern_[q] == e;
-      if (covered) active_slot_[k] = static_cast<int>(q);
-    }
+}
+
+bool ContactPotential::pattern_covers_active() {
+  bool covered = true;
+  size_t q = 0;
+  for (size_t k = 0; k < active_.size() && covered; ++k) {
+    const EdgePair e{active_[k].edge_a, active_[k].edge_b};
+    while (q < pattern_.size() && pattern_[q] < e) ++q;
+    covered = q < pattern_.size() && pattern_[q] == e;
+    if (covered) active_slot_[k] = static_cast<int>(q);
   }
-  if (!covered) {
-    if (margin > 0.0) {
-      pattern_ = near_;
-    } else {
-      pattern_.resize(active_.size());
-      for (size_t k = 0; k < active_.size(); ++k) pattern_[k] = EdgePair{active_[k].edge_a, active_[k].edge_b};
-    }
-    have_pattern_ = true;
-    std::uint64_t h = mix(0x636f6e74616374ull, static_cast<std::uint64_t>(n_));
-    for (const EdgePair& p : pattern_)
-      h = mix(h, (static_cast<std::uint64_t>(static_cast<std::uint32_t>(p.a)) << 32) | static_cast<std::uint32_t>(p.b));
-    structure_ = mix(h, pattern_.size());
-    // every active pair is in the new pattern (in the same sorted order)
-    size_t q = 0;
-    for (size_t k = 0; k < active_.size(); ++k) {
-      const EdgePair e{active_[k].edge_a, active_[k].edge_b};
-      while (pattern_[q] != e) ++q;
-      active_slot_[k] = static_cast<int>(q);
-    }
+  return covered;
+}
+
+void ContactPotential::rebuild_pattern() {
+  if (options_.hessian_margin > 0.0) {
+    pattern_ = near_;
+  } else {
+    pattern_.resize(active_.size());
+    for (size_t k = 0; k < active_.size(); ++k) pattern_[k] = EdgePair{active_[k].edge_a, active_[k].edge_b};
   }
-  // The Hessian plan is built by add_hessian() when the pattern has changed:
-  // the line search calls update() at every trial, and most trials' active
-  // sets are never assembled.
+  have_pattern_ = true;
+  std::uint64_t h = mix(0x636f6e74616374ull, static_cast<std::uint64_t>(n_));
+  for (const EdgePair& p : pattern_)
+    h = mix(h, (static_cast<std::uint64_t>(static_cast<std::uint32_t>(p.a)) << 32) | static_cast<std::uint32_t>(p.b));
+  structure_ = mix(h, pattern_.size());
+  // every active pair is in the new pattern (in the same sorted order)
+  size_t q = 0;
+  for (size_t k = 0; k < active_.size(); ++k) {
+    const EdgePair e{active_[k].edge_a, active_[k].edge_b};
+    while (pattern_[q] != e) ++q;
+    active_slot_[k] = static_cast<int>(q);
+  }
 }
 
 void ContactPotential::build_hessian_plan() const {

@@ -192,6 +192,16 @@ class ContactPotential {
   mutable std::vector<Mat3> block_values_;
   mutable std::uint64_t plan_structure_ = 0;  // structure_ the plan was built for (0: none yet)
   void build_hessian_plan() const;
+  // The steps of update(): the broad phase's pairs (reused while the Verlet
+  // list or the last motion's path still holds them); whether x is within
+  // sqrt(limit) of that path; the active pairs, near_ and min_distance_ from
+  // them; whether pattern_ holds every active pair (sets active_slot_ as far
+  // as it does); the pattern and structure_ rebuilt from the active pairs.
+  const std::vector<EdgePair>& candidate_pairs(const Points& x);
+  bool on_path(const Points& x, double limit) const;
+  void narrow_phase(const Points& x, const std::vector<EdgePair>& list);
+  bool pattern_covers_active();
+  void rebuild_pattern();
   PairBarrierParams pair_params() const { return {options_.dhat, options_.parallel_threshold}; }
 };
 
