@@ -273,118 +273,129 @@ AdaptiveReplay replay_adaptive(const KnotEntry& fixed, const ExploreOptions& opt
   return out;
 }
 
-KnotEntry explore_knot(const KnotRecord& knot, const ExploreOptions& options, const std::string& journal_path,
-                       const RunCallback& on_run) {
-  const ExploreOptions o = options_for_knot(options, knot);
-  o.validate();
+namespace {
+
+// A knot's entry before any run: its name, indices and whether it is adaptive.
+KnotEntry entry_header(const KnotRecord& knot, const ExploreOptions& o) {
   KnotEntry entry;
   entry.name = knot.name;
   entry.crossing_number = knot.crossing_number;
   entry.bridge_index = knot.bridge_index.value_or(-1);
   entry.braid_index = knot.braid_index.value_or(-1);
   entry.adaptive = o.adaptive;
-  const std::uint64_t seed = knot_seed(o.seed, knot.name);
+  return entry;
+}
 
-  std::unique_ptr<Journal> journal;
-  if (!journal_path.empty()) journal = std::make_unique<Journal>(journal_path, options_text(knot.name, o));
-  std::map<int, JournalRun> done = journal ? journal->runs() : std::map<int, JournalRun>{};
+// The BFACF walk of one knot. Sample k continues the walk from sample k - 1
+// with its own seed derived from (knot seed, k): the samples do not depend on
+// how they are batched, so an adaptive run uses exactly the first samples of a
+// fixed-budget run. With a burn-in the walk first makes o.burn_in samples
+// (walk indices 0 .. burn_in - 1) and drops them; sample k is walk sample
+// burn_in + k.
+class SampleWalk {
+ public:
+  SampleWalk(const LatticeStart& start, const ExploreOptions& o, std::uint64_t seed, const std::string& name)
+      : start_(start), o_(o), seed_(seed), name_(name), last_(start.points) {}
 
-  const LatticeStart start = lattice_start(knot, o.start);
-  entry.alexander = start.alexander.coefficients;
-  // Sample k continues the walk from sample k - 1 with its own seed derived
-  // from (knot seed, k): the samples do not depend on how they are batched, so
-  // an adaptive run uses exactly the first samples of a fixed-budget run.
-  // With a burn-in the walk first makes o.burn_in samples (walk indices
-  // 0 .. burn_in - 1) and drops them; sample k is walk sample burn_in + k.
-  std::vector<LatticePoints> samples;
-  LatticePoints last = start.points;
-  int walk_index = 0;
-  auto next_sample = [&]() {
-    SampleOptions so = o.sampling;
-    so.count = 1;
-    so.seed = sample_seed(seed, walk_index++);
-    SampleBatch b = sample_lattice_polygons(last, so, start.alexander, knot.name);
-    last = std::move(b.samples.front());
-  };
-  auto generate = [&](int count) {
-    while (walk_index < o.burn_in) next_sample();
+  // Appends the next `count` samples to samples().
+  void generate(int count) {
+    while (walk_index_ < o_.burn_in) next_sample();
     for (int c = 0; c < count; ++c) {
       next_sample();
-      samples.push_back(last);
-    }
-  };
-
-  std::mutex mutex;
-  auto relax_range = [&](int begin, int end) {
-    std::vector<int> todo;
-    for (int k = begin; k < end; ++k)
-      if (!done.count(k)) todo.push_back(k);
-    std::atomic<size_t> next{0};
-    auto worker = [&]() {
-      for (;;) {
-        const size_t t = next.fetch_add(1);
-        if (t >= todo.size()) return;
-        const int k = todo[t];
-        JournalRun r = run_one(to_points(samples[static_cast<size_t>(k)]), k, sample_seed(seed, o.burn_in + k), o);
-        std::lock_guard<std::mutex> lock(mutex);
-        if (journal) journal->append(r);
-        if (on_run) on_run(r.record);
-        done[k] = std::move(r);
-      }
-    };
-    const int threads = std::min<int>(o.jobs, static_cast<int>(todo.size()));
-    if (threads <= 1) {
-      worker();
-    } else {
-      std::vector<std::thread> pool;
-      for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
-      for (auto& th : pool) th.join();
-    }
-  };
-
-  AdaptiveScorer scorer(o);
-  auto score_batch = [&](int begin, int end) {
-    std::vector<std::pair<const Points*, double>> stable;
-    for (int k = begin; k < end; ++k) {
-      const JournalRun& r = done.at(k);
-      if (r.positions.rows() > 0) stable.emplace_back(&r.positions, r.energy.total);
-    }
-    return scorer.add_batch(stable);
-  };
-
-  int total = o.adaptive ? o.initial_samples : o.samples;
-  generate(total);
-  relax_range(0, total);
-  if (o.adaptive) {
-    entry.score_history.push_back(score_batch(0, total));
-    while (entry.score_history.back() > o.score_threshold && total < o.max_samples) {
-      const int count = std::min(o.batch_samples, o.max_samples - total);
-      generate(count);
-      relax_range(total, total + count);
-      entry.score_history.push_back(score_batch(total, total + count));
-      total += count;
+      samples_.push_back(last_);
     }
   }
-  entry.samples_used = total;
+  const std::vector<LatticePoints>& samples() const { return samples_; }
 
-  // Runs in sample order; stable equilibria with their attributes.
+ private:
+  void next_sample() {
+    SampleOptions so = o_.sampling;
+    so.count = 1;
+    so.seed = sample_seed(seed_, walk_index_++);
+    SampleBatch b = sample_lattice_polygons(last_, so, start_.alexander, name_);
+    last_ = std::move(b.samples.front());
+  }
+
+  const LatticeStart& start_;
+  const ExploreOptions& o_;
+  std::uint64_t seed_;
+  std::string name_;
+  LatticePoints last_;
+  int walk_index_ = 0;
+  std::vector<LatticePoints> samples_;
+};
+
+// The runs of one knot, keyed by sample index: those of the journal, then the
+// new ones, each appended to the journal as it finishes.
+struct KnotRuns {
+  std::map<int, JournalRun> done;
+  Journal* journal = nullptr;
+  const RunCallback* on_run = nullptr;
+  std::mutex mutex;
+};
+
+// Relaxes samples [begin, end) not yet done on o.jobs threads.
+void relax_range(const std::vector<LatticePoints>& samples, int begin, int end, std::uint64_t seed,
+                 const ExploreOptions& o, KnotRuns& runs) {
+  std::vector<int> todo;
+  for (int k = begin; k < end; ++k)
+    if (!runs.done.count(k)) todo.push_back(k);
+  std::atomic<size_t> next{0};
+  auto worker = [&]() {
+    for (;;) {
+      const size_t t = next.fetch_add(1);
+      if (t >= todo.size()) return;
+      const int k = todo[t];
+      JournalRun r = run_one(to_points(samples[static_cast<size_t>(k)]), k, sample_seed(seed, o.burn_in + k), o);
+      std::lock_guard<std::mutex> lock(runs.mutex);
+      if (runs.journal) runs.journal->append(r);
+      if (*runs.on_run) (*runs.on_run)(r.record);
+      runs.done[k] = std::move(r);
+    }
+  };
+  const int threads = std::min<int>(o.jobs, static_cast<int>(todo.size()));
+  if (threads <= 1) {
+    worker();
+    return;
+  }
+  std::vector<std::thread> pool;
+  for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
+  for (auto& th : pool) th.join();
+}
+
+// The adaptive score of the stable equilibria of samples [begin, end).
+double score_batch(AdaptiveScorer& scorer, const KnotRuns& runs, int begin, int end) {
+  std::vector<std::pair<const Points*, double>> stable;
+  for (int k = begin; k < end; ++k) {
+    const JournalRun& r = runs.done.at(k);
+    if (r.positions.rows() > 0) stable.emplace_back(&r.positions, r.energy.total);
+  }
+  return scorer.add_batch(stable);
+}
+
+// One row of the attribute table (dataset_attribute_names() order).
+std::vector<double> attribute_row(const JournalRun& r, int sample, const AttributeOptions& ao) {
+  const Attributes a = compute_attributes(r.positions, ao);
+  return {r.energy.total, r.energy.stretch, r.energy.bend, r.energy.twist, r.energy.contact, r.stiffness,
+          a.physical.max_stress.value_or(std::nan("")), a.geometric.total_curvature, a.geometric.threedim,
+          a.geometric.sphericity, a.geometric.diameter, a.geometric.writhe, r.link,
+          static_cast<double>(r.record.contacts), static_cast<double>(sample)};
+}
+
+// Runs of samples [0, total) in sample order into the entry; the stable
+// equilibria with their attributes.
+void collect_runs(KnotEntry& entry, KnotRuns& runs, int total, const ExploreOptions& o) {
   const auto& names = dataset_attribute_names();
   std::vector<std::vector<double>> rows;
   AttributeOptions ao;
   ao.radius = o.relax.material.radius;
   ao.young_modulus = o.relax.material.young;
   for (int k = 0; k < total; ++k) {
-    JournalRun& r = done.at(k);
+    JournalRun& r = runs.done.at(k);
+    r.record.equilibrium = r.positions.rows() > 0 ? static_cast<int>(entry.equilibria.size()) : -1;
     if (r.positions.rows() > 0) {
-      r.record.equilibrium = static_cast<int>(entry.equilibria.size());
-      const Attributes a = compute_attributes(r.positions, ao);
-      rows.push_back({r.energy.total, r.energy.stretch, r.energy.bend, r.energy.twist, r.energy.contact, r.stiffness,
-                      a.physical.max_stress.value_or(std::nan("")), a.geometric.total_curvature, a.geometric.threedim,
-                      a.geometric.sphericity, a.geometric.diameter, a.geometric.writhe, r.link,
-                      static_cast<double>(r.record.contacts), static_cast<double>(k)});
+      rows.push_back(attribute_row(r, k, ao));
       entry.equilibria.push_back(r.positions);
-    } else {
-      r.record.equilibrium = -1;
     }
     entry.runs.push_back(r.record);
   }
@@ -393,6 +404,44 @@ KnotEntry explore_knot(const KnotRecord& knot, const ExploreOptions& options, co
   for (size_t i = 0; i < rows.size(); ++i)
     for (size_t c = 0; c < names.size(); ++c)
       entry.attributes(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(c)) = rows[i][c];
+}
+
+}  // namespace
+
+KnotEntry explore_knot(const KnotRecord& knot, const ExploreOptions& options, const std::string& journal_path,
+                       const RunCallback& on_run) {
+  const ExploreOptions o = options_for_knot(options, knot);
+  o.validate();
+  KnotEntry entry = entry_header(knot, o);
+  const std::uint64_t seed = knot_seed(o.seed, knot.name);
+
+  std::unique_ptr<Journal> journal;
+  if (!journal_path.empty()) journal = std::make_unique<Journal>(journal_path, options_text(knot.name, o));
+  KnotRuns runs;
+  if (journal) runs.done = journal->runs();
+  runs.journal = journal.get();
+  runs.on_run = &on_run;
+
+  const LatticeStart start = lattice_start(knot, o.start);
+  entry.alexander = start.alexander.coefficients;
+  SampleWalk walk(start, o, seed, knot.name);
+  AdaptiveScorer scorer(o);
+
+  int total = o.adaptive ? o.initial_samples : o.samples;
+  walk.generate(total);
+  relax_range(walk.samples(), 0, total, seed, o, runs);
+  if (o.adaptive) {
+    entry.score_history.push_back(score_batch(scorer, runs, 0, total));
+    while (entry.score_history.back() > o.score_threshold && total < o.max_samples) {
+      const int count = std::min(o.batch_samples, o.max_samples - total);
+      walk.generate(count);
+      relax_range(walk.samples(), total, total + count, seed, o, runs);
+      entry.score_history.push_back(score_batch(scorer, runs, total, total + count));
+      total += count;
+    }
+  }
+  entry.samples_used = total;
+  collect_runs(entry, runs, total, o);
   cluster_entry(entry, o.similarity);
   entry.complete = true;
   return entry;
