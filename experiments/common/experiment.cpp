@@ -1,5 +1,6 @@
 #include "experiment.hpp"
 
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -39,7 +40,7 @@ Args parse_args(int argc, char** argv, const std::string& name, const std::strin
       return argv[++i];
     };
     if (s == "--help" || s == "-h") {
-      std::cout << "usage: " << name << " --scale ci|default|paper --out DIR [--jobs J] [--method M]\n"
+      std::cout << "usage: " << name << " --scale ci|default|paper --out DIR [--jobs J] [--method M] [--seed S]\n"
                 << description << "\n";
       std::exit(0);
     } else if (s == "--scale") {
@@ -60,6 +61,13 @@ Args parse_args(int argc, char** argv, const std::string& name, const std::strin
       a.method = value();
       if (a.method != "default" && a.method != "hybrid" && a.method != "exact" && a.method != "paper")
         fail("--method '" + a.method + "': expected default, hybrid, exact or paper");
+    } else if (s == "--seed") {
+      const std::string v = value();
+      char* end = nullptr;
+      errno = 0;
+      const unsigned long long seed = std::strtoull(v.c_str(), &end, 10);
+      if (v.empty() || v[0] == '-' || *end != '\0' || errno == ERANGE) fail("--seed '" + v + "': expected a non-negative integer");
+      a.seed = seed;
     } else {
       fail("unknown argument '" + s + "' (see --help)");
     }

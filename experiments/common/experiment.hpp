@@ -3,6 +3,7 @@
 // crash-safe CSV/JSON results, and the run-time estimate printed before a run.
 // Experiments are thin programs over the library; figure scripts read only
 // what they write.
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <nlohmann/json.hpp>
@@ -28,9 +29,12 @@ struct Args {
   /// The relaxation method of the twist-free data-set runs (`--method`, as
   /// `knots relax --method`: default, hybrid, exact, paper; with_method()).
   std::string method = "default";
+  /// The run seed of the data-set runs (`--seed`; every knot's walk and every
+  /// sample derive from it, docs/models.md); 1 unless given.
+  std::uint64_t seed = 1;
 };
 
-/// Parses `--scale ci|default|paper --out DIR [--jobs J] [--method M]` (and --help);
+/// Parses `--scale ci|default|paper --out DIR [--jobs J] [--method M] [--seed S]` (and --help);
 /// creates DIR. Bad arguments: one line on stderr, exit status 2.
 ///
 /// Reruns: a DIR holding a finished run (DIR/summary.json, written last by

@@ -28,7 +28,7 @@ inline ExploreOptions base_options(const Args& a) {
   o.relax = with_method(o.relax, a.method);
   o.jobs = a.jobs;
   o.novelty_distance = kClusterCut;
-  o.seed = 1;
+  o.seed = a.seed;
   return o;
 }
 
