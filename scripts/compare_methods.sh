@@ -4,7 +4,9 @@
 # checks, and their comparison (experiments/compare_methods.cpp;
 # docs/reproducing.md, "Comparing the relaxation methods").
 #   scripts/compare_methods.sh BUILD SCALE RESULTS JOBS KNOT_TABLE
-# Results: RESULTS/compare_methods/<method>/<experiment>/ and
+# Results: RESULTS/compare_methods/<method>/<experiment>/,
+# RESULTS/compare_methods/default-seed2/{dataset,multistability}/ (the default
+# method from other lattice samples: the comparison's noise floor) and
 # RESULTS/compare_methods/comparison/. A method's experiments are rerun when
 # one of their summaries is missing or older than a program.
 set -euo pipefail
@@ -17,8 +19,8 @@ experiments="dataset milnor planarity multistability puzzles"
 checks='^Paper(Milnor|Planarity|Multistability|Puzzles)\.'
 
 up_to_date() {  # every summary of the method exists and is newer than every program
-  local m=$1
-  for e in $experiments; do
+  local m=$1 es=${2:-$experiments}
+  for e in $es; do
     [ -f "$root/$m/$e/summary.json" ] || return 1
     for p in $experiments; do [ "$root/$m/$e/summary.json" -nt "$exp/exp_$p" ] || return 1; done
   done
@@ -34,4 +36,9 @@ for m in default hybrid; do
   (cd "$build" && EK_PAPER_RESULTS="$root/$m" KNOT_TABLE="$table" \
      ctest --output-on-failure -L '^paper$' -R "$checks" -E '^paper_run_' -FS '.*')
 done
+if ! up_to_date default-seed2 "dataset multistability"; then
+  for e in dataset multistability; do
+    "$exp/exp_$e" --scale "$scale" --method default --seed 2 --out "$root/default-seed2/$e" --jobs "$jobs"
+  done
+fi
 "$exp/exp_compare_methods" --scale "$scale" --out "$root/comparison"
