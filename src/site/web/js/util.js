@@ -92,7 +92,8 @@ export function sortableTable(columns, { onRow, rowAttrs, sort } = {}) {
   return { node: table, render };
 }
 
-/** Marks the view as drawn (the browser tests wait for it). */
+/** Marks the view as drawn (the browser tests wait for it), with the time since the page's navigation started [ms]. */
 export function ready(name) {
+  document.body.dataset.readyAt = performance.now().toFixed(1);
   document.body.dataset.ready = name;
 }
