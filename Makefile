@@ -12,7 +12,8 @@ CMAKE_ARGS ?=
 CONFIGURE = cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DEK_KNOT_TABLE=$(KNOT_TABLE) $(CMAKE_ARGS)
 CTEST     = cd $(BUILD) && KNOT_TABLE=$(KNOT_TABLE) ctest --output-on-failure -j$(JOBS)
 
-.PHONY: help help-experiments deps configure build test unit sanitize stress slurm-test bench figures experiments claims paper-open manifest compare-methods clean
+.PHONY: help help-experiments deps configure build test unit sanitize stress slurm-test bench figures experiments claims paper-open manifest compare-methods clean \
+        explorer explorer-screenshots serve browser
 
 help:
 	@echo "make test      build, run all tests (unit, parsers, short stress, paper claims at ci scale, Slurm, sanitizers)"
@@ -22,6 +23,10 @@ help:
 	@echo "make claims    the paper checks on the results of SCALE (make figures ends with it; docs/reproducing.md)"
 	@echo "make paper-open  the claims not reproduced (paper_checks/open_claims.cpp), values printed"
 	@echo "make compare-methods  the default relaxation method against the previous one (hybrid) on the SCALE data sets"
+	@echo "make explorer  the data-set explorer of SCALE's data set in results/<scale>/explorer/ (docs/explorer.md)"
+	@echo "make serve     serve that data set's explorer on 127.0.0.1:8000"
+	@echo "make explorer-screenshots  screenshots of its views and its load time in headless Chromium"
+	@echo "make browser   the explorer's browser tests (label browser, also in make test)"
 	@echo "make bench     Google Benchmark microbenchmarks and macro benchmarks (results/bench/; docs/performance.md)"
 	@echo "make stress    the long numerical stress tests (label stress-long)"
 	@echo "make sanitize  parsers and readers built and tested with AddressSanitizer and UBSan"
@@ -33,7 +38,7 @@ help:
 	@echo "Variables: KNOT_TABLE=$(KNOT_TABLE) SCALE=ci|default|paper JOBS=$(JOBS) BUILD=$(BUILD)"
 	@echo "Documentation: README.md; docs/reproducing.md (targets, scales, claims), docs/cli.md (knots),"
 	@echo "  docs/models.md, docs/performance.md, docs/dataset-format.md, docs/results.md (results files),"
-	@echo "  docs/cluster.md (Slurm)"
+	@echo "  docs/cluster.md (Slurm), docs/explorer.md (the data-set explorer)"
 
 deps:
 	@scripts/install-deps.sh
@@ -49,6 +54,9 @@ test: build sanitize
 
 unit: build
 	$(CTEST) -L 'unit|parsers'
+
+browser: build
+	$(CTEST) -L browser
 
 sanitize: deps
 	@cmake -S . -B $(BUILD)-asan -DCMAKE_BUILD_TYPE=Debug -DEK_SANITIZE=ON -DEK_PARSERS_ONLY=ON \
@@ -137,8 +145,21 @@ paper-open: build
 	$(CTEST) -L 'paper'
 
 # (each figure's experiment summary is a prerequisite: experiments/manifest.mk)
-figures/out/%.png: figures/%.py figures/common.py
+figures/out/%.png: figures/%.py figures/common.py figures/render.py
 	MPLBACKEND=Agg $(PYTHON) $< --results $(RESULTS) --out figures/out
+
+# ---- the data-set explorer (docs/explorer.md) ------------------------------------
+EXPLORER_DATASET ?= $(RESULTS)/dataset/dataset.h5
+PORT             ?= 8000
+
+explorer: build
+	$(BUILD)/bin/knots site $(EXPLORER_DATASET) -o $(RESULTS)/explorer --overwrite
+
+serve: build
+	$(BUILD)/bin/knots serve $(EXPLORER_DATASET) --port $(PORT)
+
+explorer-screenshots: explorer
+	$(PYTHON) scripts/explorer_screenshots.py --site $(RESULTS)/explorer --out $(RESULTS)/screenshots
 
 manifest:
 	$(PYTHON) scripts/manifest.py

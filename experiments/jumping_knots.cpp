@@ -57,6 +57,7 @@ int main(int argc, char** argv) {
     sum.scale = a.scale_name;
     sum.threedim_threshold = kJumpThreedim;
     sum.planar_threshold = kPlanarThreedim;
+    sum.radius = RelaxOptions().material.radius;  // every stage relaxes with the default material
     // One knot per worker thread (each knot's solves are single-threaded);
     // rows are written in table order afterwards.
     struct Outcome {

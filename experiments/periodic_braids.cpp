@@ -86,6 +86,7 @@ int main(int argc, char** argv) {
     results::PeriodicBraidsSummary sum;
     sum.scale = a.scale_name;
     sum.crossing_gap = kCrossingGap;
+    sum.radius = RelaxOptions().material.radius;  // every member relaxes with the default material
     for (const auto& m : members) {
       BraidWord w;
       w.strands = m.strands;

@@ -1,23 +1,33 @@
 """Shared helpers of the figure scripts: arguments, reading results, drawing
-curves as three orthogonal shadow projections coloured by curvature (as the
-paper's figures do), saving PNG and PDF. Figure scripts read only the
-experiments' results files (results/<scale>/<experiment>/...), through the
-readers here: read_summary (summary.json), read_csv with flag (CSV tables),
-read_obj (curves), load_equilibria (data sets). The files' schemas are
-documented in docs/results.md; thresholds come from the summaries (the
-experiments write the values they applied)."""
+curves, saving PNG and PDF. Figure scripts read only the experiments'
+results files (results/<scale>/<experiment>/...), through the readers here:
+read_summary (summary.json), read_csv with flag (CSV tables), read_obj
+(curves), load_equilibria and dataset_material (data sets). The files'
+schemas are documented in docs/results.md; thresholds and the wire radius
+come from the results (the experiments write the values they applied).
+
+Curves are drawn by draw_curve(ax, P, radius=..., view=..., color=...)
+(figures/render.py): the wire as a shaded tube of its radius, rendered by
+POV-Ray, with over/under crossings hidden as in a photograph; draw_views()
+draws one curve in several views. save() waits for the renders."""
 import argparse
 import csv
 import json
 import os
 import sys
 
+import time
+
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
-from matplotlib.collections import LineCollection  # noqa: E402
+
+import render  # noqa: E402
+from render import contact_legend, curvature, draw_curve  # noqa: E402,F401
+
+_started = time.perf_counter()
 
 
 def parse_args(description):
@@ -26,6 +36,7 @@ def parse_args(description):
     p.add_argument("--out", default="figures/out", help="output folder for PNG and PDF")
     a = p.parse_args()
     os.makedirs(a.out, exist_ok=True)
+    render.cache_dir = os.path.join(a.out, ".render-cache")
     return a
 
 
@@ -70,54 +81,41 @@ def read_obj(path):
 
 
 def save(fig, out, name):
+    render.finish()
     for ext in ("png", "pdf"):
         fig.savefig(os.path.join(out, f"{name}.{ext}"), dpi=150, bbox_inches="tight")
     plt.close(fig)
-    print(f"wrote {os.path.join(out, name)}.png and .pdf")
+    s = render.stats
+    print(f"wrote {os.path.join(out, name)}.png and .pdf in {time.perf_counter() - _started:.1f} s "
+          f"({s['renders']} tube renders, {s['seconds']:.1f} s of POV-Ray runs; {s['cached']} from the cache)")
 
 
-def curvature(P):
-    """Turning angle at each vertex divided by the Voronoi length (paper Section 7.1)."""
-    e = np.roll(P, -1, axis=0) - P
-    a, b = np.roll(e, 1, axis=0), e
-    cross = np.linalg.norm(np.cross(a, b), axis=1)
-    dot = np.sum(a * b, axis=1)
-    angle = np.arctan2(cross, dot)
-    vor = 0.5 * (np.linalg.norm(a, axis=1) + np.linalg.norm(b, axis=1))
-    return angle / vor
+def draw_views(axs, P, views=("top", "front"), labels=True, **kwargs):
+    """One curve in several views (draw_curve's keyword arguments, radius
+    among them), one axes each; returns the last ScalarMappable."""
+    sm = None
+    for ax, view in zip(axs, views):
+        sm = draw_curve(ax, P, view=view, **kwargs)
+        if labels and isinstance(view, str):
+            ax.set_title(view, fontsize=7)
+    return sm
 
 
-def principal_frame(P):
-    """Centres the curve and rotates it to its principal axes (largest first)."""
-    Q = P - P.mean(axis=0)
-    _, _, vt = np.linalg.svd(Q, full_matrices=False)
-    return Q @ vt.T
+def dataset_material(h5_path):
+    """(radius, dhat) of a data set: the wire radius and the contact distance [length]."""
+    import h5py
+
+    with h5py.File(need(h5_path), "r") as f:
+        return float(f.attrs["radius"]), float(f.attrs["dhat"])
 
 
-def draw_shadow(ax, P, values, axes, vmax, lw=1.2):
-    """Draws the projection of the closed curve P onto two axes, coloured by values."""
-    pts = P[:, axes]
-    seg = np.stack([pts, np.roll(pts, -1, axis=0)], axis=1)
-    lc = LineCollection(seg, cmap="viridis", norm=plt.Normalize(0, vmax), linewidths=lw)
-    lc.set_array(0.5 * (values + np.roll(values, -1)))
-    ax.add_collection(lc)
-    ax.set_aspect("equal")
-    ax.autoscale()
-    ax.set_xticks([])
-    ax.set_yticks([])
-    return lc
-
-
-def draw_three_shadows(axs, P, vmax=None):
-    """Three orthogonal shadows (xy, xz, yz of the principal frame), coloured by curvature."""
-    Q = principal_frame(P)
-    k = curvature(Q)
-    vmax = vmax or max(np.percentile(k, 99), 1e-9)
-    lc = None
-    for ax, axes, label in zip(axs, ((0, 1), (0, 2), (1, 2)), ("top", "front", "side")):
-        lc = draw_shadow(ax, Q, k, axes, vmax)
-        ax.set_title(label, fontsize=7)
-    return lc
+def summary_radius(summary, experiment):
+    """The wire radius a summary records (the experiments write it since the tube figures)."""
+    r = summary.get("radius")
+    if r is None:
+        sys.exit(f"{os.path.basename(sys.argv[0])}: {experiment}/summary.json has no wire radius (written before "
+                 f"it was recorded): rerun make experiment-{experiment}")
+    return float(r)
 
 
 def load_equilibria(h5_path, knot):
@@ -133,27 +131,44 @@ def load_equilibria(h5_path, knot):
     return eq, dict(zip(names, attrs.T)), sim, link
 
 
-def draw_distinct_equilibria(a, knot, name):
+def shared_vmax(curves):
+    """Top of a curvature colour scale shared by several curves: the 99th
+    percentile of all their vertices' curvatures."""
+    return max(float(np.percentile(np.concatenate([curvature(P) for P in curves]), 99)), 1e-9)
+
+
+def curvature_colorbar(fig, sm, axs, label="curvature [1/length]"):
+    cb = fig.colorbar(sm, ax=axs, fraction=0.02, pad=0.01, shrink=0.8)
+    cb.set_label(label, fontsize=7)
+    cb.ax.tick_params(labelsize=6)
+    return cb
+
+
+def draw_distinct_equilibria(a, knot, name, radius_scale=4.0):
     """The distinct equilibria (cluster representatives) of a knot of the
-    multistability experiment, sorted by energy, as shadow triples."""
-    eq, attrs, _, _ = load_equilibria(f"{a.results}/multistability/multistability.h5", knot)
+    multistability experiment, sorted by energy: each as a tube from the top
+    (along its smallest principal axis) and, smaller, from the front,
+    coloured by curvature on one shared scale."""
+    h5 = f"{a.results}/multistability/multistability.h5"
+    eq, attrs, _, _ = load_equilibria(h5, knot)
+    radius, _ = dataset_material(h5)
     clusters = read_csv(f"{a.results}/multistability/clusters_{knot}.csv")[:16]
     cols = min(len(clusters), 8)
     rows = (len(clusters) + cols - 1) // cols
-    fig, axs = plt.subplots(rows * 3, cols, figsize=(1.5 * cols, 4.2 * rows), squeeze=False)
-    for c, row in enumerate(clusters):
+    curves = [eq[int(row["representative"])] for row in clusters]
+    vmax = shared_vmax(curves)
+    fig = plt.figure(figsize=(1.75 * cols + 0.6, 2.75 * rows + 0.4))
+    grid = fig.add_gridspec(2 * rows, cols, height_ratios=[1.0, 0.55] * rows, hspace=0.12, wspace=0.05)
+    axes, sm = [], None
+    for c, (row, P) in enumerate(zip(clusters, curves)):
         r, col = divmod(c, cols)
-        draw_three_shadows([axs[3 * r + k][col] for k in range(3)], eq[int(row["representative"])])
-        for k in range(3):
-            axs[3 * r + k][col].set_title("")
-        axs[3 * r][col].set_title(f"#{c + 1}  E = {float(row['energy']):.4f}\n3D-ness {float(row['threedim']):.2f}, "
-                                  f"x{row['size']}", fontsize=6)
-    for r in range(rows * 3):
-        for col in range(cols):
-            if not axs[r][col].has_data():
-                axs[r][col].axis("off")
-    for r in range(rows):
-        for k, label in enumerate(("top", "front", "side")):
-            axs[3 * r + k][0].set_ylabel(label, fontsize=7)
-    fig.suptitle(f"{knot}: {len(clusters)} distinct equilibria by energy (colour: curvature)", fontsize=9)
+        top, front = fig.add_subplot(grid[2 * r, col]), fig.add_subplot(grid[2 * r + 1, col])
+        sm = draw_views([top, front], P, labels=False, radius=radius, radius_scale=radius_scale, vmax=vmax)
+        top.set_title(f"#{c + 1}  E = {float(row['energy']):.4f}\n3D-ness {float(row['threedim']):.2f}, "
+                      f"x{row['size']}", fontsize=6)
+        axes += [top, front]
+    if sm is not None:
+        curvature_colorbar(fig, sm, axes)
+    fig.suptitle(f"{knot}: {len(clusters)} distinct equilibria by energy, each from the top and the front "
+                 f"(wire drawn at {radius_scale:g}× its radius r = {radius:g}; colour: curvature)", fontsize=8)
     save(fig, a.out, name)

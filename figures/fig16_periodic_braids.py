@@ -1,38 +1,46 @@
 """Fig. 16: relaxed periodic braids (σ1σ2⁻¹)^p and (σ1σ2⁻¹σ3)^p, two views
-per member: from the side and along the symmetry axis, coloured by curvature.
-Each member is drawn at its p-fold symmetric equilibrium (the relaxed
-state's p-fold average relaxed again), as the paper's Fig. 16 shows
-symmetric states, and viewed along the symmetry axis that the experiment
-found and measured (summary.json "axis", ek::find_symmetry_axis)."""
+per member: from the side and along the symmetry axis, as tubes of the
+wire's radius coloured by curvature. Each member is drawn at its p-fold
+symmetric equilibrium (the relaxed state's p-fold average relaxed again), as
+the paper's Fig. 16 shows symmetric states, and viewed along the symmetry
+axis that the experiment found and measured (summary.json "axis",
+ek::find_symmetry_axis)."""
 import sys
 
 import numpy as np
 
-from common import curvature, draw_shadow, parse_args, plt, read_obj, read_summary, save
+from common import curvature_colorbar, draw_curve, parse_args, plt, read_obj, read_summary, save, shared_vmax, \
+    summary_radius
+
+SCALE = 2.0  # wire drawn at this multiple of its radius
 
 a = parse_args(__doc__)
-members = read_summary(a.results, "periodic_braids")["members"]
+s = read_summary(a.results, "periodic_braids")
+members = s["members"]
 if any(m.get("axis") is None for m in members):
     sys.exit("fig16_periodic_braids.py: periodic_braids/summary.json has no symmetry axis (written before it was "
              "recorded): rerun make experiment-periodic_braids")
+radius = summary_radius(s, "periodic_braids")
 
-fig, axs = plt.subplots(2, len(members), figsize=(1.9 * len(members), 4.2), squeeze=False)
-for col, m in enumerate(members):
-    P = read_obj(f"{a.results}/periodic_braids/{m['symmetric_curve']}")
-    Q = P - P.mean(axis=0)
+curves = [read_obj(f"{a.results}/periodic_braids/{m['symmetric_curve']}") for m in members]
+vmax = shared_vmax(curves)
+fig, axs = plt.subplots(2, len(members), figsize=(1.9 * len(members) + 0.5, 4.4), squeeze=False,
+                        gridspec_kw={"hspace": 0.25, "wspace": 0.05})
+sm = None
+for col, (m, P) in enumerate(zip(members, curves)):
     axis = np.array(m["axis"], dtype=float)
     axis /= np.linalg.norm(axis)
     u = np.cross(axis, [1.0, 0.0, 0.0] if abs(axis[0]) < 0.9 else [0.0, 1.0, 0.0])
     u /= np.linalg.norm(u)
-    t = np.cross(axis, u)
-    R = Q @ np.stack([u, t, axis], axis=1)  # columns: two directions across the axis, then the axis
-    k = curvature(R)
-    vmax = np.percentile(k, 99)
-    draw_shadow(axs[0][col], R, k, (0, 2), vmax)
-    draw_shadow(axs[1][col], R, k, (0, 1), vmax)
+    # side: looking across the axis (axis up); along the axis: looking down it
+    sm = draw_curve(axs[0][col], P, radius=radius, radius_scale=SCALE, view=(-u, axis), vmax=vmax)
+    draw_curve(axs[1][col], P, radius=radius, radius_scale=SCALE, view=(-axis, u), vmax=vmax)
     word = "σ1σ2⁻¹" if m["family"] == "s1s2i" else "σ1σ2⁻¹σ3"
     axs[0][col].set_title(f"({word})^{m['p']}\n{m.get('knot') or ''}", fontsize=7)
     axs[1][col].set_xlabel(f"symmetry error {m['symmetric']['symmetry_error']:.1e}", fontsize=6)
 axs[0][0].set_ylabel("side", fontsize=8)
 axs[1][0].set_ylabel("along the axis", fontsize=8)
+curvature_colorbar(fig, sm, axs.ravel().tolist())
+fig.suptitle(f"periodic braids at their p-fold symmetric equilibria (wire drawn at {SCALE:g}× its radius "
+             f"r = {radius:g}; colour: curvature)", fontsize=9)
 save(fig, a.out, "fig16_periodic_braids")

@@ -10,7 +10,10 @@ packages=(
   build-essential cmake pkg-config
   libeigen3-dev libsuitesparse-dev libfftw3-dev libgsl-dev libhdf5-dev libspectra-dev
   nlohmann-json3-dev libgtest-dev libbenchmark-dev
-  python3 python3-matplotlib python3-numpy python3-h5py
+  python3 python3-matplotlib python3-numpy python3-h5py python3-pil
+  povray                                          # figures: the wires as shaded tubes
+  libjs-three                                     # the data-set explorer (knots site)
+  chromium chromium-driver python3-selenium       # the explorer's browser tests
 )
 optional=(slurmctld slurmd slurm-client munge)
 

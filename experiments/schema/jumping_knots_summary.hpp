@@ -14,7 +14,8 @@ struct JumpingKnotsSummary {
   std::optional<double> planar_threshold;  ///< [1] kPlanarThreedim: the flat stage is below it (absent before)
   int tested = 0;                          ///< [1] knots whose flat and released stages ran
   std::vector<std::string> jumping;        ///< the knots that jump, in table order
+  std::optional<double> radius;            ///< [length] wire radius r of the curves (absent before)
 };
-EK_JSON_FIELDS(JumpingKnotsSummary, scale, threedim_threshold, planar_threshold, tested, jumping)
+EK_JSON_FIELDS(JumpingKnotsSummary, scale, threedim_threshold, planar_threshold, tested, jumping, radius)
 
 }  // namespace ek::results

@@ -74,8 +74,9 @@ EK_JSON_FIELDS(PeriodicMember, family, p, knot, status, energy, alexander_preser
 struct PeriodicBraidsSummary {
   std::string scale;
   std::optional<double> crossing_gap;  ///< [length] kCrossingGap (absent before)
+  std::optional<double> radius;        ///< [length] wire radius r of the curves (absent before)
   std::vector<PeriodicMember> members;
 };
-EK_JSON_FIELDS(PeriodicBraidsSummary, scale, crossing_gap, members)
+EK_JSON_FIELDS(PeriodicBraidsSummary, scale, crossing_gap, radius, members)
 
 }  // namespace ek::results

@@ -1,5 +1,6 @@
 #pragma once
 // summary.json of exp_puzzles (docs/results.md, "puzzles").
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -20,7 +21,9 @@ struct PuzzlesSummary {
   int puzzles = 0;                ///< [1] pairs listed in puzzles.csv
   int knots_with_puzzles = 0;     ///< [1]
   std::vector<PuzzleLink> links;  ///< one per pair, in puzzles.csv's order
+  std::optional<double> radius;   ///< [length] wire radius r of the data sets' curves (absent before)
+  std::optional<double> dhat;     ///< [length] their contact distance d̂ (absent before)
 };
-EK_JSON_FIELDS(PuzzlesSummary, scale, writhe_tolerance, cut, puzzles, knots_with_puzzles, links)
+EK_JSON_FIELDS(PuzzlesSummary, scale, writhe_tolerance, cut, puzzles, knots_with_puzzles, links, radius, dhat)
 
 }  // namespace ek::results

@@ -87,3 +87,24 @@ TEST(Mds, DeterministicSignsAndEdgeCases) {
   EXPECT_THROW(classical_mds(D, 30), std::invalid_argument);
   EXPECT_THROW(classical_mds(Eigen::MatrixXd::Zero(3, 2)), std::invalid_argument);
 }
+
+// Degenerate configurations above the dense limit, as data sets produce them
+// (a BB knot's 40 samples all relax to the same multi-covered circle): all
+// points at one place give the origin; points on a line (B of rank 1 < d = 2)
+// are recovered exactly, the second axis 0.
+TEST(Mds, CoincidingAndCollinearPoints) {
+  const int N = 40;
+  const MdsResult same = classical_mds(Eigen::MatrixXd::Zero(N, N));
+  EXPECT_EQ(same.status, MdsStatus::Converged);
+  EXPECT_EQ(same.coordinates.norm(), 0.0);
+  const MdsResult near_same = classical_mds_from_similarity(Eigen::MatrixXd::Constant(N, N, 1.0 - 1e-17));
+  EXPECT_EQ(near_same.status, MdsStatus::Converged);
+  EXPECT_LE(near_same.coordinates.norm(), 1e-12);
+  Eigen::MatrixXd X = Eigen::MatrixXd::Zero(N, 2);
+  for (int i = 0; i < N; ++i) X(i, 0) = (i % 3) * 0.25;  // three clusters on a line
+  const MdsResult line = classical_mds(distances(X));
+  EXPECT_EQ(line.status, MdsStatus::Converged);
+  // the second axis is the square root of a round-off eigenvalue (~1e-16): up to ~1e-8
+  EXPECT_LT((distances(line.coordinates) - distances(X)).cwiseAbs().maxCoeff(), 1e-7);
+  EXPECT_LT(line.coordinates.col(1).norm(), 1e-6);
+}

@@ -113,6 +113,7 @@ TEST(Summaries, PeriodicBraidsFlagsAndLegacyStrings) {
   EXPECT_FALSE(o.members[1].alexander_matches_table.has_value());
   EXPECT_EQ(o.members[1].tabulated(), "");
   EXPECT_FALSE(o.members[0].axis.has_value());
+  EXPECT_FALSE(o.radius.has_value());  // not set above: null, read back as absent
   old["members"][0]["alexander_matches_table"] = "yes";
   EXPECT_THROW(parse_summary<PeriodicBraidsSummary>(old, "old"), std::runtime_error);
 }
@@ -148,10 +149,20 @@ TEST(Summaries, OtherSummariesRoundTrip) {
   JumpingKnotsSummary k;
   k.jumping = {"4_1", "12a_1019"};
   k.planar_threshold = kPlanarThreedim;
+  k.radius = 0.2;
   EXPECT_EQ(round_trip(k).jumping.at(1), "12a_1019");
+  EXPECT_EQ(round_trip(k).radius, std::optional<double>(0.2));
   PuzzlesSummary z;
   z.links = {{"7_7", -3.0}};
+  z.radius = 0.2;
+  z.dhat = 0.4;
   EXPECT_DOUBLE_EQ(round_trip(z).links.at(0).link, -3.0);
+  EXPECT_EQ(round_trip(z).dhat, std::optional<double>(0.4));
+  // the wire radius, added later, is optional: older summaries read without it
+  ordered_json old = z;
+  old.erase("radius");
+  old.erase("dhat");
+  EXPECT_FALSE(parse_summary<PuzzlesSummary>(old, "old").radius.has_value());
   TimeVsErrorSummary t;
   t.michell = {{400, 2.6, 1e-4}};
   EXPECT_EQ(round_trip(t).michell.at(0).n, 400);

@@ -11,6 +11,28 @@
 
 namespace ek {
 
+namespace {
+
+/// The dims largest eigenpairs of the symmetric B by Spectra's Lanczos
+/// solver; false when it does not converge or breaks down.
+bool top_eigenpairs_lanczos(const Eigen::MatrixXd& B, int dims, Eigen::VectorXd& values, Eigen::MatrixXd& vectors) {
+  try {
+    Spectra::DenseSymMatProd<double> op(B);
+    const Eigen::Index ncv = std::min<Eigen::Index>(B.rows(), std::max<Eigen::Index>(2 * dims + 1, 20));
+    Spectra::SymEigsSolver<Spectra::DenseSymMatProd<double>> solver(op, dims, ncv);
+    solver.init();
+    solver.compute(Spectra::SortRule::LargestAlge, 1000, 1e-12, Spectra::SortRule::LargestAlge);
+    if (solver.info() != Spectra::CompInfo::Successful) return false;
+    values = solver.eigenvalues();
+    vectors = solver.eigenvectors();
+    return true;
+  } catch (const std::exception&) {  // Spectra throws when its tridiagonal eigensolver fails
+    return false;
+  }
+}
+
+}  // namespace
+
 MdsResult classical_mds(const Eigen::MatrixXd& D, int dims) {
   const auto N = D.rows();
   require(N >= 1 && D.cols() == N, "classical_mds: a square distance matrix expected");
@@ -34,27 +56,22 @@ MdsResult classical_mds(const Eigen::MatrixXd& D, int dims) {
   for (Eigen::Index i = 0; i < N; ++i)
     for (Eigen::Index j = 0; j < N; ++j) B(i, j) = -0.5 * (B(i, j) - row_mean(i) - row_mean(j) + all_mean);
 
+  // Every point at the same place (B = 0 up to round-off): the origin.
+  if (B.cwiseAbs().maxCoeff() <= 1e-14 * scale * scale) {
+    out.explained = 1.0;
+    return out;
+  }
   Eigen::VectorXd values(dims);
   Eigen::MatrixXd vectors(N, dims);
-  if (N <= kMdsDenseLimit) {
+  if (N <= kMdsDenseLimit || !top_eigenpairs_lanczos(B, dims, values, vectors)) {
+    // dense: small matrices, and the fallback when Lanczos fails (e.g. B of
+    // rank below dims, whose Krylov space breaks down)
     Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> es(B);
     if (es.info() != Eigen::Success) out.status = MdsStatus::NotConverged;
     for (int k = 0; k < dims; ++k) {  // ascending order: take from the end
       values(k) = es.eigenvalues()(N - 1 - k);
       vectors.col(k) = es.eigenvectors().col(N - 1 - k);
     }
-  } else {
-    Spectra::DenseSymMatProd<double> op(B);
-    const Eigen::Index ncv = std::min<Eigen::Index>(N, std::max<Eigen::Index>(2 * dims + 1, 20));
-    Spectra::SymEigsSolver<Spectra::DenseSymMatProd<double>> solver(op, dims, ncv);
-    solver.init();
-    solver.compute(Spectra::SortRule::LargestAlge, 1000, 1e-12, Spectra::SortRule::LargestAlge);
-    if (solver.info() != Spectra::CompInfo::Successful) {
-      out.status = MdsStatus::NotConverged;
-      return out;
-    }
-    values = solver.eigenvalues();
-    vectors = solver.eigenvectors();
   }
   for (int k = 0; k < dims; ++k) {
     Eigen::Index imax = 0;

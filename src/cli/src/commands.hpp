@@ -18,4 +18,6 @@ int cmd_describe(int argc, char** argv);
 int cmd_cluster(int argc, char** argv);
 int cmd_query(int argc, char** argv);
 int cmd_export(int argc, char** argv);
+int cmd_site(int argc, char** argv);
+int cmd_serve(int argc, char** argv);
 }  // namespace ek::cli

@@ -11,7 +11,9 @@
 /// entry of largest magnitude is positive (deterministic output).
 ///
 /// The top eigenpairs come from Spectra's Lanczos solver (SymEigsSolver on the
-/// dense product) for N > kMdsDenseLimit, from a dense eigensolver below.
+/// dense product) for N > kMdsDenseLimit, from a dense eigensolver below and
+/// when Lanczos fails (B of rank below d, as for many identical states).
+/// Points that all coincide (B = 0 up to round-off) give the origin.
 #include <Eigen/Core>
 
 namespace ek {

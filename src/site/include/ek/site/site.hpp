@@ -1,0 +1,108 @@
+#pragma once
+/// The data-set explorer (paper Section 7: similarity, clustering, MDS,
+/// filters, cross-knot queries): a static web site written from a data-set
+/// file. This module extracts everything the pages show; the pages
+/// (src/site/web/, plain ES modules, no build step) only display it and
+/// recluster a dendrogram at a cut the user picks.
+///
+/// Site layout (docs/explorer.md documents it for users):
+///
+///   index.html, style.css, js/*.js      the pages (embedded in the program at build time)
+///   three/build/three.module.js         three.js and its OrbitControls, copied from
+///   three/examples/jsm/controls/...     Debian's libjs-three at run time
+///   data/site.json                      format "elastic-knots-site", format_version 1:
+///                                       the data set's parameters, the attribute names,
+///                                       one record per knot (table fields, Milnor ratio,
+///                                       distinct states at the cut, row offset)
+///   data/attributes.bin                 float64 little-endian [M, k]: every equilibrium's
+///                                       attributes, knots in file order (M = Σ m)
+///   data/knots/<file>.json              per knot: MDS coordinates [m, 2], linkage
+///                                       [m-1, 4] (SciPy layout), dendrogram leaf order,
+///                                       clusters at the cut, and the layout of:
+///   data/knots/<file>.bin               little-endian arrays, back to back:
+///                                       positions float32 [m, n, 3], curvature float32
+///                                       [m, n] (turning angle / Voronoi length, 1/length),
+///                                       similarity float32 [m, m], contact uint8 [m, n]
+///                                       (edge i = vertex i to i+1 closer than d̂ to an
+///                                       edge sharing no vertex with it)
+///
+/// Numbers in JSON are written with 17 significant digits (exact round trip),
+/// so a cut compared with the linkage heights in the page gives the same
+/// clusters as `knots cluster` at that cut.
+#include <map>
+#include <string>
+#include <vector>
+
+#include "ek/dataset/dataset_file.hpp"
+
+namespace ek {
+
+/// Format of data/site.json and data/knots/*.json (conventions: data files carry a schema version).
+inline constexpr const char* kSiteFormat = "elastic-knots-site";
+inline constexpr int kSiteFormatVersion = 1;
+
+struct SiteOptions {
+  /// [1] distance cut (1 - similarity) for the knot table's "distinct states"
+  /// column and the initial position of each knot's cut slider (the paper
+  /// experiments' cluster cut)
+  double cut = 0.05;
+  /// folder of Debian's libjs-three (holds build/three.module.js and
+  /// examples/jsm/controls/OrbitControls.js); default: found when the program was configured
+  std::string three_dir;
+  /// name shown as the data set's title (default: the data-set file's name)
+  std::string title;
+
+  SiteOptions();
+  /// Throws InputError for a cut outside [0, 1].
+  void validate() const;
+};
+
+/// The site's files: path relative to the site's folder -> contents.
+using SiteFiles = std::map<std::string, std::string>;
+
+/// The data files of one knot (data/knots/<file>.json and .bin).
+struct KnotSiteData {
+  std::string json;    ///< data/knots/<file>.json
+  std::string binary;  ///< data/knots/<file>.bin
+  int distinct = 0;    ///< [1] clusters at the cut
+};
+
+/// Extracts one knot's data files (`file` is the base name of both files,
+/// `dhat` [length] the contact distance of the contact flags).
+KnotSiteData knot_site_data(const KnotEntry& entry, const std::string& file, double dhat, double cut);
+
+/// Per-vertex curvature of a closed polygon: turning angle at vertex i over
+/// its Voronoi length (half the two edges), [1/length]; length n.
+std::vector<double> vertex_curvature(const Points& P);
+
+/// Per-edge contact flags of a closed polygon: edge i (vertex i to i+1) is
+/// closer than dhat to an edge sharing no vertex with it; length n.
+std::vector<unsigned char> contact_edges(const Points& P, double dhat);
+
+/// The base file name of a knot's data files: the name when it consists of
+/// [A-Za-z0-9_.-] (every KnotInfo name), otherwise those characters with every
+/// other byte written as "~XX" (hex).
+std::string knot_file_name(const std::string& name);
+
+/// Every file of the site of the data set at `dataset_path`: the data files,
+/// the pages and three.js. Throws InputError for a file that is not a data
+/// set, for a missing three.js, and for an unknown knot table (the table
+/// gives the "alternating" column).
+SiteFiles build_site(const std::string& dataset_path, const SiteOptions& options);
+
+/// Writes `files` into the folder `dir`, crash-safe: into "<dir>.tmp.<pid>",
+/// then renamed onto `dir`. `dir` may be missing or empty; a folder holding
+/// other files is an InputError unless `overwrite`, and even then only a
+/// folder that a previous `knots site` wrote (it holds data/site.json of
+/// this format) is replaced, so no other folder is ever removed. Nothing is
+/// written when the check fails.
+void write_site(const SiteFiles& files, const std::string& dir, bool overwrite);
+
+/// Throws InputError unless `dir` could be written by write_site (the checks
+/// above), without writing anything; called before the work.
+void check_site_folder(const std::string& dir, bool overwrite);
+
+/// The Content-Type of a site file by its extension.
+std::string content_type(const std::string& path);
+
+}  // namespace ek

@@ -1,0 +1,71 @@
+// View: one knot type. Its MDS map and dendrogram coloured by the clusters at
+// a cut the slider sets (reclustered here exactly as `knots cluster` does),
+// the count of distinct states, and its equilibria with their attributes
+// (sortable); a point or a row opens the equilibrium in 3D.
+import { loadKnot, loadAttributes, attribute } from "./data.js";
+import { clustersAtCut } from "./clusters.js";
+import { mdsPlot } from "./mds.js";
+import { dendrogramPlot } from "./dendrogram.js";
+import { el, fmt, sortableTable, clusterColor, ATTRIBUTE_LABELS, ready } from "./util.js";
+
+export async function showKnot(main, site, name) {
+  const rec = site.byName.get(name);
+  if (!rec) throw new Error(`no knot ${name} in this data set`);
+  const [k, table] = await Promise.all([loadKnot(site, name), loadAttributes(site)]);
+  const m = k.equilibria;
+  const value = (i, a) => attribute(site, table, rec, i, a);
+  main.append(el("h2", {}, `${name}`),
+    el("p", { class: "muted" },
+      `${rec.crossing_number} crossings, bridge index ${fmt(rec.bridge_index)}, braid index ${fmt(rec.braid_index)}` +
+      `${rec.bb ? " (BB)" : ""}, ${rec.alternating === null ? "" : rec.alternating ? "alternating, " : "non-alternating, "}` +
+      `${rec.samples} samples, ${m} stable equilibria.`));
+  if (m === 0) {
+    main.append(el("p", {}, "No stable equilibrium is stored for this knot."));
+    ready("knot");
+    return null;
+  }
+  const open = (i) => { location.hash = `#/view/${encodeURIComponent(name)}/${i}`; };
+  const mds = mdsPlot(k, { onClick: open, energy: (i) => value(i, "energy") });
+  let cut = site.cut;
+  const dendro = dendrogramPlot(k, { onPick: (h) => setCut(h) });
+  const slider = el("input", { type: "range", id: "cut-slider", min: 0, max: 1, step: 0.0005, value: cut,
+    oninput: (e) => setCut(Number(e.target.value)) });
+  const number = el("input", { type: "number", id: "cut-value", min: 0, max: 1, step: 0.001, value: cut,
+    onchange: (e) => { const c = Number(e.target.value); if (c >= 0 && c <= 1) setCut(c); } });
+  const count = el("strong", { id: "cluster-count" });
+  const attrs = site.attribute_names.filter((a) => a !== "sample");
+  let clusters = null;
+  const rows = Array.from({ length: m }, (_, i) => ({ i }));
+  const columns = [
+    { key: "index", label: "#", value: (r) => r.i },
+    { key: "cluster", label: "cluster", value: (r) => clusters.rank[r.i],
+      format: (c) => el("span", {}, el("span", { class: "swatch", style: `background:${clusterColor(c)}` }), c) },
+    ...attrs.map((a) => ({ key: a, label: ATTRIBUTE_LABELS[a] ?? a, value: (r) => value(r.i, a) })),
+  ];
+  const eqTable = sortableTable(columns, {
+    onRow: (r) => open(r.i),
+    rowAttrs: (r) => ({ dataset: { index: r.i }, class: clusters.clusters[clusters.rank[r.i]].representative === r.i ? "representative" : null }),
+    sort: { key: "energy" },
+  });
+  function setCut(c) {
+    cut = c;
+    slider.value = c;
+    number.value = c;
+    clusters = clustersAtCut(k.linkage, m, cut, (i) => value(i, "energy"));
+    const reps = new Set(clusters.clusters.map((x) => x.representative));
+    mds.color(clusters.rank, reps);
+    dendro.setCut(cut, clusters.rank);
+    count.textContent = `${clusters.count}`;
+    count.dataset.cut = String(cut);
+    eqTable.render(rows);
+  }
+  main.append(
+    el("div", { class: "cut" }, el("label", { for: "cut-slider" }, "cut (1 − similarity)"), slider, number,
+      el("span", {}, count, " distinct states (clusters) at this cut; the largest point of a colour is its lowest-energy member")),
+    el("div", { class: "row" }, el("div", { class: "panel" }, mds.node), el("div", { class: "panel" }, dendro.node)),
+    el("h3", {}, "Equilibria (click one for 3D; bold: the lowest energy of its cluster)"),
+    el("div", { class: "scroll" }, eqTable.node));
+  setCut(cut);
+  ready("knot");
+  return null;
+}

@@ -1,0 +1,99 @@
+// View: one equilibrium in 3D, or two of the same knot side by side with
+// their similarity. Colour by curvature (a shared scale and colour bar) or by
+// contact; the wire's thickness as stored (its radius r) or thicker; OBJ
+// downloads of the curve and of the tube.
+import { loadKnot, loadAttributes, attribute, curve } from "./data.js";
+import { clustersAtCut } from "./clusters.js";
+import { TubeViewer } from "./viewer.js";
+import { viridis, viridisGradient, percentile, CONTACT, FREE } from "./colormap.js";
+import { curveObj, meshObj, download } from "./obj.js";
+import { el, fmt, ATTRIBUTE_LABELS, ready } from "./util.js";
+
+const settings = { mode: "curvature", thickness: 1 };  // kept while navigating
+
+function colors(k, i, mode, vmax) {
+  const n = k.vertices, out = new Float32Array(3 * n);
+  for (let v = 0; v < n; v++) {
+    let c;
+    if (mode === "contact") {
+      const touching = k.contact[i * n + v] || k.contact[i * n + ((v + n - 1) % n)];
+      c = touching ? CONTACT : FREE;
+    } else {
+      c = viridis(k.curvature[i * n + v] / vmax);
+    }
+    out.set(c, 3 * v);
+  }
+  return out;
+}
+
+export async function showEquilibria(main, site, name, indices) {
+  const rec = site.byName.get(name);
+  if (!rec) throw new Error(`no knot ${name} in this data set`);
+  const [k, table] = await Promise.all([loadKnot(site, name), loadAttributes(site)]);
+  const m = k.equilibria;
+  if (!indices.length || indices.length > 2 || !indices.every((i) => Number.isInteger(i) && i >= 0 && i < m))
+    throw new Error(`${name} has equilibria 0 .. ${m - 1}; the address names ${indices.join(", ") || "none"}`);
+  const value = (i, a) => attribute(site, table, rec, i, a);
+  const clusters = clustersAtCut(k.linkage, m, site.cut, (i) => value(i, "energy"));
+  const radius = site.dataset.radius;
+  let curvatures = [];
+  for (const i of indices) curvatures = curvatures.concat(Array.from(k.curvature.subarray(i * k.vertices, (i + 1) * k.vertices)));
+  const vmax = Math.max(percentile(curvatures, 99), 1e-9);
+
+  const back = el("a", { href: `#/knot/${encodeURIComponent(name)}` }, `← ${name}`);
+  const mode = el("select", { id: "colour-mode", onchange: (e) => { settings.mode = e.target.value; redraw(); } },
+    el("option", { value: "curvature" }, "curvature"), el("option", { value: "contact" }, "contact"));
+  mode.value = settings.mode;
+  const thick = el("select", { id: "thickness", onchange: (e) => { settings.thickness = Number(e.target.value); redraw(); } },
+    [1, 2, 4, 8].map((f) => el("option", { value: f }, f === 1 ? `r = ${radius} (as stored)` : `${f} × r`)));
+  thick.value = String(settings.thickness);
+  const order = [...Array(m).keys()].sort((a, b) => value(a, "energy") - value(b, "energy"));
+  const compare = el("select", { id: "compare", onchange: (e) => {
+    const j = e.target.value;
+    location.hash = `#/view/${encodeURIComponent(name)}/${indices[0]}${j === "" ? "" : "/" + j}`;
+  } }, el("option", { value: "" }, "none"),
+  order.filter((j) => j !== indices[0]).map((j) =>
+    el("option", { value: j }, `#${j}: E = ${fmt(value(j, "energy"), 5)}, cluster ${clusters.rank[j]}`)));
+  compare.value = indices.length === 2 ? String(indices[1]) : "";
+  const legend = el("div", { class: "colorbar", id: "colorbar" });
+  main.append(el("h2", {}, back, ` · equilibri${indices.length === 2 ? "a" : "um"} ${indices.join(" and ")}`),
+    el("div", { class: "controls" },
+      el("label", {}, "colour ", mode), el("label", {}, "wire ", thick), el("label", {}, "beside it ", compare)),
+    legend);
+  if (indices.length === 2) {
+    const s = k.similarity[indices[0] * m + indices[1]];
+    main.append(el("p", { id: "similarity" }, `similarity ${fmt(s, 4)} (distance 1 − similarity = ${fmt(1 - s, 4)}; ` +
+      `clusters ${clusters.rank[indices[0]]} and ${clusters.rank[indices[1]]} at the cut ${fmt(site.cut)})`));
+  }
+  const row = el("div", { class: "viewers" });
+  main.append(row);
+  const viewers = indices.map((i) => {
+    const box = el("div", { class: "viewer", dataset: { index: i } },
+      el("div", { class: "caption" }, `${name} #${i}: E = ${fmt(value(i, "energy"), 5)}, 3D-ness ${fmt(value(i, "threedim"), 3)}`));
+    const downloads = el("div", { class: "controls" },
+      el("button", { class: "download-curve", onclick: () => download(curveObj(`elastic knot ${name}, equilibrium ${i}`, curve(k, i)), `${name}_${i}.obj`) }, "curve OBJ"),
+      el("button", { class: "download-tube", onclick: () => download(meshObj(`elastic knot ${name}, equilibrium ${i}, tube of radius ${radius * settings.thickness}`, viewer.geometry), `${name}_${i}_tube.obj`) }, "tube OBJ"));
+    row.append(el("div", {}, box, downloads));
+    const viewer = new TubeViewer(box);
+    return { i, box, viewer };
+  });
+  const attrs = site.attribute_names;
+  main.append(el("h3", {}, "Attributes"), el("table", { class: "data", id: "attributes" },
+    el("thead", {}, el("tr", {}, el("th", {}, "attribute"), indices.map((i) => el("th", {}, `#${i}`)))),
+    el("tbody", {}, attrs.map((a) => el("tr", {}, el("td", {}, ATTRIBUTE_LABELS[a] ?? a), indices.map((i) => el("td", {}, fmt(value(i, a), 6))))))));
+
+  function redraw(keepCamera = true) {
+    legend.replaceChildren(...(settings.mode === "curvature"
+      ? [el("span", {}, "curvature 0"), el("span", { class: "ramp", style: `background:${viridisGradient()}` }),
+        el("span", {}, `${fmt(vmax, 3)} / length (99th percentile)`)]
+      : [el("span", { class: "swatch", style: `background:rgb(${CONTACT.map((x) => x * 255).join(",")})` }), `closer than d̂ = ${site.dataset.dhat} to another strand`,
+        el("span", { class: "swatch", style: `background:rgb(${FREE.map((x) => x * 255).join(",")})` }), "free"]));
+    for (const v of viewers) {
+      v.viewer.show(curve(k, v.i), colors(k, v.i, settings.mode, vmax), radius * settings.thickness, { keepCamera });
+      v.box.dataset.drawn = "1";
+    }
+  }
+  redraw(false);
+  ready("view");
+  return () => viewers.forEach((v) => v.viewer.dispose());
+}
