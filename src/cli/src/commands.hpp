@@ -17,5 +17,6 @@ int cmd_merge(int argc, char** argv);
 int cmd_describe(int argc, char** argv);
 int cmd_cluster(int argc, char** argv);
 int cmd_query(int argc, char** argv);
+int cmd_search(int argc, char** argv);
 int cmd_export(int argc, char** argv);
 }  // namespace ek::cli
