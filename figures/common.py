@@ -1,6 +1,7 @@
 """Shared helpers of the figure scripts: arguments, reading results, drawing
-curves as three orthogonal shadow projections coloured by curvature (as the
-paper's figures do), saving PNG and PDF. Figure scripts read only the
+curves (draw_curve: one view; draw_three_shadows: three orthogonal shadow
+projections coloured by curvature, as the paper's figures do), saving PNG
+and PDF. Figure scripts read only the
 experiments' results files (results/<scale>/<experiment>/...), through the
 readers here: read_summary (summary.json), read_csv with flag (CSV tables),
 read_obj (curves), load_equilibria (data sets). The files' schemas are
@@ -106,6 +107,44 @@ def draw_shadow(ax, P, values, axes, vmax, lw=1.2):
     ax.set_xticks([])
     ax.set_yticks([])
     return lc
+
+
+def frame_of(P):
+    """The principal frame of a curve: (centre, R) with the rows of R its
+    principal axes, largest first; apply_frame(P, frame) = (P - centre) @ R.T.
+    Curves aligned onto one another (the search's alignment) are drawn in
+    the frame of one of them, so that they overlay."""
+    c = P.mean(axis=0)
+    _, _, vt = np.linalg.svd(P - c, full_matrices=False)
+    return c, vt
+
+
+def apply_frame(P, frame):
+    c, R = frame
+    return (P - c) @ R.T
+
+
+VIEWS = {"top": (0, 1), "front": (0, 2), "side": (1, 2)}
+
+
+def draw_curve(ax, P, view="top", frame=None, color=None, vmax=None, lw=1.2, label=None):
+    """Draws one closed curve (n by 3) into an axes, seen from `view` (top,
+    front or side of `frame`, default the curve's own principal frame):
+    coloured by curvature, or in one `color` (for overlays). The one function
+    through which the figures draw a knot, so that another renderer can
+    replace it; returns what a colour bar needs (or None)."""
+    Q = apply_frame(P, frame or frame_of(P))
+    axes = VIEWS[view]
+    if color is not None:
+        pts = Q[:, axes]
+        closed = np.vstack([pts, pts[:1]])
+        ax.plot(closed[:, 0], closed[:, 1], color=color, lw=lw, label=label)
+        ax.set_aspect("equal")
+        ax.set_xticks([])
+        ax.set_yticks([])
+        return None
+    k = curvature(Q)
+    return draw_shadow(ax, Q, k, axes, vmax or max(np.percentile(k, 99), 1e-9), lw=lw)
 
 
 def draw_three_shadows(axs, P, vmax=None):
