@@ -31,7 +31,7 @@ int main(int argc, char** argv) {
   return run_experiment(argc, argv, "exp_hausdorff", "Hausdorff distance against similarity on 6_1.", [](const Args& a) {
     const std::string knot = "6_1";
     const int samples = by_scale(a, 40, 150, 500);
-    const double pairs_estimate = 0.5 * samples * samples * 0.015;  // [s] ~15 ms per pair
+    const double pairs_estimate = 0.5 * samples * samples * 0.04;  // [s] ~40 ms per pair (docs/reproducing.md)
     announce(a, "exp_hausdorff", knot + " with " + std::to_string(samples) + " samples, every pair aligned",
              (samples * kSecondsPerRelaxation + pairs_estimate) / a.jobs);
     DatasetRunOptions ro;

@@ -85,7 +85,9 @@ struct StatePair {
 
 /// Every pair a < b of the entry's equilibria (m(m-1)/2, in order (0,1),
 /// (0,2), ...), aligned in `jobs` threads (the values do not depend on it).
-/// Cost: one alignment and one Hausdorff distance per pair (~15 ms at n = 400).
+/// Cost: one alignment and one Hausdorff distance per pair (6_1, n = 400:
+/// about 40 ms per pair and thread on a 2-core machine shared with other
+/// runs, measured 2026-12-01; mostly the alignment).
 std::vector<StatePair> pairwise_shape_distances(const KnotEntry& entry, double cut,
                                                 const AlignmentOptions& alignment = {}, int jobs = 1);
 

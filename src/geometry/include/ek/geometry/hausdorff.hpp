@@ -20,8 +20,7 @@
 /// result x satisfies
 ///   h - tolerance <= x <= h   (x is attained: a point of A at distance x from B).
 /// Cost: O(m_B) per evaluation of f (brute force over B's segments); n_A
-/// evaluations at the vertices plus a few per bisected piece (two 400-vertex
-/// curves a few edge lengths apart: ~1 ms).
+/// evaluations at the vertices plus a few per bisected piece.
 #include "ek/geometry/types.hpp"
 
 namespace ek {
