@@ -101,6 +101,41 @@ def draw_views(axs, P, views=("top", "front"), labels=True, **kwargs):
     return sm
 
 
+# The wire radius of every experiment's data sets (r = 0.2, experiments/common/scales.hpp),
+# for the figures whose summaries do not record it.
+WIRE_RADIUS = 0.2
+
+
+def frame_of(P):
+    """The principal frame of a curve: (centre, R) with the rows of R its
+    principal axes, largest first. Curves aligned onto one another (the
+    search's alignment) are drawn in the frame of one of them
+    (draw_framed), so that they overlay."""
+    c = P.mean(axis=0)
+    _, _, vt = np.linalg.svd(P - c, full_matrices=False)
+    return c, vt
+
+
+def draw_framed(ax, P, view, frame, color="curvature", label=None, radius=WIRE_RADIUS, radius_scale=4.0, **kwargs):
+    """draw_curve seen from `view` (top, front or side) of `frame` instead of
+    the curve's own principal frame; several curves drawn into one axes this
+    way overlay (each a tube; the later one is drawn over the earlier). The
+    axes' limits cover every curve drawn into it; `label` adds a legend entry
+    in `color`."""
+    c, R = frame if frame is not None else frame_of(np.asarray(P, dtype=float))
+    i, j = {"top": (0, 1), "front": (0, 2), "side": (1, 2)}[view]
+    right, up = R[i], R[j]
+    toward = np.cross(right, up)
+    sm = draw_curve(ax, np.asarray(P, dtype=float) - c, radius=radius, radius_scale=radius_scale,
+                    view=(-toward, up), color=color, center=False, **kwargs)
+    extents = [im.get_extent() for im in ax.images]
+    ax.set_xlim(min(e[0] for e in extents), max(e[1] for e in extents))
+    ax.set_ylim(min(e[2] for e in extents), max(e[3] for e in extents))
+    if label is not None:
+        ax.plot([], [], color=color, lw=3, label=label)
+    return sm
+
+
 def dataset_material(h5_path):
     """(radius, dhat) of a data set: the wire radius and the contact distance [length]."""
     import h5py

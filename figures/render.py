@@ -158,6 +158,8 @@ def vertex_colors(P, color, cmap, vmax, dhat):
         on = edges | np.roll(edges, 1)  # a vertex of an edge in contact
         rgb = np.where(on[:, None], np.array(CONTACT_RED), np.array(GREY))
         return rgb, None
+    if isinstance(color, str):  # a matplotlib colour name, "#rrggbb" or a grey level "0.8"
+        return np.array(np.broadcast_to(np.asarray(matplotlib.colors.to_rgb(color)), (n, 3))), None
     values = np.asarray(color, dtype=float)
     if values.shape == (n,):
         vmax = vmax if vmax is not None else float(values.max())

@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <tuple>
 
 #include "ek/analysis/search.hpp"
 #include "ek/core/errors.hpp"
@@ -61,6 +62,18 @@ TEST(Alignment, ReversalAndMirror) {
   const Alignment c = align_curves(T, M, m);
   EXPECT_LT(c.distance, 1e-6);
   EXPECT_TRUE(c.mirrored);
+  // aligned_candidate applies the symmetry and the motion: it lies on the query
+  // (Hausdorff-close, vertex by vertex up to the cyclic shift)
+  for (const auto& [query, cand, al] : {std::tuple{P, Rv, a}, std::tuple{T, M, c}}) {
+    const Points moved = aligned_candidate(cand, al);
+    double worst = 0.0;
+    for (Eigen::Index i = 0; i < moved.rows(); ++i) {
+      double best = 1e300;
+      for (Eigen::Index j = 0; j < query.rows(); ++j) best = std::min(best, (moved.row(i) - query.row(j)).norm());
+      worst = std::max(worst, best);
+    }
+    EXPECT_LT(worst, 1e-5);
+  }
   const Alignment d = align_curves(T, M);
   EXPECT_GT(d.distance, 0.05);  // the mirror trefoil cannot be aligned rigidly
   EXPECT_FALSE(d.mirrored);

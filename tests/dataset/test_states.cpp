@@ -3,9 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "ek/analysis/clustering.hpp"
 #include "ek/dataset/states.hpp"
+#include "testing.hpp"
 
 using namespace ek;
 
@@ -119,4 +121,82 @@ TEST(States, Puzzles) {
   EXPECT_DOUBLE_EQ(p[0].similarity, 0.5);
   EXPECT_EQ(find_puzzles(e, 0.05, 0.2).size(), 2u);  // 2/3 joins
   EXPECT_TRUE(find_puzzles(e, 0.05, 0.01).empty());
+}
+
+namespace {
+
+/// T(2,3) with a radial ripple of relative size `bump` (5 waves).
+Points rippled_trefoil(double bump) {
+  Points T = fixtures::torus_knot(200, 2, 3);
+  for (Eigen::Index i = 0; i < T.rows(); ++i) T.row(i) *= 1.0 + bump * std::sin(10.0 * M_PI * i / T.rows());
+  return T;
+}
+
+/// Equilibria: 0 = the trefoil T, 1 = T moved and re-indexed, 2 = T with a
+/// ripple of 5%, 3 = T with a ripple of 30%. Similarities: 0 ~ 1 and 2 ~ 3
+/// (0.99), the rest 0.5: clusters {0, 1} and {2, 3} at cut 0.05 (energies 1, 1, 2, 2).
+KnotEntry shape_entry() {
+  KnotEntry e;
+  e.name = "shapes";
+  e.equilibria = {rippled_trefoil(0.0),
+                  fixtures::rigid_copy(rippled_trefoil(0.0), fixtures::random_rotation(4), Vec3(1, 2, 3), 17),
+                  rippled_trefoil(0.05), rippled_trefoil(0.3)};
+  e.attribute_names = {"energy"};
+  e.attributes.resize(4, 1);
+  e.attributes << 1.0, 1.0, 2.0, 2.0;
+  e.similarity = Eigen::MatrixXd::Constant(4, 4, 0.5);
+  e.similarity.diagonal().setOnes();
+  e.similarity(0, 1) = e.similarity(1, 0) = 0.99;
+  e.similarity(2, 3) = e.similarity(3, 2) = 0.99;
+  e.linkage = complete_linkage_from_similarity(e.similarity).linkage_matrix();
+  return e;
+}
+
+}  // namespace
+
+// Same-cluster pairs: (0,1) at Hausdorff ~0 (a rigid copy, aligned), (2,3)
+// far apart (ripples of 5% and 30%): median = half their sum. The pairs
+// (0,2), (1,2) (Hausdorff ~5% of the size) lie in different clusters below
+// that median: separated; (0,3), (1,3) do not.
+TEST(States, HausdorffAgainstSimilarity) {
+  const KnotEntry e = shape_entry();
+  const auto pairs = pairwise_shape_distances(e, 0.05, {}, 2);
+  ASSERT_EQ(pairs.size(), 6u);
+  EXPECT_EQ(pairs[0].a, 0);
+  EXPECT_EQ(pairs[0].b, 1);
+  EXPECT_TRUE(pairs[0].same_cluster());
+  EXPECT_LT(pairs[0].hausdorff, 1e-5);
+  EXPECT_LT(pairs[0].icp_distance, 1e-6);
+  EXPECT_NEAR(pairs[0].similarity_distance, 0.01, 1e-12);
+  const auto& p23 = pairs[5];
+  EXPECT_EQ(p23.a, 2);
+  EXPECT_EQ(p23.b, 3);
+  EXPECT_TRUE(p23.same_cluster());
+  EXPECT_GT(p23.hausdorff, 0.3);  // the torus knot's radius is ~3, the ripples differ by 25%
+  for (const auto& p : pairs) {
+    EXPECT_GE(p.hausdorff, p.icp_distance - 1e-9);  // a maximum is at least an RMS of (vertex) distances
+    EXPECT_EQ(p.same_cluster(), (p.a < 2) == (p.b < 2));
+  }
+  const HausdorffSeparation s = hausdorff_separation(pairs, 0.05);
+  EXPECT_EQ(s.same_cluster_pairs, 2);
+  EXPECT_EQ(s.different_cluster_pairs, 4);
+  EXPECT_EQ(s.below_median_pairs, 2);
+  EXPECT_EQ(s.distinct_pairs, 4);
+  EXPECT_NEAR(s.median_same_cluster_hausdorff, 0.5 * (pairs[0].hausdorff + p23.hausdorff), 1e-12);
+  EXPECT_EQ(s.separated_pairs, 2);
+  const auto shown = closest_distinct_pairs(pairs, 0.05, 3);
+  ASSERT_EQ(shown.size(), 1u);  // one pair of clusters
+  EXPECT_LT(shown[0].a, 2);
+  EXPECT_EQ(shown[0].b, 2);
+  // the values do not depend on the number of threads
+  const auto one = pairwise_shape_distances(e, 0.05, {}, 1);
+  for (size_t k = 0; k < pairs.size(); ++k) EXPECT_EQ(one[k].hausdorff, pairs[k].hausdorff);
+  EXPECT_TRUE(std::isnan(hausdorff_separation({}, 0.05).median_same_cluster_hausdorff));
+  // at a cut above the pairs' similarity distance (0.5) no pair is separated
+  // by the similarity, though they lie in different clusters of the entry
+  const HausdorffSeparation high = hausdorff_separation(pairs, 0.6);
+  EXPECT_EQ(high.distinct_pairs, 0);
+  EXPECT_EQ(high.separated_pairs, 0);
+  EXPECT_EQ(high.below_median_pairs, 2);
+  EXPECT_TRUE(closest_distinct_pairs(pairs, 0.6, 3).empty());
 }

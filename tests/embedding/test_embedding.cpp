@@ -9,6 +9,7 @@
 #include "ek/geometry/writhe.hpp"
 #include "ek/contact/contact_potential.hpp"
 #include "ek/knots/alexander.hpp"
+#include "ek/knots/pretzel.hpp"
 #include "testing.hpp"
 
 using namespace ek;
@@ -79,6 +80,19 @@ TEST(Embedding, PDDrawingOfFigureEight) {
   const Embedding e = embed_knot(k, EmbeddingSource::PD, o);
   expect_valid(e, 200, 0.5);
   EXPECT_EQ(alexander(e.points).coefficients, (std::vector<std::int64_t>{-1, 3, -1}));
+}
+
+// Pretzel knots beyond the table (paper Fig. 15) embed from their generated
+// PD code with the code's knot type (the curve's own Alexander polynomial).
+TEST(Embedding, PDDrawingOfPretzelKnots) {
+  for (const std::vector<int>& p : std::vector<std::vector<int>>{{3, 3, 3}, {3, 3, 5}, {5, 5, 5}, {3, 3, 7}}) {
+    const PDCode pd = pretzel_pd(p);
+    EmbeddingOptions o;
+    o.vertices = 400;
+    const Embedding e = embed_pd(pd, o);
+    expect_valid(e, 400, 1.0);
+    EXPECT_EQ(alexander(e.points), alexander(pd)) << pretzel_name(p);
+  }
 }
 
 TEST(Embedding, UnknotIsACircle) {

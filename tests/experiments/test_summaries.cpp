@@ -6,7 +6,11 @@
 #include <gtest/gtest.h>
 
 #include "adaptive_summary.hpp"
+#include "cross_topology_summary.hpp"
 #include "dataset_summary.hpp"
+#include "filters_summary.hpp"
+#include "generalization_summary.hpp"
+#include "hausdorff_summary.hpp"
 #include "jumping_knots_summary.hpp"
 #include "milnor_summary.hpp"
 #include "multistability_summary.hpp"
@@ -166,4 +170,50 @@ TEST(Summaries, OtherSummariesRoundTrip) {
   TimeVsErrorSummary t;
   t.michell = {{400, 2.6, 1e-4}};
   EXPECT_EQ(round_trip(t).michell.at(0).n, 400);
+}
+
+// The summaries of Figs. 5, 7, 10 and 15: nested records and lists survive
+// the round trip; the Hausdorff median is null when no state has two members.
+TEST(Summaries, AnalysisFiguresRoundTrip) {
+  HausdorffSummary h;
+  h.knot = "6_1";
+  h.shown = {{1, 4, 0, 2, 0.8, 0.2, 0.3, 1.0, 1.2, "curves/a.obj", "curves/b.obj"}};
+  EXPECT_FALSE(round_trip(h).median_same_cluster_hausdorff.has_value());
+  h.median_same_cluster_hausdorff = 1.5;
+  h.below_median_pairs = 3;
+  const HausdorffSummary hr = round_trip(h);
+  EXPECT_EQ(hr.median_same_cluster_hausdorff, std::optional<double>(1.5));
+  EXPECT_EQ(hr.below_median_pairs, 3);
+  ASSERT_EQ(hr.shown.size(), 1u);
+  EXPECT_EQ(hr.shown[0].b, 4);
+  EXPECT_EQ(hr.shown[0].curve_b, "curves/b.obj");
+  FiltersSummary f;
+  f.attributes = {"energy", "diameter"};
+  f.extremes = {{"energy", "min", "3_1", 2, 0.5, "curves/energy_min.obj"}};
+  const FiltersSummary fr = round_trip(f);
+  EXPECT_EQ(fr.attributes, f.attributes);
+  EXPECT_EQ(fr.extremes.at(0).knot, "3_1");
+  CrossTopologySummary c;
+  c.queries.push_back({"8_1", 3, 1.0, 0.6, "curves/q.obj", 100, 40, {{1, "7_4", 5, 2.5, 1.1, 0.5, "curves/h.obj"}}});
+  const CrossTopologySummary cr = round_trip(c);
+  ASSERT_EQ(cr.queries.at(0).hits.size(), 1u);
+  EXPECT_EQ(cr.queries[0].hits[0].knot, "7_4");
+  EXPECT_DOUBLE_EQ(cr.queries[0].hits[0].distance, 2.5);
+  GeneralizationSummary g;
+  g.pattern.knot = "9_35";
+  g.pattern.circles.three_circles = true;
+  GeneralizationMember m;
+  m.name = "P(3,3,5)";
+  m.twists = {3, 3, 5};
+  m.alexander = {7, -13, 7};
+  m.table_knots = {"11a_1"};
+  g.members = {m};
+  EXPECT_FALSE(round_trip(g).dataset_min_relative_rms.has_value());  // null: no non-coplanar state
+  g.dataset_min_relative_rms = 0.09;
+  const GeneralizationSummary gr = round_trip(g);
+  EXPECT_EQ(gr.dataset_min_relative_rms, std::optional<double>(0.09));
+  EXPECT_TRUE(gr.pattern.circles.three_circles);
+  EXPECT_EQ(gr.members.at(0).twists, m.twists);
+  EXPECT_EQ(gr.members.at(0).alexander, m.alexander);
+  EXPECT_EQ(gr.members.at(0).table_knots, m.table_knots);
 }

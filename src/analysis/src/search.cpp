@@ -295,9 +295,13 @@ Alignment align_curves(const Points& query, const Points& candidate, const Align
     if (!polish_step(query, Q, Csym, Cres, scale, best)) break;
 
   // 4. the distance between the original polygons (vertices of each to the other)
-  const Points Cfinal = (Csym * best.rotation.transpose()).rowwise() + best.translation.transpose();
-  best.distance = symmetric_rms(query, Cfinal);
+  best.distance = symmetric_rms(query, aligned_candidate(candidate, best));
   return best;
+}
+
+Points aligned_candidate(const Points& candidate, const Alignment& alignment) {
+  const int sym = (alignment.reversed ? 1 : 0) | (alignment.mirrored ? 2 : 0);
+  return (apply_symmetry(candidate, sym) * alignment.rotation.transpose()).rowwise() + alignment.translation.transpose();
 }
 
 bool passes_filters(const Attributes& attributes, const std::vector<AttributeRange>& filters) {

@@ -92,8 +92,12 @@ int cmd_query(int argc, char** argv) {
   }
   if (!sort_attr.empty() && !columns.empty()) {
     const size_t col = static_cast<size_t>(std::find(columns.begin(), columns.end(), sort_attr) - columns.begin());
+    // NaN (a value not computed) sorts last in both directions (a strict weak order)
     std::stable_sort(rows.begin(), rows.end(), [&](const Row& a, const Row& b) {
-      return descending ? a.values[col] > b.values[col] : a.values[col] < b.values[col];
+      const double x = a.values[col], y = b.values[col];
+      if (std::isnan(x)) return false;
+      if (std::isnan(y)) return true;
+      return descending ? x > y : x < y;
     });
   }
   if (limit && rows.size() > static_cast<size_t>(*limit)) rows.resize(static_cast<size_t>(*limit));

@@ -17,6 +17,7 @@ int cmd_merge(int argc, char** argv);
 int cmd_describe(int argc, char** argv);
 int cmd_cluster(int argc, char** argv);
 int cmd_query(int argc, char** argv);
+int cmd_search(int argc, char** argv);
 int cmd_export(int argc, char** argv);
 int cmd_site(int argc, char** argv);
 int cmd_serve(int argc, char** argv);

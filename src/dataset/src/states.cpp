@@ -1,10 +1,14 @@
 #include "ek/dataset/states.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <limits>
+#include <thread>
 
 #include "ek/core/errors.hpp"
 #include "ek/core/hash.hpp"
+#include "ek/geometry/hausdorff.hpp"
 
 namespace ek {
 
@@ -72,6 +76,79 @@ std::vector<Puzzle> find_puzzles(const KnotEntry& e, double cut, double writhe_t
       if (1.0 - e.similarity(i, k) <= cut) continue;  // the two states must differ visibly
       out.push_back({i, k, wi, wk, 0.5 * (wi + wk), e.similarity(i, k)});
     }
+  return out;
+}
+
+std::vector<StatePair> pairwise_shape_distances(const KnotEntry& e, double cut, const AlignmentOptions& alignment,
+                                                int jobs) {
+  require(jobs >= 1, "pairwise_shape_distances: jobs must be >= 1");
+  alignment.validate();
+  std::vector<int> rank;
+  clusters_at_cut(e, cut, &rank);
+  const int m = static_cast<int>(e.equilibria.size());
+  std::vector<StatePair> pairs;
+  for (int a = 0; a < m; ++a)
+    for (int b = a + 1; b < m; ++b)
+      pairs.push_back({a, b, rank[static_cast<size_t>(a)], rank[static_cast<size_t>(b)], 1.0 - e.similarity(a, b), 0.0, 0.0});
+  std::atomic<size_t> next{0};
+  auto worker = [&] {
+    for (size_t q = next++; q < pairs.size(); q = next++) {
+      StatePair& p = pairs[q];
+      const Points& A = e.equilibria[static_cast<size_t>(p.a)];
+      const Points& B = e.equilibria[static_cast<size_t>(p.b)];
+      const Alignment al = align_curves(A, B, alignment);
+      p.icp_distance = al.distance;
+      p.hausdorff = hausdorff_distance(A, aligned_candidate(B, al)).distance;
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < std::min<int>(jobs, static_cast<int>(pairs.size())); ++t) pool.emplace_back(worker);
+  worker();
+  for (auto& t : pool) t.join();
+  return pairs;
+}
+
+namespace {
+bool separated_by_similarity(const StatePair& p, double cut) { return !p.same_cluster() && p.similarity_distance > cut; }
+}  // namespace
+
+HausdorffSeparation hausdorff_separation(const std::vector<StatePair>& pairs, double cut) {
+  HausdorffSeparation out;
+  std::vector<double> same;
+  for (const auto& p : pairs) {
+    if (p.same_cluster()) same.push_back(p.hausdorff);
+    out.different_cluster_pairs += !p.same_cluster();
+    out.distinct_pairs += separated_by_similarity(p, cut);
+  }
+  out.same_cluster_pairs = static_cast<int>(same.size());
+  if (same.empty()) {
+    out.median_same_cluster_hausdorff = std::numeric_limits<double>::quiet_NaN();
+    return out;
+  }
+  std::sort(same.begin(), same.end());
+  const size_t h = same.size() / 2;
+  out.median_same_cluster_hausdorff = same.size() % 2 ? same[h] : 0.5 * (same[h - 1] + same[h]);
+  for (const auto& p : pairs) {
+    const bool below = p.hausdorff < out.median_same_cluster_hausdorff;
+    out.below_median_pairs += !p.same_cluster() && below;
+    out.separated_pairs += separated_by_similarity(p, cut) && below;
+  }
+  return out;
+}
+
+std::vector<StatePair> closest_distinct_pairs(const std::vector<StatePair>& pairs, double cut, int count) {
+  std::vector<StatePair> distinct;
+  for (const auto& p : pairs)
+    if (separated_by_similarity(p, cut)) distinct.push_back(p);
+  std::stable_sort(distinct.begin(), distinct.end(),
+                   [](const StatePair& x, const StatePair& y) { return x.hausdorff < y.hausdorff; });
+  std::vector<StatePair> out;
+  std::set<std::pair<int, int>> used;
+  for (const auto& p : distinct) {
+    if (static_cast<int>(out.size()) >= count) break;
+    const auto key = std::minmax(p.cluster_a, p.cluster_b);
+    if (used.insert({key.first, key.second}).second) out.push_back(p);
+  }
   return out;
 }
 

@@ -74,6 +74,11 @@ struct Alignment {
 /// Aligns `candidate` to `query` (closed polygons, >= 3 vertices each).
 Alignment align_curves(const Points& query, const Points& candidate, const AlignmentOptions& options = {});
 
+/// The candidate moved by an alignment: its symmetry (reversed vertex order,
+/// mirror image x -> -x; they commute), then x -> rotation·x + translation. Row i is vertex i of the moved (possibly reversed) polygon;
+/// alignment.distance is the distance between the query and this curve.
+Points aligned_candidate(const Points& candidate, const Alignment& alignment);
+
 /// Closed range of one attribute (attribute names as in attributes.hpp).
 struct AttributeRange {
   std::string name;                                      ///< attribute name, e.g. "threedim"

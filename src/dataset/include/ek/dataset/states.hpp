@@ -2,7 +2,8 @@
 /// Analyses of a knot's stored states (a KnotEntry of a data set) used by the
 /// paper experiments: how many distinct states are distinctly 3D (Figs. 2, 6,
 /// 8), which low-energy states a prefix of the samples finds (adaptive
-/// sampling, Section 7.4), and knot puzzles (Section 8.3, Fig. 14).
+/// sampling, Section 7.4), knot puzzles (Section 8.3, Fig. 14), and the
+/// Hausdorff distance against the similarity measure (Section 7.1, Fig. 5).
 ///
 /// Distinct states are the clusters of clusters_at_cut(): complete linkage on
 /// 1 - similarity cut at a distance, sorted by increasing lowest energy, each
@@ -12,6 +13,7 @@
 #include <set>
 #include <vector>
 
+#include "ek/analysis/search.hpp"
 #include "ek/dataset/dataset_file.hpp"
 #include "ek/dataset/pipeline.hpp"
 
@@ -66,5 +68,51 @@ struct Puzzle {
 /// keep two clusters apart whose lowest-energy members look alike), in order
 /// of the clusters' energies.
 std::vector<Puzzle> find_puzzles(const KnotEntry& entry, double cut, double writhe_tolerance);
+
+/// Two equilibria of one knot compared by the similarity measure and by
+/// geometric distances after rigid alignment (Fig. 5).
+struct StatePair {
+  int a = -1, b = -1;                  ///< equilibrium indices, a < b
+  int cluster_a = -1, cluster_b = -1;  ///< their cluster ranks at the cut (clusters_at_cut)
+  double similarity_distance = 0.0;    ///< [1] 1 - similarity (the entry's stored matrix)
+  /// [length] Hausdorff distance d_H(E_a, E_b') between the polygons
+  /// (ek::hausdorff_distance, tolerance 1e-6), E_b' = E_b moved onto E_a by
+  /// ek::align_curves (the alignment of the cross-topology search)
+  double hausdorff = 0.0;
+  double icp_distance = 0.0;           ///< [length] the alignment's own RMS distance
+  bool same_cluster() const { return cluster_a == cluster_b; }
+};
+
+/// Every pair a < b of the entry's equilibria (m(m-1)/2, in order (0,1),
+/// (0,2), ...), aligned in `jobs` threads (the values do not depend on it).
+/// Cost: one alignment and one Hausdorff distance per pair (6_1, n = 400:
+/// about 40 ms per pair and thread on a 2-core machine shared with other
+/// runs, measured 2026-12-01; mostly the alignment).
+std::vector<StatePair> pairwise_shape_distances(const KnotEntry& entry, double cut,
+                                                const AlignmentOptions& alignment = {}, int jobs = 1);
+
+/// How well the Hausdorff distance separates the states. The reference is
+/// the median Hausdorff distance of the pairs within one cluster (one
+/// state): a pair of different clusters below it cannot be told apart by a
+/// Hausdorff cut that keeps the states together (the claim of Fig. 5).
+/// Stricter, a pair is separated by the similarity when its equilibria lie
+/// in different clusters at the cut and are themselves farther apart than
+/// the cut (similarity_distance > cut: complete linkage can put two
+/// look-alike members into different clusters).
+struct HausdorffSeparation {
+  int same_cluster_pairs = 0;       ///< [1]
+  /// [length] median Hausdorff distance of the same-cluster pairs (NaN without any)
+  double median_same_cluster_hausdorff = 0.0;
+  int different_cluster_pairs = 0;  ///< [1] pairs in different clusters at the cut
+  int below_median_pairs = 0;       ///< [1] of them, those with hausdorff < the median
+  int distinct_pairs = 0;           ///< [1] pairs separated by the similarity (stricter definition above)
+  int separated_pairs = 0;          ///< [1] of them, those with hausdorff < the median
+};
+HausdorffSeparation hausdorff_separation(const std::vector<StatePair>& pairs, double cut);
+
+/// Pairs separated by the similarity (as above) by increasing Hausdorff
+/// distance, at most one per pair of clusters, the first `count` (the pairs
+/// of Fig. 5: close in Hausdorff distance, apart in similarity).
+std::vector<StatePair> closest_distinct_pairs(const std::vector<StatePair>& pairs, double cut, int count);
 
 }  // namespace ek
