@@ -20,7 +20,8 @@
 // the multilevel relaxation and the block factorisation: Direct, hybrid
 // Hessian, CHOLMOD simplicial), hybrid (Direct with the block
 // factorisation), projected (hybrid without its exact region), exact (the
-// exact Hessian every iteration), paper (NewtonOptions::paper()). The
+// exact Hessian every iteration), paper (NewtonOptions::paper()), levels2
+// (the multilevel method with two coarse levels, n/4 and n/2). The
 // default is "default,today". --method M is --methods M.
 //
 // --peer DIR: instead of the lattice samples, every curve file of DIR (the
@@ -128,6 +129,11 @@ Method method_named(const std::string& name, const ek::RelaxOptions& base) {
   if (name == "projected") {
     Method m{name, ek::with_method(base, "hybrid")};
     m.options.newton.exact_after_full_steps = 0;
+    return m;
+  }
+  if (name == "levels2") {  // the multilevel method with two coarse levels (n/4, n/2)
+    Method m{name, ek::with_method(base, "default")};
+    m.options.coarse_levels = 2;
     return m;
   }
   return Method{name, ek::with_method(base, name)};
