@@ -320,6 +320,19 @@ class KnotGroupReader {
   std::string path_, name_;
 };
 
+/// Runs `read`; an InputError that does not name the file (one of the HDF5
+/// helpers') is given the context "data set 'PATH'[, knot NAME]: ".
+template <class F>
+auto naming_the_file(const std::string& path, const std::string& knot, F&& read) {
+  try {
+    return read();
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    if (message.find("'" + path + "'") != std::string::npos) throw;
+    throw InputError("data set '" + path + "'" + (knot.empty() ? "" : ", knot " + knot) + ": " + message);
+  }
+}
+
 /// Reads all of `path` (metadata and every knot) and exits the process: 0
 /// when it reads, 2 on an InputError (its message, at most 4 kB, written to
 /// `message_fd`), 3 on any other exception.
@@ -327,12 +340,16 @@ class KnotGroupReader {
   int status = 0;
   try {
     h5::Handle f = h5::open_file(path, false);
-    read_meta(f.id(), path);
-    h5::Handle knots = h5::open_group(f.id(), "knots");
-    for (const auto& name : h5::read_strings(f.id(), "knot_names")) {
-      h5::Handle g = h5::open_group(knots.id(), name);
-      KnotGroupReader(g.id(), path, name).read();
-    }
+    const auto names = naming_the_file(path, "", [&] {
+      read_meta(f.id(), path);
+      return h5::read_strings(f.id(), "knot_names");
+    });
+    h5::Handle knots = naming_the_file(path, "", [&] { return h5::open_group(f.id(), "knots"); });
+    for (const auto& name : names)
+      naming_the_file(path, name, [&] {
+        h5::Handle g = h5::open_group(knots.id(), name);
+        return KnotGroupReader(g.id(), path, name).read();
+      });
   } catch (const InputError& e) {
     const std::string message = std::string(e.what()).substr(0, 4096);  // fits the pipe: no blocking
     if (::write(message_fd, message.data(), message.size()) < 0) status = 3;
@@ -421,8 +438,11 @@ DatasetReader::DatasetReader(const std::string& path) : impl_(new Impl) {
   impl_->path = path;
   if (!h5::verify(path)) read_in_child(path);
   impl_->file = h5::open_file(path, false);
-  impl_->meta = read_meta(impl_->file.id(), path);
-  impl_->names = h5::read_strings(impl_->file.id(), "knot_names");
+  naming_the_file(path, "", [&] {
+    impl_->meta = read_meta(impl_->file.id(), path);
+    impl_->names = h5::read_strings(impl_->file.id(), "knot_names");
+    return 0;
+  });
 }
 
 DatasetReader::~DatasetReader() = default;
@@ -435,9 +455,11 @@ bool DatasetReader::has_knot(const std::string& name) const {
 
 KnotEntry DatasetReader::read(const std::string& name) const {
   if (!has_knot(name)) throw InputError("data set '" + impl_->path + "' has no knot '" + name + "'");
-  h5::Handle knots = h5::open_group(impl_->file.id(), "knots");
-  h5::Handle g = h5::open_group(knots.id(), name);
-  return KnotGroupReader(g.id(), impl_->path, name).read();
+  return naming_the_file(impl_->path, name, [&] {
+    h5::Handle knots = h5::open_group(impl_->file.id(), "knots");
+    h5::Handle g = h5::open_group(knots.id(), name);
+    return KnotGroupReader(g.id(), impl_->path, name).read();
+  });
 }
 
 }  // namespace ek
