@@ -99,7 +99,9 @@ Outcome cli(const std::string& args, const std::string& command,
   if (r.status == 0) return expected(r) ? Outcome::Correct : Outcome::Wrong;
   const bool one_line = std::count(r.err.begin(), r.err.end(), '\n') == 1 &&
                         r.err.rfind("knots " + command + ": error: ", 0) == 0;
-  return r.status == 2 && one_line ? Outcome::Refused : Outcome::Crash;
+  if (r.status == 2 && one_line) return Outcome::Refused;
+  std::printf("  knots %s: exit status %d, stderr: %s\n", args.c_str(), r.status, r.err.substr(0, 300).c_str());
+  return Outcome::Crash;
 }
 
 /// The worst of the reads of one damaged file.
