@@ -205,8 +205,8 @@ TEST(DatasetCli, KilledAtRandomMomentsKeepsEveryFinishedRun) {
   const double full_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   const auto full = equilibria(dir + "/full.h5");
   std::mt19937_64 rng(8);
-  int killed = 0, with_output = 0, finished_total = 0;
-  for (int trial = 0; killed < 20 && trial < 60; ++trial) {
+  int trials = 0, killed = 0, with_output = 0, finished_total = 0, resumed_total = 0;
+  for (int trial = 0; killed < 20 && trial < 60; ++trial, ++trials) {
     const std::string out = dir + "/killed" + std::to_string(trial) + ".h5", work = out + ".work";
     const double moment = std::uniform_real_distribution<double>(0.0, full_seconds)(rng);
     if (!run_and_kill(args + "-o " + out, moment)) continue;  // finished before the moment
@@ -221,12 +221,14 @@ TEST(DatasetCli, KilledAtRandomMomentsKeepsEveryFinishedRun) {
     finished_total += finished;
     const auto resumed = run(args + "-o " + out + " --json");
     ASSERT_EQ(resumed.status, 0) << resumed.err;
+    resumed_total += resumed.json()["runs"].get<int>();
     EXPECT_EQ(resumed.json()["runs"].get<int>(), 2 * samples - finished) << "killed after " << moment << " s";
     EXPECT_EQ(equilibria(out), full) << "killed after " << moment << " s";
     EXPECT_FALSE(fs::exists(work));
   }
-  std::printf("%d kills (a run takes %.1f s): %d runs of %d finished before them and kept, %d after the output "
-              "was written\n", killed, full_seconds, finished_total, 2 * samples * killed, with_output);
+  std::printf("%d trials, %d kills (a run takes %.1f s): %d runs of %d finished before them and kept, %d runs "
+              "performed by the resumed runs, %d kills after the output was written\n",
+              trials, killed, full_seconds, finished_total, 2 * samples * killed, resumed_total, with_output);
   EXPECT_EQ(killed, 20);
   fs::remove_all(dir);
 }

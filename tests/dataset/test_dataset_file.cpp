@@ -358,6 +358,8 @@ TEST(DatasetMetadataTable, TextAndJsonDescriptions) {
   EXPECT_EQ(j["contact_continuation"], nlohmann::json::parse("[0.001, 0.03333333333333333]"));
   EXPECT_NE(m.text().find("max_iterations        not recorded"), std::string::npos) << m.text();
   EXPECT_NE(m.text().find("radius                0.25 [length]"), std::string::npos) << m.text();
+}
+
 namespace {
 
 std::string slurp(const std::string& path) {

@@ -50,6 +50,9 @@ void write_meta(hid_t f, const DatasetMetadata& m) {
   }
 }
 
+/// A field's attribute, which must hold one value of the field's kind: the
+/// h5::get_attr_* helpers refuse an attribute of another shape (several
+/// values where one belongs) or type with an InputError naming it.
 FieldValue read_present(hid_t f, const MetadataField& field, const std::string& path) {
   switch (field.kind) {
     case FieldKind::Real: return h5::get_attr_double(f, field.name);
