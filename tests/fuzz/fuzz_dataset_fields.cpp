@@ -12,6 +12,7 @@
 #include <cstdlib>
 
 #include "ek/dataset/dataset_file.hpp"
+#include "ek/dataset/metadata.hpp"
 #include "fuzz_common.hpp"
 #include "h5.hpp"
 
@@ -114,12 +115,12 @@ void root(FuzzedDataProvider& in, hid_t f) {
     Handle a(H5Acreate2(f, "format_version", H5T_NATIVE_INT64, space.id(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
     H5Awrite(a.id(), H5T_NATIVE_INT64, &version);
   }
-  for (const char* name : {"project_version", "created", "knot_table", "twist_model", "sampling",
-                           "contact_continuation"})
-    field(in, f, name, Kind::String, {}, true);
-  for (const char* name : {"young", "poisson", "radius", "edge_length", "tolerance", "contact_stiffness", "dhat"})
-    field(in, f, name, Kind::Double, {}, true);
-  for (const char* name : {"vertices", "seed", "max_iterations"}) field(in, f, name, Kind::Int, {}, true);
+  // every parameter of the table (metadata.hpp), as the writer stores its kind
+  for (const auto& p : ek::metadata_fields()) {
+    const bool text = p.kind == ek::FieldKind::Text || p.kind == ek::FieldKind::List;
+    field(in, f, p.name, p.kind == ek::FieldKind::Real ? Kind::Double : text ? Kind::String : Kind::Int, {}, true,
+          p.kind == ek::FieldKind::List ? "0.001,0.1" : "");
+  }
 }
 
 void knot(FuzzedDataProvider& in, hid_t knots, const std::string& name) {

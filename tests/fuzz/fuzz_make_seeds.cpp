@@ -53,10 +53,34 @@ ek::KnotEntry knot(const std::string& name, int m, int n) {
 }
 
 void write_dataset(const std::string& path, const std::vector<ek::KnotEntry>& knots) {
+  // every parameter a run records (metadata.hpp); n = 6 for small seeds
   ek::DatasetMetadata meta;
+  meta.young = 2000.0;
+  meta.poisson = 0.3;
+  meta.radius = 0.2;
   meta.vertices = 6;
+  meta.edge_length = 1.0;
+  meta.tolerance = 1e-8;
+  meta.contact_stiffness = 100.0;
+  meta.dhat = 0.5;
+  meta.twist_model = "twist-free";
+  meta.relax_method = "multilevel";
+  meta.coarse_levels = 1;
+  meta.coarse_continuation = std::vector<double>{0.01};
+  meta.newton_hessian = "exact";
+  meta.remove_rigid_motions = true;
+  meta.max_iterations = 5000;
+  meta.burn_in = 0;
   meta.sampling = "fixed:2";
+  meta.grow_fugacity = 0.4;
+  meta.shrink_fugacity = 0.1;
+  meta.growth_factor = 10.0;
+  meta.decorrelation_moves = 0;
+  meta.seed = 1;
+  meta.compute_stiffness = false;
+  meta.contact_continuation = std::vector<double>{};
   meta.project_version = "seed";
+  meta.knot_table = "knotinfo_table.csv";
   meta.created = "2000-01-01T00:00:00Z";
   ek::DatasetWriter w(path, meta);
   for (const auto& k : knots) w.add(k);
