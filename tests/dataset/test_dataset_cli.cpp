@@ -360,6 +360,7 @@ TEST(DatasetCli, EveryParameterMustMatchToExtendOrMerge) {
   ASSERT_EQ(t.status, 0) << t.err;
   EXPECT_NE(t.out.find("radius                0.2 [length]"), std::string::npos) << t.out;
   EXPECT_NE(t.out.find("knots (1): 3_1"), std::string::npos) << t.out;
-  expect_bad_input("describe " + dir + "/none.h5", "not a readable HDF5 data set");
+  expect_bad_input("describe " + dir + "/none.h5",
+                   "cannot open data set '" + dir + "/none.h5': No such file or directory");
   fs::remove_all(dir);
 }
