@@ -12,11 +12,11 @@ CMAKE_ARGS ?=
 CONFIGURE = cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DEK_KNOT_TABLE=$(KNOT_TABLE) $(CMAKE_ARGS)
 CTEST     = cd $(BUILD) && KNOT_TABLE=$(KNOT_TABLE) ctest --output-on-failure -j$(JOBS)
 
-.PHONY: help help-experiments deps configure build test unit sanitize stress slurm-test bench figures experiments claims paper-open manifest compare-methods clean \
+.PHONY: help help-experiments deps configure build test unit sanitize fuzz fuzz-build fuzz-test fuzz-seeds stress slurm-test bench figures experiments claims paper-open manifest compare-methods clean \
         explorer explorer-screenshots serve browser
 
 help:
-	@echo "make test      build, run all tests (unit, parsers, short stress, paper claims at ci scale, Slurm, sanitizers)"
+	@echo "make test      build, run all tests (unit, parsers, short stress, paper claims at ci scale, Slurm, sanitizers, fuzz corpus + 20 s per fuzz target)"
 	@echo "make figures   build, run every experiment at SCALE=$(SCALE), write figures/out/*.png|pdf"
 	@echo "make experiment-NAME   run one experiment (NAME: $(PAPER_EXPERIMENTS) $(BENCH_EXPERIMENTS))"
 	@echo "make help-experiments  each experiment's inputs and run time per scale (experiments/manifest.json)"
@@ -31,11 +31,12 @@ help:
 	@echo "make stress    the long numerical stress tests (label stress-long)"
 	@echo "make sanitize  parsers and readers built and tested with AddressSanitizer and UBSan"
 	@echo "make slurm-test  the data set as a Slurm job array on a single-host Slurm (docs/cluster.md; root)"
+	@echo "make fuzz      libFuzzer on every reader, FUZZ_SECONDS=$(FUZZ_SECONDS) per target; crash inputs in results/fuzz/"
 	@echo "make unit      unit tests only"
 	@echo "make deps      install missing Debian packages (scripts/install-deps.sh)"
 	@echo "make manifest  regenerate experiments/manifest.mk from experiments/manifest.json"
 	@echo "make clean     remove build folders (results/ and figures/out/ are kept)"
-	@echo "Variables: KNOT_TABLE=$(KNOT_TABLE) SCALE=ci|default|paper JOBS=$(JOBS) BUILD=$(BUILD)"
+	@echo "Variables: KNOT_TABLE=$(KNOT_TABLE) SCALE=ci|default|paper JOBS=$(JOBS) BUILD=$(BUILD) FUZZ_SECONDS=$(FUZZ_SECONDS)"
 	@echo "Documentation: README.md; docs/reproducing.md (targets, scales, claims), docs/cli.md (knots),"
 	@echo "  docs/models.md, docs/performance.md, docs/dataset-format.md, docs/results.md (results files),"
 	@echo "  docs/cluster.md (Slurm), docs/explorer.md (the data-set explorer)"
@@ -49,7 +50,7 @@ configure: deps
 build: configure
 	cmake --build $(BUILD) -j$(JOBS)
 
-test: build sanitize
+test: build sanitize fuzz-test
 	$(CTEST) -LE 'stress-long|sanitize|paper-open'
 
 unit: build
@@ -69,6 +70,28 @@ sanitize: deps
 slurm-test: configure
 	cmake --build $(BUILD) -j$(JOBS) --target knots
 	$(CTEST) -L slurm
+
+# libFuzzer targets of the readers (tests/fuzz/): Clang with ASan and UBSan,
+# parsers-only modules, in $(BUILD)-fuzz. `make fuzz` runs each target for
+# FUZZ_SECONDS ($(JOBS) at a time) and fails on any crash (its input is left
+# in results/fuzz/TARGET/); `make test` replays the seed corpus and runs each
+# target for 20 s (CTest label fuzz).
+FUZZ_SECONDS ?= 300
+fuzz-build: deps
+	@cmake -S . -B $(BUILD)-fuzz -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Debug \
+	  -DCMAKE_C_FLAGS=-O1 -DCMAKE_CXX_FLAGS=-O1 -DEK_FUZZ=ON -DEK_PARSERS_ONLY=ON -DEK_BUILD_TESTS=OFF \
+	  -DEK_KNOT_TABLE=$(KNOT_TABLE) > /dev/null
+	cmake --build $(BUILD)-fuzz -j$(JOBS)
+
+fuzz: fuzz-build
+	$(PYTHON) tests/fuzz/run_fuzz.py --build $(BUILD)-fuzz --results results/fuzz --seconds $(FUZZ_SECONDS) --jobs $(JOBS)
+
+fuzz-test: fuzz-build
+	cd $(BUILD)-fuzz && ctest --output-on-failure -j$(JOBS) -L fuzz
+
+# Rewrites the binary seeds (data sets, journals) of tests/fuzz/corpus/.
+fuzz-seeds: fuzz-build
+	$(BUILD)-fuzz/tests/fuzz/fuzz_make_seeds tests/fuzz/corpus
 
 # Prints the counts of every stress test (-V) and keeps one CSV row per run
 # of the 10,000-sample volume in results/stress/volume.csv.
@@ -175,4 +198,4 @@ help-experiments:
 	@echo "(inputs, outputs, figures and checks: experiments/manifest.json)"
 
 clean:
-	rm -rf $(BUILD) $(BUILD)-asan
+	rm -rf $(BUILD) $(BUILD)-asan $(BUILD)-fuzz

@@ -7,7 +7,7 @@
 set -euo pipefail
 
 packages=(
-  build-essential cmake pkg-config
+  build-essential cmake pkg-config clang libclang-rt-dev
   libeigen3-dev libsuitesparse-dev libfftw3-dev libgsl-dev libhdf5-dev libspectra-dev
   nlohmann-json3-dev libgtest-dev libbenchmark-dev
   python3 python3-matplotlib python3-numpy python3-h5py python3-pil

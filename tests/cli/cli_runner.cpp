@@ -10,11 +10,12 @@
 
 namespace ek::clitest {
 
-Result run(const std::string& args) {
+Result run(const std::string& args, int timeout_seconds) {
   static int counter = 0;
   const std::string base = std::filesystem::temp_directory_path().string() + "/ek_cli_" +
                            std::to_string(::getpid()) + "_" + std::to_string(counter++);
-  const std::string cmd = std::string(EK_KNOTS_BIN) + " " + args + " >" + base + ".out 2>" + base + ".err";
+  const std::string limit = timeout_seconds > 0 ? "timeout -s KILL " + std::to_string(timeout_seconds) + " " : "";
+  const std::string cmd = limit + std::string(EK_KNOTS_BIN) + " " + args + " >" + base + ".out 2>" + base + ".err";
   Result r;
   const int raw = std::system(cmd.c_str());
   r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;

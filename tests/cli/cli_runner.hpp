@@ -11,8 +11,9 @@ struct Result {
   nlohmann::json json() const { return nlohmann::json::parse(out); }
 };
 
-/// Runs `knots ARGS` (ARGS is passed to /bin/sh, quote accordingly).
-Result run(const std::string& args);
+/// Runs `knots ARGS` (ARGS is passed to /bin/sh, quote accordingly). With
+/// timeout_seconds > 0 the process is killed after that long (status 137).
+Result run(const std::string& args, int timeout_seconds = 0);
 
 /// A fresh temporary folder for one test.
 std::string temp_dir(const std::string& name);

@@ -2,9 +2,12 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iostream>
+#include <sstream>
 
 #include "cli_runner.hpp"
 #include "ek/geometry/curve_io.hpp"
+#include "output.hpp"
 #include "testing.hpp"
 
 using ek::clitest::run;
@@ -133,4 +136,17 @@ TEST(Cli, MissingKnotTableIsOneLineError) {
   EXPECT_EQ(r.status, 2);
   EXPECT_NE(r.err.find("/nonexistent.csv"), std::string::npos) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+}
+
+// Text read from a damaged file may not be UTF-8 (found by the corruption
+// test: a changed byte in an attribute name of a file without checksum made
+// `knots query --json` fail with an internal error): it prints as U+FFFD.
+TEST(Cli, JsonOutputReplacesBytesThatAreNotUtf8) {
+  std::ostringstream captured;
+  auto* old = std::cout.rdbuf(captured.rdbuf());
+  ek::cli::Json j;
+  j["name\xc1x"] = "ok";
+  EXPECT_NO_THROW(ek::cli::print_json(j));
+  std::cout.rdbuf(old);
+  EXPECT_EQ(captured.str(), "{\"name\xef\xbf\xbdx\":\"ok\"}\n");
 }

@@ -7,6 +7,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <random>
 #include <fstream>
 #include <sstream>
 #include <thread>
@@ -14,6 +15,7 @@
 #include "cli_runner.hpp"
 #include "ek/dataset/dataset_file.hpp"
 #include "metadata_testing.hpp"
+#include "journal.hpp"
 
 using ek::clitest::run;
 using ek::clitest::temp_dir;
@@ -150,6 +152,87 @@ TEST(DatasetCli, KilledRunResumesWithoutLoss) {
   fs::remove_all(dir);
 }
 
+namespace {
+
+/// Runs of `knot` already finished in the work folder: all of them when its
+/// part file is there (a finished knot), else the journal's intact records.
+int finished_runs(const std::string& work, const std::string& knot, int samples) {
+  const std::string part = work + "/" + knot + ".h5";
+  if (fs::exists(part)) {
+    ek::DatasetReader r(part);  // never half-written: it is renamed into place
+    EXPECT_EQ(static_cast<int>(r.read(knot).runs.size()), samples);
+    return samples;
+  }
+  const std::string data = slurp(work + "/" + knot + ".journal");
+  const size_t line1 = data.find('\n'), line2 = line1 == std::string::npos ? line1 : data.find('\n', line1 + 1);
+  if (line2 == std::string::npos) return 0;  // no journal, or killed while writing its header
+  return static_cast<int>(ek::parse_journal(data, data.substr(0, line2 + 1), knot).runs.size());
+}
+
+/// Starts `knots ARGS` and kills it with SIGKILL after `seconds` (if it is
+/// still running then). Returns true when it was killed.
+bool run_and_kill(const std::string& args, double seconds) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    execl("/bin/sh", "sh", "-c", ("exec " + std::string(EK_KNOTS_BIN) + " " + args + " >/dev/null 2>&1").c_str(),
+          static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+  int status = 0;
+  while (std::chrono::steady_clock::now() < deadline) {
+    if (waitpid(pid, &status, WNOHANG) == pid) return false;
+    std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  kill(pid, SIGKILL);
+  waitpid(pid, &status, 0);
+  return WIFSIGNALED(status);
+}
+
+}  // namespace
+
+// A data-set run killed (SIGKILL) at 20 random moments between its start and
+// its end (trials whose run ends before the moment are repeated): after each
+// kill the output is absent or complete, every part file reads, and resuming
+// performs exactly the runs that had not finished (every finished run is
+// kept, none repeated) and gives the equilibria of an uninterrupted run.
+TEST(DatasetCli, KilledAtRandomMomentsKeepsEveryFinishedRun) {
+  const std::string dir = temp_dir("ds_kills");
+  const int samples = 6;
+  const std::string args = "dataset --names 3_1,4_1 --samples " + std::to_string(samples) + " --jobs 1" + kSmall;
+  const auto t0 = std::chrono::steady_clock::now();
+  ASSERT_EQ(run(args + "-o " + dir + "/full.h5").status, 0);
+  const double full_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const auto full = equilibria(dir + "/full.h5");
+  std::mt19937_64 rng(8);
+  int trials = 0, killed = 0, with_output = 0, finished_total = 0, resumed_total = 0;
+  for (int trial = 0; killed < 20 && trial < 60; ++trial, ++trials) {
+    const std::string out = dir + "/killed" + std::to_string(trial) + ".h5", work = out + ".work";
+    const double moment = std::uniform_real_distribution<double>(0.0, full_seconds)(rng);
+    if (!run_and_kill(args + "-o " + out, moment)) continue;  // finished before the moment
+    ++killed;
+    int finished = 2 * samples;
+    if (fs::exists(out)) {
+      ++with_output;
+      EXPECT_EQ(equilibria(out), full) << "killed after " << moment << " s";
+    } else {
+      finished = finished_runs(work, "3_1", samples) + finished_runs(work, "4_1", samples);
+    }
+    finished_total += finished;
+    const auto resumed = run(args + "-o " + out + " --json");
+    ASSERT_EQ(resumed.status, 0) << resumed.err;
+    resumed_total += resumed.json()["runs"].get<int>();
+    EXPECT_EQ(resumed.json()["runs"].get<int>(), 2 * samples - finished) << "killed after " << moment << " s";
+    EXPECT_EQ(equilibria(out), full) << "killed after " << moment << " s";
+    EXPECT_FALSE(fs::exists(work));
+  }
+  std::printf("%d trials, %d kills (a run takes %.1f s): %d runs of %d finished before them and kept, %d runs "
+              "performed by the resumed runs, %d kills after the output was written\n",
+              trials, killed, full_seconds, finished_total, 2 * samples * killed, resumed_total, with_output);
+  EXPECT_EQ(killed, 20);
+  fs::remove_all(dir);
+}
+
 // A merge of two shards equals the unsharded run; overlapping, missing,
 // repeated and unfinished shards are refused.
 TEST(DatasetCli, MergedShardsEqualTheUnshardedRun) {
@@ -277,6 +360,7 @@ TEST(DatasetCli, EveryParameterMustMatchToExtendOrMerge) {
   ASSERT_EQ(t.status, 0) << t.err;
   EXPECT_NE(t.out.find("radius                0.2 [length]"), std::string::npos) << t.out;
   EXPECT_NE(t.out.find("knots (1): 3_1"), std::string::npos) << t.out;
-  expect_bad_input("describe " + dir + "/none.h5", "not a readable HDF5 data set");
+  expect_bad_input("describe " + dir + "/none.h5",
+                   "cannot open data set '" + dir + "/none.h5': No such file or directory");
   fs::remove_all(dir);
 }

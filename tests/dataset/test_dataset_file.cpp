@@ -10,9 +10,12 @@
 #include <sstream>
 
 #include "ek/core/errors.hpp"
+#include "child_read.hpp"
 #include "ek/dataset/dataset_file.hpp"
 #include "metadata_testing.hpp"
+#include "h5.hpp"
 #include "testing.hpp"
+#include "unsealed_copy.hpp"
 
 using namespace ek;
 using ek::testing_metadata::changed;
@@ -125,12 +128,14 @@ namespace {
 
 bool is_empty(const FieldValue& v) { return std::holds_alternative<std::monostate>(v); }
 
-/// Runs f on the open file (read-write).
+/// Runs f on the open file (read-write) and writes a new checksum, so that
+/// the reader's own checks of what f changed are what is tested.
 void edit_file(const std::string& path, const std::function<void(hid_t)>& f) {
   const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
   ASSERT_GE(file, 0);
   f(file);
-  H5Fclose(file);
+  ASSERT_GE(H5Fclose(file), 0);
+  h5::seal(path);
 }
 
 void write_int_attribute(hid_t f, const char* name, long long value) {
@@ -353,4 +358,229 @@ TEST(DatasetMetadataTable, TextAndJsonDescriptions) {
   EXPECT_EQ(j["contact_continuation"], nlohmann::json::parse("[0.001, 0.03333333333333333]"));
   EXPECT_NE(m.text().find("max_iterations        not recorded"), std::string::npos) << m.text();
   EXPECT_NE(m.text().find("radius                0.25 [length]"), std::string::npos) << m.text();
+}
+
+namespace {
+
+std::string slurp(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+void spit(const std::string& path, const std::string& bytes) {
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+}
+
+/// A data set of two knots (2 and 0 equilibria of 20 vertices).
+std::string small_dataset(const std::string& name) {
+  const std::string path = ::testing::TempDir() + name;
+  DatasetWriter w(path, complete_metadata());
+  w.add(sample_entry("3_1", 2, 20));
+  w.add(sample_entry("4_1", 0, 20));
+  w.commit();
+  return path;
+}
+
+/// Every stored value of the two data sets is equal.
+void expect_same_content(const std::string& a, const std::string& b) {
+  DatasetReader ra(a), rb(b);
+  EXPECT_EQ(ra.metadata().difference(rb.metadata()), "");
+  EXPECT_EQ(ra.metadata().sampling, rb.metadata().sampling);
+  ASSERT_EQ(ra.knot_names(), rb.knot_names());
+  for (const auto& name : ra.knot_names()) {
+    const KnotEntry x = ra.read(name), y = rb.read(name);
+    EXPECT_EQ(x.equilibria, y.equilibria) << name;
+    EXPECT_EQ(x.attributes, y.attributes) << name;
+    EXPECT_EQ(x.runs.size(), y.runs.size()) << name;
+    EXPECT_EQ(x.similarity, y.similarity) << name;
+  }
+}
+
+template <class F>
+void expect_refused(F read, const std::string& needle) {
+  try {
+    read();
+    ADD_FAILURE() << "expected an InputError containing '" << needle << "'";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find(needle), std::string::npos) << message;
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+  }
+}
+
+}  // namespace
+
+// A data set carries the CRC-32 and length of its bytes in the HDF5 user
+// block: truncation, a flipped bit, an appended byte or a damaged header are
+// refused before HDF5 parses anything.
+TEST(DatasetFile, ChecksumDetectsDamage) {
+  const std::string path = small_dataset("sealed.h5");
+  const std::string good = slurp(path);
+  ASSERT_EQ(good.compare(0, 33, "elastic-knots-dataset checksum 1\n"), 0);
+  EXPECT_EQ(good.compare(512, 4, "\x89HDF"), 0);
+  const std::string damaged = path + ".damaged.h5";
+  spit(damaged, good.substr(0, good.size() - 100));
+  expect_refused([&] { DatasetReader r(damaged); }, "bytes, but it was written with " + std::to_string(good.size()));
+  for (size_t at : {size_t{600}, good.size() / 2, good.size() - 1}) {
+    std::string flipped = good;
+    flipped[at] = static_cast<char>(flipped[at] ^ 0x10);
+    spit(damaged, flipped);
+    expect_refused([&] { DatasetReader r(damaged); }, "its checksum does not match");
+  }
+  std::string header = good;
+  header[40] = static_cast<char>(header[40] ^ 0x01);  // a digit of the CRC
+  spit(damaged, header);
+  expect_refused([&] { DatasetReader r(damaged); }, "damaged");
+  header = good;
+  header[300] = 'x';  // the zero padding
+  spit(damaged, header);
+  expect_refused([&] { DatasetReader r(damaged); }, "checksum header is unreadable");
+  spit(damaged, good + "x");
+  expect_refused([&] { DatasetReader r(damaged); }, "truncated or extended");
+  spit(damaged, std::string(600, '\0'));
+  expect_refused([&] { DatasetReader r(damaged); }, "is not a readable HDF5 data set");
+  std::remove(damaged.c_str());
+  std::remove(path.c_str());
+}
+
+// Files written before data sets carried a checksum (HDF5 signature at byte
+// 0, no user block) are read as before.
+TEST(DatasetFile, FilesWithoutChecksumAreStillRead) {
+  const std::string path = small_dataset("with_checksum.h5");
+  const std::string old = ::testing::TempDir() + "without_checksum.h5";
+  fixtures::write_unsealed_copy(path, old);
+  ASSERT_EQ(slurp(old).compare(0, 4, "\x89HDF"), 0);
+  expect_same_content(path, old);
+  std::remove(old.c_str());
+  std::remove(path.c_str());
+}
+
+// Damaged files without checksum on which the HDF5 library itself crashes,
+// hangs or runs out of memory (found by fuzzing the reader under ASan): read
+// in a child process first, they are refused with one line naming the file,
+// and this process survives. (Without ASan some of them only make HDF5
+// report an error.)
+TEST(DatasetFile, DamagedFilesWithoutChecksumAreRefusedNotCrashed) {
+  const std::string corpus = std::string(EK_FUZZ_CORPUS) + "/dataset_h5/";
+  detail::set_child_read_limit(5.0, 0.0);  // the hang costs 5 s, not a minute
+  int files = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(corpus)) {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind("regression-hdf5-", 0) != 0) continue;
+    ++files;
+    SCOPED_TRACE(name);
+    expect_refused(
+        [&] {
+          DatasetReader r(entry.path().string());
+          for (const auto& k : r.knot_names()) r.read(k);
+        },
+        "'" + entry.path().string() + "'");
+  }
+  detail::set_child_read_limit(60.0, 1.0);
+  EXPECT_GE(files, 5);
+}
+
+namespace {
+
+void replace_dataset(hid_t parent, const char* name, hid_t type, std::vector<hsize_t> dims, const void* data,
+                     hid_t dcpl = H5P_DEFAULT) {
+  H5Ldelete(parent, name, H5P_DEFAULT);
+  const hid_t space = H5Screate_simple(static_cast<int>(dims.size()), dims.data(), nullptr);
+  const hid_t ds = H5Dcreate2(parent, name, type, space, H5P_DEFAULT, dcpl, H5P_DEFAULT);
+  ASSERT_GE(ds, 0);
+  if (data) H5Dwrite(ds, type, H5S_ALL, H5S_ALL, H5P_DEFAULT, data);
+  H5Dclose(ds);
+  H5Sclose(space);
+}
+
+}  // namespace
+
+// What the reader used to do with files whose shapes or types differ from
+// what the writer writes (found by the structure-aware fuzz target
+// dataset_fields on the earlier reader): overflow a stack value (an array
+// where one value belongs), read past a column (runs of different lengths),
+// throw std::out_of_range (a one-dimensional table), accept a knot under
+// another name. Each is now an InputError naming the problem.
+TEST(DatasetFile, ShapesAndTypesAreChecked) {
+  const std::string path = ::testing::TempDir() + "edited.h5";
+  const std::string good = slurp(small_dataset("shapes.h5"));
+  auto check = [&](const std::function<void(hid_t)>& edit, const std::string& needle) {
+    spit(path, good);
+    edit_file(path, edit);
+    expect_refused(
+        [&] {
+          DatasetReader r(path);
+          for (const auto& k : r.knot_names()) r.read(k);
+        },
+        needle);
+  };
+  const std::int64_t three[3] = {1, 2, 3};
+  check([&](hid_t f) {
+    H5Adelete(f, "vertices");
+    const hsize_t n = 3;
+    const hid_t space = H5Screate_simple(1, &n, nullptr);
+    const hid_t a = H5Acreate2(f, "vertices", H5T_STD_I64LE, space, H5P_DEFAULT, H5P_DEFAULT);
+    H5Awrite(a, H5T_NATIVE_INT64, three);
+    H5Aclose(a);
+    H5Sclose(space);
+  }, "attribute 'vertices' is not one value");
+  check([&](hid_t f) {
+    replace_dataset(f, "knots/3_1/runs/seed", H5T_NATIVE_INT64, {1}, three);
+  }, "the columns of runs/ have different lengths");
+  check([&](hid_t f) {
+    const double v[2] = {1, 2};
+    replace_dataset(f, "knots/3_1/attributes", H5T_NATIVE_DOUBLE, {2}, v);
+  }, "attributes is not a table");
+  check([&](hid_t f) {
+    const std::int64_t eq[3] = {0, 7, -1};
+    replace_dataset(f, "knots/3_1/runs/equilibrium", H5T_NATIVE_INT64, {3}, eq);
+  }, "run 1 names equilibrium 7 of 2");
+  check([&](hid_t f) {
+    std::vector<double> nan(2 * 20 * 3, std::nan(""));
+    replace_dataset(f, "knots/3_1/equilibria", H5T_NATIVE_DOUBLE, {2, 20, 3}, nan.data());
+  }, "equilibrium 0 has a coordinate that is not finite");
+  check([&](hid_t f) {
+    H5Adelete(f, "format_version");
+    const char* text = "1";
+    const hid_t type = H5Tcopy(H5T_C_S1);
+    H5Tset_size(type, H5T_VARIABLE);
+    const hid_t space = H5Screate(H5S_SCALAR);
+    const hid_t a = H5Acreate2(f, "format_version", type, space, H5P_DEFAULT, H5P_DEFAULT);
+    H5Awrite(a, type, &text);
+    H5Aclose(a);
+    H5Sclose(space);
+    H5Tclose(type);
+  }, "attribute 'format_version' is not an integer");
+  check([&](hid_t f) {
+    const char* names[2] = {"3_1", "4_1"};
+    const hid_t type = H5Tcopy(H5T_C_S1);
+    H5Tset_size(type, H5T_VARIABLE);
+    replace_dataset(f, "knot_names", type, {1, 2}, names);
+    H5Tclose(type);
+  }, "'knot_names' has the wrong rank");
+  check([&](hid_t f) {
+    const hid_t g = H5Gopen2(f, "knots/4_1", H5P_DEFAULT);
+    H5Adelete(g, "name");
+    const char* text = "5_2";
+    const hid_t type = H5Tcopy(H5T_C_S1);
+    H5Tset_size(type, H5T_VARIABLE);
+    H5Tset_cset(type, H5T_CSET_UTF8);
+    const hid_t space = H5Screate(H5S_SCALAR);
+    const hid_t a = H5Acreate2(g, "name", type, space, H5P_DEFAULT, H5P_DEFAULT);
+    H5Awrite(a, type, &text);
+    H5Aclose(a);
+    H5Sclose(space);
+    H5Tclose(type);
+    H5Gclose(g);
+  }, "its group is named 4_1 but its name attribute 5_2");
+  check([&](hid_t f) {
+    // 2^40 values declared, none stored: refused before allocating for them
+    const hid_t dcpl = H5Pcreate(H5P_DATASET_CREATE);
+    const hsize_t chunk[3] = {1, 1, 3};
+    H5Pset_chunk(dcpl, 3, chunk);
+    replace_dataset(f, "knots/3_1/equilibria", H5T_NATIVE_DOUBLE, {hsize_t{1} << 19, hsize_t{1} << 19, 3}, nullptr,
+                    dcpl);
+    H5Pclose(dcpl);
+  }, "dataset 'equilibria' is damaged");
+  std::remove(path.c_str());
 }

@@ -95,3 +95,29 @@ TEST(BraidWord, ClosureComponents) {
   BraidWord link{3, {1, 1, 2, 2}};
   EXPECT_EQ(closure_components(link), 3);
 }
+
+namespace {
+
+/// f() throws InputError with a one-line message.
+template <class F>
+void expect_one_line_error(F f) {
+  try {
+    f();
+    ADD_FAILURE() << "expected InputError";
+  } catch (const InputError& e) {
+    EXPECT_EQ(std::string(e.what()).find('\n'), std::string::npos) << e.what();
+  }
+}
+
+std::string bytes(const char* s, size_t n) { return std::string(s, n); }
+
+}  // namespace
+
+// Inputs found by fuzzing (tests/fuzz/corpus/*/regression-*): the error
+// message quoted a newline of the input and was two lines.
+TEST(Codes, FuzzRegressionsGiveOneLineErrors) {
+  expect_one_line_error([] { parse_dt(bytes("[46\x9d 8; 2] 4\n\0\0\0 8; 2]10", 24)); });
+  expect_one_line_error([] { parse_pd(bytes("[\n\0\0\0[4;2\x01\xf7\xfe\0\0;[8;6;1;5]", 24)); });
+  expect_one_line_error([] { parse_braid_list(bytes("};\x85\n\xfb\xff\xff\xef\xff\xff\0", 11)); });
+  expect_input_error([] { parse_dt("[4\n; x]"); }, "[4\\n; x]");
+}

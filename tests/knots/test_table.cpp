@@ -102,3 +102,17 @@ TEST(KnotTable, MissingFile) {
     EXPECT_NE(std::string(e.what()).find("/nonexistent/knotinfo.csv"), std::string::npos);
   }
 }
+
+// Found by fuzzing the table reader: a row named "0" (or "unknot") was not
+// found by its own name, which find() took as an alias of 0_1.
+TEST(KnotTable, AliasesDoNotHideRowsWithThatName) {
+  const std::string zero = kHeader + "0,?,?,{1;-1;1},0,1,1,?\n";
+  const KnotTable t = KnotTable::parse(zero, "zero.csv");
+  ASSERT_NE(t.find("0"), nullptr);
+  EXPECT_EQ(t.find("0")->name, "0");
+  EXPECT_EQ(t.find("0_1"), nullptr);
+  const KnotTable u = KnotTable::parse(kHeader + "0_1,?,?,{1;-1;1},0,1,1,?\n", "unknot.csv");
+  ASSERT_NE(u.find("0"), nullptr);
+  EXPECT_EQ(u.find("0")->name, "0_1");
+  EXPECT_EQ(u.find("unknot"), u.find("0_1"));
+}

@@ -48,19 +48,19 @@ int main(int argc, char** argv) {
     try {
       return c.run(argc, argv);
     } catch (const ek::InputError& e) {
-      std::cerr << "knots " << c.name << ": error: " << e.what() << std::endl;
+      std::cerr << "knots " << c.name << ": error: " << ek::one_line(e.what()) << std::endl;
       return 2;
     } catch (const ek::TopologyError& e) {
-      std::cerr << "knots " << c.name << ": topology error: " << e.what() << std::endl;
+      std::cerr << "knots " << c.name << ": topology error: " << ek::one_line(e.what()) << std::endl;
       return 1;
     } catch (const std::invalid_argument& e) {
-      std::cerr << "knots " << c.name << ": error: " << e.what() << std::endl;
+      std::cerr << "knots " << c.name << ": error: " << ek::one_line(e.what()) << std::endl;
       return 2;
     } catch (const std::bad_alloc&) {
       std::cerr << "knots " << c.name << ": error: out of memory" << std::endl;
       return 1;
     } catch (const std::exception& e) {
-      std::cerr << "knots " << c.name << ": internal error: " << e.what() << std::endl;
+      std::cerr << "knots " << c.name << ": internal error: " << ek::one_line(e.what()) << std::endl;
       return 1;
     }
   }

@@ -6,7 +6,11 @@
 
 namespace ek::cli {
 
-void print_json(const Json& j) { std::cout << j.dump() << std::endl; }
+void print_json(const Json& j) {
+  // text from files (knot names, attribute names, messages) may not be UTF-8:
+  // such bytes print as U+FFFD instead of failing the command
+  std::cout << j.dump(-1, ' ', false, Json::error_handler_t::replace) << std::endl;
+}
 
 Json number(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
 

@@ -8,7 +8,8 @@ namespace ek::cli {
 /// JSON objects keep the insertion order of their keys (stable output).
 using Json = nlohmann::ordered_json;
 
-/// Prints one JSON object on one line to stdout.
+/// Prints one JSON object on one line to stdout; bytes of strings that are
+/// not UTF-8 print as U+FFFD.
 void print_json(const Json& j);
 
 /// A double for JSON: finite values as numbers, others as null.

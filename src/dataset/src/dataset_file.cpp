@@ -1,14 +1,23 @@
 #include "ek/dataset/dataset_file.hpp"
 
+#include <fcntl.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
+#include <cerrno>
+#include <chrono>
+#include <csignal>
 #include <cstdio>
+#include <filesystem>
+#include <sstream>
+#include <thread>
 #include <variant>
 
 #include "ek/core/atomic_file.hpp"
 #include "ek/core/errors.hpp"
+#include "child_read.hpp"
 #include "h5.hpp"
 
 namespace ek {
@@ -41,6 +50,9 @@ void write_meta(hid_t f, const DatasetMetadata& m) {
   }
 }
 
+/// A field's attribute, which must hold one value of the field's kind: the
+/// h5::get_attr_* helpers refuse an attribute of another shape (several
+/// values where one belongs) or type with an InputError naming it.
 FieldValue read_present(hid_t f, const MetadataField& field, const std::string& path) {
   switch (field.kind) {
     case FieldKind::Real: return h5::get_attr_double(f, field.name);
@@ -196,10 +208,225 @@ void DatasetWriter::commit() {
   require(!impl_->committed, "DatasetWriter::commit called twice");
   h5::write_strings(impl_->file.id(), "knot_names", impl_->names);
   impl_->knots.reset();
-  if (H5Fflush(impl_->file.id(), H5F_SCOPE_GLOBAL) < 0) throw InputError("cannot write '" + impl_->path + "'");
-  impl_->file.reset();
+  if (H5Fflush(impl_->file.id(), H5F_SCOPE_GLOBAL) < 0 || !impl_->file.close())
+    throw InputError("cannot write '" + impl_->path + "'");
+  h5::seal(impl_->tmp);
   atomic_replace(impl_->tmp, impl_->path);
   impl_->committed = true;
+}
+
+namespace {
+
+using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
+/// Reads one knot group, checking every shape the writer guarantees, so that
+/// a damaged file is an InputError rather than a wrong or out-of-bounds read.
+class KnotGroupReader {
+ public:
+  KnotGroupReader(hid_t group, std::string path, std::string name)
+      : id_(group), path_(std::move(path)), name_(std::move(name)) {}
+
+  [[noreturn]] void damaged(const std::string& what) const {
+    throw InputError("data set '" + path_ + "': knot " + name_ + " is damaged (" + what + ")");
+  }
+
+  /// A float64 [rows, cols] dataset.
+  Eigen::MatrixXd matrix(const char* field) const {
+    std::vector<hsize_t> shape;
+    const auto v = h5::read_doubles(id_, field, &shape);
+    if (shape.size() != 2) damaged(std::string(field) + " is not a table");
+    return Eigen::Map<const RowMajor>(v.data(), static_cast<Eigen::Index>(shape[0]),
+                                      static_cast<Eigen::Index>(shape[1]));
+  }
+
+  /// float64 [m, n, 3]: m curves of n finite vertices.
+  std::vector<Points> equilibria() const {
+    std::vector<hsize_t> shape;
+    const auto eq = h5::read_doubles(id_, "equilibria", &shape);
+    if (shape.size() != 3 || shape[2] != 3) damaged("equilibria are not an [m, n, 3] array");
+    std::vector<Points> out;
+    const auto n = static_cast<Eigen::Index>(shape[1]);
+    for (hsize_t e = 0; e < shape[0]; ++e) {
+      Points P = Eigen::Map<const Points>(eq.data() + e * shape[1] * 3, n, 3);
+      if (!P.allFinite()) damaged("equilibrium " + std::to_string(e) + " has a coordinate that is not finite");
+      out.push_back(std::move(P));
+    }
+    return out;
+  }
+
+  /// runs/: columns of one length; `equilibria` rows exist.
+  std::vector<RunRecord> runs(size_t equilibria) const {
+    h5::Handle g = h5::open_group(id_, "runs");
+    const hid_t r = g.id();
+    const auto sample = h5::read_int64(r, "sample"), seed = h5::read_int64(r, "seed"),
+               eqi = h5::read_int64(r, "equilibrium"), iters = h5::read_int64(r, "iterations"),
+               contacts = h5::read_int64(r, "contacts"), alex = h5::read_int64(r, "alexander_preserved");
+    const auto seconds = h5::read_doubles(r, "seconds"), energy = h5::read_doubles(r, "energy"),
+               gnorm = h5::read_doubles(r, "gradient_norm");
+    const auto status = h5::read_strings(r, "status"), message = h5::read_strings(r, "message");
+    const size_t count = sample.size();
+    for (size_t len : {seed.size(), eqi.size(), iters.size(), contacts.size(), alex.size(), seconds.size(),
+                       energy.size(), gnorm.size(), status.size(), message.size()})
+      if (len != count) damaged("the columns of runs/ have different lengths");
+    std::vector<RunRecord> out(count);
+    for (size_t k = 0; k < count; ++k) {
+      if (eqi[k] < -1 || eqi[k] >= static_cast<std::int64_t>(equilibria))
+        damaged("run " + std::to_string(k) + " names equilibrium " + std::to_string(eqi[k]) + " of " +
+                std::to_string(equilibria));
+      RunRecord& run = out[k];
+      run.sample = static_cast<int>(sample[k]);
+      run.seed = static_cast<std::uint64_t>(seed[k]);
+      run.equilibrium = static_cast<int>(eqi[k]);
+      run.iterations = static_cast<int>(iters[k]);
+      run.contacts = static_cast<int>(contacts[k]);
+      run.alexander_preserved = alex[k] != 0;
+      run.seconds = seconds[k];
+      run.energy = energy[k];
+      run.gradient_norm = gnorm[k];
+      run.status = status[k];
+      run.message = message[k];
+    }
+    return out;
+  }
+
+  KnotEntry read() const {
+    KnotEntry k;
+    k.name = h5::get_attr_string(id_, "name");
+    if (k.name != name_) damaged("its group is named " + name_ + " but its name attribute " + k.name);
+    k.crossing_number = static_cast<int>(h5::get_attr_int(id_, "crossing_number"));
+    k.bridge_index = static_cast<int>(h5::get_attr_int(id_, "bridge_index"));
+    k.braid_index = static_cast<int>(h5::get_attr_int(id_, "braid_index"));
+    k.alexander = h5::get_attr_ints(id_, "alexander");
+    k.samples_used = static_cast<int>(h5::get_attr_int(id_, "samples_used"));
+    k.adaptive = h5::get_attr_int(id_, "adaptive") != 0;
+    k.complete = h5::get_attr_int(id_, "complete") != 0;
+    k.equilibria = equilibria();
+    const auto m = static_cast<Eigen::Index>(k.equilibria.size());
+    k.attribute_names = h5::read_strings(id_, "attribute_names");
+    k.attributes = matrix("attributes");
+    if (k.attributes.rows() != m || k.attributes.cols() != static_cast<Eigen::Index>(k.attribute_names.size()))
+      damaged("the attribute table is not one row per equilibrium and one column per name");
+    k.runs = runs(k.equilibria.size());
+    k.similarity = matrix("similarity");
+    if (k.similarity.size() != 0 && (k.similarity.rows() != m || k.similarity.cols() != m))
+      damaged("the similarity matrix is not m by m");
+    k.linkage = matrix("linkage");
+    if (k.linkage.cols() != 4) damaged("the linkage table does not have 4 columns");
+    std::vector<hsize_t> shape;
+    k.score_history = h5::read_doubles(id_, "score_history", &shape);
+    if (shape.size() != 1) damaged("score_history is not a list");
+    return k;
+  }
+
+ private:
+  hid_t id_;
+  std::string path_, name_;
+};
+
+/// Runs `read`; an InputError that does not name the file (one of the HDF5
+/// helpers') is given the context "data set 'PATH'[, knot NAME]: ".
+template <class F>
+auto naming_the_file(const std::string& path, const std::string& knot, F&& read) {
+  try {
+    return read();
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    if (message.find("'" + path + "'") != std::string::npos) throw;
+    throw InputError("data set '" + path + "'" + (knot.empty() ? "" : ", knot " + knot) + ": " + message);
+  }
+}
+
+/// Reads all of `path` (metadata and every knot) and exits the process: 0
+/// when it reads, 2 on an InputError (its message, at most 4 kB, written to
+/// `message_fd`), 3 on any other exception.
+[[noreturn]] void read_all_and_exit(const std::string& path, int message_fd) {
+  int status = 0;
+  try {
+    h5::Handle f = h5::open_file(path, false);
+    const auto names = naming_the_file(path, "", [&] {
+      read_meta(f.id(), path);
+      return h5::read_strings(f.id(), "knot_names");
+    });
+    h5::Handle knots = naming_the_file(path, "", [&] { return h5::open_group(f.id(), "knots"); });
+    for (const auto& name : names)
+      naming_the_file(path, name, [&] {
+        h5::Handle g = h5::open_group(knots.id(), name);
+        return KnotGroupReader(g.id(), path, name).read();
+      });
+  } catch (const InputError& e) {
+    const std::string message = std::string(e.what()).substr(0, 4096);  // fits the pipe: no blocking
+    if (::write(message_fd, message.data(), message.size()) < 0) status = 3;
+    status = 2;
+  } catch (...) {
+    status = 3;
+  }
+  ::_exit(status);
+}
+
+/// [s] time given to the child: base + per_10_mb per 10 MB (child_read.hpp)
+std::atomic<double> child_limit_base{60.0}, child_limit_per_10_mb{1.0};
+
+/// Waits for the child `pid` at most `seconds` and returns its exit status,
+/// -1 when a signal ended it, -3 when it ran out of time (it is killed).
+int wait_for_child(pid_t pid, double seconds) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+  int status = 0;
+  for (auto wait = std::chrono::microseconds(200);; wait = std::min(2 * wait, std::chrono::microseconds(50000))) {
+    const pid_t done = ::waitpid(pid, &status, WNOHANG);
+    if (done == pid) return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    if (done < 0 && errno != EINTR) return 0;  // not waitable (SIGCHLD ignored by the program): unknown, read here
+    if (std::chrono::steady_clock::now() > deadline) {
+      ::kill(pid, SIGKILL);
+      ::waitpid(pid, &status, 0);
+      return -3;
+    }
+    std::this_thread::sleep_for(wait);
+  }
+}
+
+/// A file without a checksum (written before data sets carried one) is read
+/// completely in a child process first: the HDF5 library (1.10) can crash,
+/// hang or exhaust memory on damaged HDF5 structures, which only another
+/// process survives. The child is given 60 s plus 1 s per 10 MB; if it dies
+/// or runs out of time the file is refused, and a file the child refuses is
+/// refused with its message. Once the child has read it, the same reads in
+/// this process are safe (the library is deterministic).
+void read_in_child(const std::string& path) {
+  std::error_code ec;
+  const auto bytes = std::filesystem::file_size(path, ec);
+  const double seconds = child_limit_base + child_limit_per_10_mb * (ec ? 0.0 : static_cast<double>(bytes) / 1e7);
+  int fds[2];
+  if (::pipe(fds) != 0) throw InputError("cannot check data set '" + path + "': no pipe");
+  std::fflush(nullptr);
+  const pid_t pid = ::fork();
+  if (pid == 0) {
+    for (int s : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT}) std::signal(s, SIG_DFL);
+    const int null = ::open("/dev/null", O_WRONLY);
+    if (null >= 0) ::dup2(null, 2);  // the library's and any sanitizer's reports
+    ::close(fds[0]);
+    read_all_and_exit(path, fds[1]);
+  }
+  ::close(fds[1]);
+  const int status = pid < 0 ? -2 : wait_for_child(pid, seconds);
+  std::string message(4096, '\0');
+  const ssize_t got = ::read(fds[0], message.data(), message.size());
+  ::close(fds[0]);
+  message.resize(got > 0 ? static_cast<size_t>(got) : 0);
+  const std::string no_checksum = " (the file has no checksum: written before data sets carried one)";
+  if (status == 0) return;
+  if (status == 2 && !message.empty()) throw InputError(message);
+  if (status == -2) throw InputError("cannot check data set '" + path + "': fork failed");
+  std::ostringstream limit;
+  limit << seconds;
+  throw InputError("data set '" + path + "' is damaged: HDF5 " +
+                   (status == -3 ? "did not finish reading it in " + limit.str() + " s" : "failed on it") + no_checksum);
+}
+
+}  // namespace
+
+void detail::set_child_read_limit(double base, double per_10_mb) {
+  child_limit_base = base;
+  child_limit_per_10_mb = per_10_mb;
 }
 
 struct DatasetReader::Impl {
@@ -212,9 +439,13 @@ struct DatasetReader::Impl {
 DatasetReader::DatasetReader(const std::string& path) : impl_(new Impl) {
   // impl_ is a unique_ptr member: a throw below releases it.
   impl_->path = path;
+  if (!h5::verify(path)) read_in_child(path);
   impl_->file = h5::open_file(path, false);
-  impl_->meta = read_meta(impl_->file.id(), path);
-  impl_->names = h5::read_strings(impl_->file.id(), "knot_names");
+  naming_the_file(path, "", [&] {
+    impl_->meta = read_meta(impl_->file.id(), path);
+    impl_->names = h5::read_strings(impl_->file.id(), "knot_names");
+    return 0;
+  });
 }
 
 DatasetReader::~DatasetReader() = default;
@@ -227,69 +458,11 @@ bool DatasetReader::has_knot(const std::string& name) const {
 
 KnotEntry DatasetReader::read(const std::string& name) const {
   if (!has_knot(name)) throw InputError("data set '" + impl_->path + "' has no knot '" + name + "'");
-  h5::Handle knots = h5::open_group(impl_->file.id(), "knots");
-  h5::Handle g = h5::open_group(knots.id(), name);
-  const hid_t id = g.id();
-  KnotEntry k;
-  k.name = h5::get_attr_string(id, "name");
-  k.crossing_number = static_cast<int>(h5::get_attr_int(id, "crossing_number"));
-  k.bridge_index = static_cast<int>(h5::get_attr_int(id, "bridge_index"));
-  k.braid_index = static_cast<int>(h5::get_attr_int(id, "braid_index"));
-  k.alexander = h5::get_attr_ints(id, "alexander");
-  k.samples_used = static_cast<int>(h5::get_attr_int(id, "samples_used"));
-  k.adaptive = h5::get_attr_int(id, "adaptive") != 0;
-  k.complete = h5::get_attr_int(id, "complete") != 0;
-  std::vector<hsize_t> shape;
-  const auto eq = h5::read_doubles(id, "equilibria", &shape);
-  if (shape.size() != 3 || (shape[0] > 0 && shape[2] != 3))
-    throw InputError("data set '" + impl_->path + "': knot " + name + " has malformed equilibria");
-  for (hsize_t e = 0; e < shape[0]; ++e) {
-    Points P(static_cast<Eigen::Index>(shape[1]), 3);
-    std::copy(eq.begin() + static_cast<long>(e * shape[1] * 3), eq.begin() + static_cast<long>((e + 1) * shape[1] * 3),
-              P.data());
-    k.equilibria.push_back(std::move(P));
-  }
-  k.attribute_names = h5::read_strings(id, "attribute_names");
-  const auto attr = h5::read_doubles(id, "attributes", &shape);
-  k.attributes = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
-      attr.data(), static_cast<Eigen::Index>(shape.at(0)), static_cast<Eigen::Index>(shape.at(1)));
-  {
-    h5::Handle runs = h5::open_group(id, "runs");
-    const auto sample = h5::read_int64(runs.id(), "sample");
-    const auto seed = h5::read_int64(runs.id(), "seed");
-    const auto eqi = h5::read_int64(runs.id(), "equilibrium");
-    const auto iters = h5::read_int64(runs.id(), "iterations");
-    const auto contacts = h5::read_int64(runs.id(), "contacts");
-    const auto alex = h5::read_int64(runs.id(), "alexander_preserved");
-    const auto seconds = h5::read_doubles(runs.id(), "seconds");
-    const auto energy = h5::read_doubles(runs.id(), "energy");
-    const auto gnorm = h5::read_doubles(runs.id(), "gradient_norm");
-    const auto status = h5::read_strings(runs.id(), "status");
-    const auto message = h5::read_strings(runs.id(), "message");
-    for (size_t r = 0; r < sample.size(); ++r) {
-      RunRecord run;
-      run.sample = static_cast<int>(sample[r]);
-      run.seed = static_cast<std::uint64_t>(seed[r]);
-      run.equilibrium = static_cast<int>(eqi[r]);
-      run.iterations = static_cast<int>(iters[r]);
-      run.contacts = static_cast<int>(contacts[r]);
-      run.alexander_preserved = alex[r] != 0;
-      run.seconds = seconds[r];
-      run.energy = energy[r];
-      run.gradient_norm = gnorm[r];
-      run.status = status[r];
-      run.message = message[r];
-      k.runs.push_back(std::move(run));
-    }
-  }
-  const auto sim = h5::read_doubles(id, "similarity", &shape);
-  k.similarity = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
-      sim.data(), static_cast<Eigen::Index>(shape.at(0)), static_cast<Eigen::Index>(shape.at(1)));
-  const auto link = h5::read_doubles(id, "linkage", &shape);
-  k.linkage = Eigen::Map<const Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(
-      link.data(), static_cast<Eigen::Index>(shape.at(0)), static_cast<Eigen::Index>(shape.at(1)));
-  k.score_history = h5::read_doubles(id, "score_history");
-  return k;
+  return naming_the_file(impl_->path, name, [&] {
+    h5::Handle knots = h5::open_group(impl_->file.id(), "knots");
+    h5::Handle g = h5::open_group(knots.id(), name);
+    return KnotGroupReader(g.id(), impl_->path, name).read();
+  });
 }
 
 }  // namespace ek

@@ -1,5 +1,14 @@
 #include "h5.hpp"
 
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#include <zlib.h>
+
+#include <cerrno>
+#include <cinttypes>
+#include <cstdio>
+#include <cstring>
 #include <mutex>
 #include <numeric>
 
@@ -23,6 +32,65 @@ Handle space_of(const std::vector<hsize_t>& shape) {
 hsize_t count_of(const std::vector<hsize_t>& shape) {
   return std::accumulate(shape.begin(), shape.end(), hsize_t{1}, std::multiplies<hsize_t>());
 }
+
+/// Number of values of a dataset read from a file, checked against what the
+/// file stores: at most 2^40 values, and at most 1100 times the stored bytes
+/// (deflate, our only compression, shrinks data by at most about 1032:1). A
+/// larger shape is a damaged dataspace, refused before allocating for it.
+hsize_t checked_count(hid_t ds, const std::vector<hsize_t>& shape, hsize_t value_size, const std::string& name) {
+  constexpr hsize_t kMaxValues = hsize_t{1} << 40;
+  hsize_t count = 1;
+  for (hsize_t d : shape) {
+    if (d != 0 && count > kMaxValues / d) fail("HDF5: dataset '" + name + "' has a damaged shape");
+    count *= d;
+  }
+  const hsize_t stored = H5Dget_storage_size(ds);
+  if (count > 0 && count * value_size > 1100 * stored + 1024)
+    fail("HDF5: dataset '" + name + "' is damaged (" + std::to_string(count) + " values in " +
+         std::to_string(stored) + " stored bytes)");
+  return count;
+}
+
+/// The dimensions of a dataspace of rank `rank` (checked).
+std::vector<hsize_t> dims_of(hid_t space, int rank, const std::string& name) {
+  if (H5Sget_simple_extent_ndims(space) != rank) fail("HDF5: '" + name + "' has the wrong rank");
+  std::vector<hsize_t> dims(static_cast<size_t>(rank));
+  if (rank > 0 && H5Sget_simple_extent_dims(space, dims.data(), nullptr) != rank)
+    fail("HDF5: '" + name + "' has a damaged shape");
+  return dims;
+}
+
+constexpr char kChecksumHeader[] = "elastic-knots-dataset checksum 1\n";
+constexpr char kSignature[] = "\x89HDF\r\n\x1a\n";
+
+/// CRC-32 of the bytes of `fd` from `offset` to `end`.
+std::uint32_t crc_of(int fd, off_t offset, off_t end, const std::string& path) {
+  std::vector<unsigned char> buf(1 << 20);
+  uLong crc = ::crc32(0L, Z_NULL, 0);
+  while (offset < end) {
+    const size_t want = static_cast<size_t>(std::min<off_t>(end - offset, static_cast<off_t>(buf.size())));
+    const ssize_t got = ::pread(fd, buf.data(), want, offset);
+    if (got < 0 && errno == EINTR) continue;
+    if (got <= 0) fail("cannot read data set '" + path + "'");
+    crc = ::crc32(crc, buf.data(), static_cast<uInt>(got));
+    offset += got;
+  }
+  return static_cast<std::uint32_t>(crc);
+}
+
+/// The checksum header (h5.hpp), zero-padded to kUserBlock bytes.
+void checksum_header(char (&header)[kUserBlock], std::uint32_t crc, long long length) {
+  std::memset(header, 0, kUserBlock);
+  std::snprintf(header, kUserBlock, "%scrc32 %08" PRIx32 "\nlength %lld\n", kChecksumHeader, crc, length);
+}
+
+/// An open file descriptor, closed on scope exit.
+struct Fd {
+  int fd;
+  ~Fd() {
+    if (fd >= 0) ::close(fd);
+  }
+};
 
 Handle string_type() {
   Handle t(H5Tcopy(H5T_C_S1), H5Tclose);
@@ -56,9 +124,9 @@ std::vector<T> read_numeric(hid_t parent, const std::string& name, std::vector<h
   if (!ds.valid()) fail("HDF5: dataset '" + name + "' is missing");
   Handle space(H5Dget_space(ds.id()), H5Sclose);
   const int rank = H5Sget_simple_extent_ndims(space.id());
-  std::vector<hsize_t> shape(static_cast<size_t>(std::max(rank, 0)));
-  if (rank > 0) H5Sget_simple_extent_dims(space.id(), shape.data(), nullptr);
-  std::vector<T> out(count_of(shape));
+  if (rank < 0 || rank > 8) fail("HDF5: dataset '" + name + "' has a damaged shape");
+  const std::vector<hsize_t> shape = dims_of(space.id(), rank, name);
+  std::vector<T> out(checked_count(ds.id(), shape, sizeof(T), name));
   if (!out.empty() && H5Dread(ds.id(), mem_type, H5S_ALL, H5S_ALL, H5P_DEFAULT, out.data()) < 0)
     fail("HDF5: cannot read dataset '" + name + "'");
   if (shape_out) *shape_out = shape;
@@ -74,9 +142,49 @@ void quiet() {
 
 Handle create_file(const std::string& path) {
   quiet();
-  Handle f(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
+  Handle fcpl(H5Pcreate(H5P_FILE_CREATE), H5Pclose);
+  Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+  // closing the file closes every object in it, so that the file is complete when sealed
+  if (H5Pset_userblock(fcpl.id(), kUserBlock) < 0 || H5Pset_fclose_degree(fapl.id(), H5F_CLOSE_STRONG) < 0)
+    fail("HDF5: cannot set up data set '" + path + "'");
+  Handle f(H5Fcreate(path.c_str(), H5F_ACC_TRUNC, fcpl.id(), fapl.id()), H5Fclose);
   if (!f.valid()) fail("cannot create data set '" + path + "'");
   return f;
+}
+
+void seal(const std::string& path) {
+  const Fd f{::open(path.c_str(), O_RDWR)};
+  struct stat st {};
+  if (f.fd < 0 || ::fstat(f.fd, &st) != 0 || st.st_size < static_cast<off_t>(kUserBlock))
+    fail("cannot write the checksum of data set '" + path + "'");
+  char header[kUserBlock];
+  checksum_header(header, crc_of(f.fd, static_cast<off_t>(kUserBlock), st.st_size, path), st.st_size);
+  if (::pwrite(f.fd, header, sizeof header, 0) != static_cast<ssize_t>(sizeof header) || ::fsync(f.fd) != 0)
+    fail("cannot write the checksum of data set '" + path + "'");
+}
+
+bool verify(const std::string& path) {
+  const Fd f{::open(path.c_str(), O_RDONLY)};
+  struct stat st {};
+  if (f.fd < 0 || ::fstat(f.fd, &st) != 0) fail("cannot open data set '" + path + "': " + std::strerror(errno));
+  char header[kUserBlock + 1] = {};
+  const ssize_t got = ::pread(f.fd, header, kUserBlock, 0);
+  if (got >= 8 && std::memcmp(header, kSignature, 8) == 0) return false;  // written before checksums
+  const size_t tag = sizeof kChecksumHeader - 1;
+  if (got < static_cast<ssize_t>(tag) || std::memcmp(header, kChecksumHeader, tag) != 0)
+    fail("'" + path + "' is not a readable HDF5 data set");
+  unsigned crc = 0;
+  long long length = -1;
+  char canonical[kUserBlock];
+  if (got != static_cast<ssize_t>(kUserBlock) || std::sscanf(header + tag, "crc32 %8x\nlength %lld\n", &crc, &length) != 2 ||
+      (checksum_header(canonical, crc, length), std::memcmp(header, canonical, kUserBlock) != 0))
+    fail("data set '" + path + "' is damaged: its checksum header is unreadable");
+  if (length != static_cast<long long>(st.st_size))
+    fail("data set '" + path + "' is damaged: " + std::to_string(st.st_size) + " bytes, but it was written with " +
+         std::to_string(length) + " (truncated or extended since)");
+  if (crc_of(f.fd, static_cast<off_t>(kUserBlock), st.st_size, path) != crc)
+    fail("data set '" + path + "' is damaged: its checksum does not match (its bytes changed after it was written)");
+  return true;
 }
 
 Handle open_file(const std::string& path, bool writable) {
@@ -141,8 +249,8 @@ std::vector<std::string> read_strings(hid_t parent, const std::string& name) {
   Handle ds(H5Dopen2(parent, name.c_str(), H5P_DEFAULT), H5Dclose);
   if (!ds.valid()) fail("HDF5: dataset '" + name + "' is missing");
   Handle space(H5Dget_space(ds.id()), H5Sclose);
-  hsize_t n = 0;
-  H5Sget_simple_extent_dims(space.id(), &n, nullptr);
+  const hsize_t n = dims_of(space.id(), 1, name).front();
+  if (n > H5Dget_storage_size(ds.id())) fail("HDF5: dataset '" + name + "' is damaged");
   Handle type = string_type();
   std::vector<char*> ptrs(n, nullptr);
   if (n > 0 && H5Dread(ds.id(), type.id(), H5S_ALL, H5S_ALL, H5P_DEFAULT, ptrs.data()) < 0)
@@ -169,6 +277,14 @@ Handle open_attr(hid_t obj, const std::string& name) {
   return a;
 }
 
+/// Opens an attribute that must hold exactly one value.
+Handle open_scalar_attr(hid_t obj, const std::string& name) {
+  Handle a = open_attr(obj, name);
+  Handle space(H5Aget_space(a.id()), H5Sclose);
+  if (H5Sget_simple_extent_npoints(space.id()) != 1) fail("data set attribute '" + name + "' is not one value");
+  return a;
+}
+
 }  // namespace
 
 void set_attr(hid_t obj, const std::string& name, const std::string& value) {
@@ -192,7 +308,7 @@ void set_attr(hid_t obj, const std::string& name, const std::vector<std::int64_t
 bool has_attr(hid_t obj, const std::string& name) { return H5Aexists(obj, name.c_str()) > 0; }
 
 std::string get_attr_string(hid_t obj, const std::string& name) {
-  Handle a = open_attr(obj, name);
+  Handle a = open_scalar_attr(obj, name);
   Handle type = string_type();
   char* p = nullptr;
   if (H5Aread(a.id(), type.id(), &p) < 0) fail("data set attribute '" + name + "' is not a string");
@@ -202,14 +318,14 @@ std::string get_attr_string(hid_t obj, const std::string& name) {
 }
 
 double get_attr_double(hid_t obj, const std::string& name) {
-  Handle a = open_attr(obj, name);
+  Handle a = open_scalar_attr(obj, name);
   double v = 0.0;
   if (H5Aread(a.id(), H5T_NATIVE_DOUBLE, &v) < 0) fail("data set attribute '" + name + "' is not a number");
   return v;
 }
 
 std::int64_t get_attr_int(hid_t obj, const std::string& name) {
-  Handle a = open_attr(obj, name);
+  Handle a = open_scalar_attr(obj, name);
   std::int64_t v = 0;
   if (H5Aread(a.id(), H5T_NATIVE_INT64, &v) < 0) fail("data set attribute '" + name + "' is not an integer");
   return v;
@@ -218,8 +334,8 @@ std::int64_t get_attr_int(hid_t obj, const std::string& name) {
 std::vector<std::int64_t> get_attr_ints(hid_t obj, const std::string& name) {
   Handle a = open_attr(obj, name);
   Handle space(H5Aget_space(a.id()), H5Sclose);
-  hsize_t n = 0;
-  H5Sget_simple_extent_dims(space.id(), &n, nullptr);
+  const hsize_t n = dims_of(space.id(), 1, name).front();
+  if (n > 4096) fail("data set attribute '" + name + "' is damaged");
   std::vector<std::int64_t> v(n);
   if (n > 0 && H5Aread(a.id(), H5T_NATIVE_INT64, v.data()) < 0)
     fail("data set attribute '" + name + "' is not an integer list");

@@ -28,9 +28,13 @@ class Handle {
   Handle& operator=(const Handle&) = delete;
   hid_t id() const { return id_; }
   bool valid() const { return id_ >= 0; }
-  void reset() {
-    if (id_ >= 0 && closer_) closer_(id_);
+  void reset() { close(); }
+  /// Closes the identifier; false when HDF5 reports an error (a file that
+  /// could not be flushed completely).
+  bool close() {
+    const herr_t status = (id_ >= 0 && closer_) ? closer_(id_) : 0;
     id_ = -1;
+    return status >= 0;
   }
 
  private:
@@ -42,8 +46,26 @@ class Handle {
 /// (errors are turned into exceptions with our own messages).
 void quiet();
 
-Handle create_file(const std::string& path);      ///< truncates; throws InputError
-Handle open_file(const std::string& path, bool writable);  ///< throws InputError naming the file
+/// Creates (truncates) a file with a user block of kUserBlock bytes in front
+/// of the HDF5 data, for the checksum header written by seal(). Throws InputError.
+Handle create_file(const std::string& path);
+/// Opens a file; throws InputError naming the file. Call verify() first.
+Handle open_file(const std::string& path, bool writable);
+
+/// The checksum header (the HDF5 user block, which the HDF5 library skips):
+///   "elastic-knots-dataset checksum 1\ncrc32 <8 hex digits>\nlength <bytes>\n",
+/// zero-padded to kUserBlock bytes. crc32 is the CRC-32 (zlib) of every byte
+/// after the user block, length the size of the whole file: any change to the
+/// file after it was written (truncation, a flipped bit, a byte appended) is
+/// detected before HDF5 parses it.
+constexpr hsize_t kUserBlock = 512;
+/// Writes the checksum header of the closed file `path` (created by create_file).
+void seal(const std::string& path);
+/// Checks a file before HDF5 opens it. A sealed file must match its header:
+/// returns true. A file whose HDF5 signature is at byte 0 has no header
+/// (written before data sets carried a checksum): returns false, unchecked.
+/// Throws InputError naming the file otherwise (damaged, or not a data set).
+bool verify(const std::string& path);
 Handle create_group(hid_t parent, const std::string& name);
 Handle open_group(hid_t parent, const std::string& name);
 bool exists(hid_t parent, const std::string& name);

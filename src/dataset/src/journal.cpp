@@ -39,7 +39,7 @@ class Reader {
   Reader(const char* p, size_t n) : p_(p), n_(n) {}
   template <class T>
   T get() {
-    if (pos_ + sizeof(T) > n_) throw std::runtime_error("short record");
+    if (sizeof(T) > n_ - pos_) throw std::runtime_error("short record");
     T v;
     std::memcpy(&v, p_ + pos_, sizeof(T));
     pos_ += sizeof(T);
@@ -47,12 +47,13 @@ class Reader {
   }
   std::string str() {
     const auto len = get<std::uint32_t>();
-    if (pos_ + len > n_) throw std::runtime_error("short record");
+    if (len > n_ - pos_) throw std::runtime_error("short record");
     std::string s(p_ + pos_, len);
     pos_ += len;
     return s;
   }
   bool done() const { return pos_ == n_; }
+  size_t left() const { return n_ - pos_; }
 
  private:
   const char* p_;
@@ -105,7 +106,7 @@ JournalRun decode(const char* p, size_t n) {
   r.stiffness = rd.get<double>();
   r.link = rd.get<double>();
   const auto rows = rd.get<std::int32_t>();
-  if (rows < 0 || rows > 10000000) throw std::runtime_error("bad record");
+  if (rows < 0 || static_cast<size_t>(rows) > rd.left() / (3 * sizeof(double))) throw std::runtime_error("bad record");
   r.positions.resize(rows, 3);
   for (Eigen::Index k = 0; k < r.positions.size(); ++k) r.positions.data()[k] = rd.get<double>();
   if (!rd.done()) throw std::runtime_error("trailing bytes");
@@ -126,43 +127,51 @@ void write_all(int fd, const char* p, size_t n, const std::string& path) {
 
 }  // namespace
 
+std::string journal_head(const std::string& options_text) { return kHeader + options_text + "\n"; }
+
+JournalContents parse_journal(const std::string& data, const std::string& head, const std::string& path) {
+  JournalContents out;
+  if (data.size() < head.size() && head.compare(0, data.size(), data) == 0) return out;  // empty or torn header
+  if (data.compare(0, head.size(), head) != 0) {
+    if (data.compare(0, kHeader.size(), kHeader) == 0)
+      throw InputError("journal '" + path +
+                       "' belongs to a run with different options; remove it (or its work folder) to start over");
+    throw InputError("'" + path + "' is not a journal of this program");
+  }
+  size_t pos = head.size();
+  out.good = pos;
+  while (data.size() - pos >= 12) {
+    std::uint32_t magic, len, crc;
+    std::memcpy(&magic, data.data() + pos, 4);
+    std::memcpy(&len, data.data() + pos + 4, 4);
+    if (magic != kMagic || len > data.size() - pos - 12) break;
+    std::memcpy(&crc, data.data() + pos + 8 + len, 4);
+    const auto actual = static_cast<std::uint32_t>(
+        ::crc32(0L, reinterpret_cast<const Bytef*>(data.data() + pos + 8), static_cast<uInt>(len)));
+    if (crc != actual) break;
+    try {
+      JournalRun r = decode(data.data() + pos + 8, len);
+      out.runs[r.record.sample] = std::move(r);
+    } catch (const std::runtime_error&) {
+      break;
+    }
+    pos += 12 + len;
+    out.good = pos;
+  }
+  return out;
+}
+
 Journal::Journal(std::string path, const std::string& options_text) : path_(std::move(path)) {
-  const std::string head = kHeader + options_text + "\n";
+  const std::string head = journal_head(options_text);
   off_t good = 0;
   {
     std::ifstream in(path_, std::ios::binary);
     if (in) {
       std::stringstream ss;
       ss << in.rdbuf();
-      const std::string data = ss.str();
-      if (data.size() >= head.size() && data.compare(0, head.size(), head) == 0) {
-        size_t pos = head.size();
-        good = static_cast<off_t>(pos);
-        while (pos + 8 <= data.size()) {
-          std::uint32_t magic, len;
-          std::memcpy(&magic, data.data() + pos, 4);
-          std::memcpy(&len, data.data() + pos + 4, 4);
-          if (magic != kMagic || pos + 12 + len > data.size()) break;
-          std::uint32_t crc;
-          std::memcpy(&crc, data.data() + pos + 8 + len, 4);
-          const auto actual = static_cast<std::uint32_t>(
-              ::crc32(0L, reinterpret_cast<const Bytef*>(data.data() + pos + 8), static_cast<uInt>(len)));
-          if (crc != actual) break;
-          try {
-            JournalRun r = decode(data.data() + pos + 8, len);
-            runs_[r.record.sample] = std::move(r);
-          } catch (const std::exception&) {
-            break;
-          }
-          pos += 12 + len;
-          good = static_cast<off_t>(pos);
-        }
-      } else if (!data.empty()) {
-        if (data.compare(0, kHeader.size(), kHeader) == 0)
-          throw InputError("journal '" + path_ +
-                           "' belongs to a run with different options; remove it (or its work folder) to start over");
-        throw InputError("'" + path_ + "' is not a journal of this program");
-      }
+      JournalContents contents = parse_journal(ss.str(), head, path_);
+      runs_ = std::move(contents.runs);
+      good = static_cast<off_t>(contents.good);
     }
   }
   fd_ = ::open(path_.c_str(), O_WRONLY | O_CREAT, 0644);

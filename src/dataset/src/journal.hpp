@@ -25,6 +25,24 @@ struct JournalRun {
   double link = 0.0;
 };
 
+/// What a journal file holds: the runs of its intact records, by sample, and
+/// the length of the intact prefix (header and records; 0 when the file is
+/// empty or its header torn).
+struct JournalContents {
+  std::map<int, JournalRun> runs;
+  size_t good = 0;
+};
+
+/// The header line and the options text: the first bytes of a journal.
+std::string journal_head(const std::string& options_text);
+
+/// Reads a journal's bytes `data` for the header `head` (journal_head()).
+/// Records are read up to the first torn or damaged one (bad magic, length
+/// past the end, CRC mismatch, malformed payload). A journal of a run with
+/// other options, or a file that is not a journal, is an InputError naming
+/// `path`.
+JournalContents parse_journal(const std::string& data, const std::string& head, const std::string& path);
+
 class Journal {
  public:
   /// Opens or creates the journal. `options_text` identifies the run's

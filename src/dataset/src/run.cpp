@@ -1,10 +1,13 @@
 #include "ek/dataset/run.hpp"
 
+#include <signal.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <ctime>
 #include <filesystem>
 #include <map>
@@ -81,6 +84,23 @@ class Progress {
   double last_line_ = -1e9;
 };
 
+/// Removes the temporaries "<prefix>*.tmp.<pid>.<n>" in `folder` that a
+/// killed run left behind (their process is gone): DatasetWriter removes its
+/// own, except after SIGKILL.
+void remove_stale_temporaries(const fs::path& folder, const std::string& prefix) {
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(folder, ec)) {
+    const std::string name = entry.path().filename().string();
+    const auto tmp = name.rfind(".tmp.");
+    if (name.rfind(prefix, 0) != 0 || tmp == std::string::npos) continue;
+    char* end = nullptr;
+    const long pid = std::strtol(name.c_str() + tmp + 5, &end, 10);
+    if (pid <= 0 || *end != '.' || pid == ::getpid() || ::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH)
+      continue;
+    fs::remove(entry.path(), ec);
+  }
+}
+
 int table_index(const std::string& name) {
   const KnotRecord* r = KnotTable::global().find(name);
   return r ? r->row : 1 << 30;
@@ -150,6 +170,10 @@ DatasetRunSummary run_dataset(const DatasetRunOptions& o) {
   std::error_code ec;
   fs::create_directories(work, ec);
   if (ec) throw InputError("cannot create work folder '" + work + "': " + ec.message());
+  remove_stale_temporaries(work, "");
+  const fs::path output(o.output);
+  remove_stale_temporaries(output.has_parent_path() ? output.parent_path() : fs::path("."),
+                           output.filename().string() + ".tmp.");
 
   DatasetRunSummary summary;
   summary.knots = static_cast<int>(mine.size());
@@ -157,6 +181,9 @@ DatasetRunSummary run_dataset(const DatasetRunOptions& o) {
   std::vector<std::string> parts;
   for (const KnotRecord* knot : mine) {
     if (std::find(existing.begin(), existing.end(), knot->name) != existing.end()) {
+      // a part or journal left by a run killed after writing the output is not needed
+      std::remove((work + "/" + knot->name + ".h5").c_str());
+      std::remove((work + "/" + knot->name + ".journal").c_str());
       ++summary.knots_skipped;
       progress.knot_finished();
       continue;

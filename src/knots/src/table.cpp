@@ -56,11 +56,19 @@ std::optional<int> parse_int_field(const std::string& value, bool required, cons
 }  // namespace
 
 KnotTable KnotTable::load(const std::string& path) {
-  std::ifstream in(path);
-  if (!in)
+  std::ifstream file(path, std::ios::binary);
+  if (!file)
     throw InputError("knot table '" + path +
                      "': cannot open file (set KNOT_TABLE or the Make/CMake variable KNOT_TABLE to the "
                      "KnotInfo CSV)");
+  std::stringstream text;
+  text << file.rdbuf();
+  if (file.bad()) throw InputError("knot table '" + path + "': read error");
+  return parse(text.str(), path);
+}
+
+KnotTable KnotTable::parse(const std::string& text, const std::string& path) {
+  std::istringstream in(text);
   KnotTable table;
   table.path_ = path;
   std::string line;
@@ -152,9 +160,8 @@ const KnotTable& KnotTable::global() {
 }
 
 const KnotRecord* KnotTable::find(const std::string& name) const {
-  std::string key = name;
-  if (key == "unknot" || key == "0") key = "0_1";
-  auto it = by_name_.find(key);
+  auto it = by_name_.find(name);
+  if (it == by_name_.end() && (name == "unknot" || name == "0")) it = by_name_.find("0_1");
   return it == by_name_.end() ? nullptr : &records_[it->second];
 }
 

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <optional>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -226,22 +227,28 @@ Json knot_record(const KnotEntry& e, const KnotTable& table, const std::string& 
   return k;
 }
 
+/// A data-set parameter, null when the file does not record it (metadata.hpp).
+template <class T>
+Json or_null(const std::optional<T>& v) {
+  return v ? Json(*v) : Json(nullptr);
+}
+
 Json dataset_json(const DatasetMetadata& meta, const std::string& path, const std::string& title) {
   Json d;
   d["file"] = std::filesystem::path(path).filename().string();
   d["title"] = title.empty() ? std::filesystem::path(path).filename().string() : title;
-  d["created"] = meta.created;
-  d["project_version"] = meta.project_version;
-  d["sampling"] = meta.sampling;
-  d["seed"] = meta.seed;
-  d["vertices"] = meta.vertices;
-  d["edge_length"] = meta.edge_length;
-  d["radius"] = meta.radius;
-  d["dhat"] = meta.dhat;
-  d["young"] = meta.young;
-  d["poisson"] = meta.poisson;
-  d["tolerance"] = meta.tolerance;
-  d["twist_model"] = meta.twist_model;
+  d["created"] = or_null(meta.created);
+  d["project_version"] = or_null(meta.project_version);
+  d["sampling"] = or_null(meta.sampling);
+  d["seed"] = or_null(meta.seed);
+  d["vertices"] = or_null(meta.vertices);
+  d["edge_length"] = or_null(meta.edge_length);
+  d["radius"] = or_null(meta.radius);
+  d["dhat"] = or_null(meta.dhat);
+  d["young"] = or_null(meta.young);
+  d["poisson"] = or_null(meta.poisson);
+  d["tolerance"] = or_null(meta.tolerance);
+  d["twist_model"] = or_null(meta.twist_model);
   return d;
 }
 
@@ -272,7 +279,7 @@ SiteFiles build_site(const std::string& dataset_path, const SiteOptions& options
     if (!e.equilibria.empty() && e.attribute_names != columns)
       throw InputError(dataset_path + ": knot " + name + " has other attribute columns than the first knot");
     const std::string file = knot_file_name(name);
-    KnotSiteData data = knot_site_data(e, file, meta.dhat, options.cut);
+    KnotSiteData data = knot_site_data(e, file, meta.dhat.value(), options.cut);  // required: always read
     knots.push_back(knot_record(e, table, file, data.distinct, rows));
     files["data/knots/" + file + ".json"] = std::move(data.json);
     files["data/knots/" + file + ".bin"] = std::move(data.binary);

@@ -16,10 +16,16 @@
 
 namespace ek {
 
-/// Bad input from a user or a file. `what()` is one line, suitable for stderr.
+/// `text` on one line: control characters (a newline in a quoted input, ...)
+/// are written as escapes: a newline as the two characters \n, a tab as \t,
+/// a carriage return as \r, other control bytes as \xNN.
+std::string one_line(const std::string& text);
+
+/// Bad input from a user or a file. `what()` is one line, suitable for stderr
+/// (the message is passed through one_line(): it may quote the input).
 class InputError : public std::runtime_error {
  public:
-  explicit InputError(const std::string& message) : std::runtime_error(message) {}
+  explicit InputError(const std::string& message) : std::runtime_error(one_line(message)) {}
 };
 
 /// A result whose knot type differs from its input (Alexander polynomial mismatch).

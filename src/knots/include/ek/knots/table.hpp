@@ -39,11 +39,14 @@ class KnotTable {
   /// column, wrong number of fields, malformed number or code) throws
   /// InputError with one line naming the file, the row and the column.
   static KnotTable load(const std::string& path);
+  /// The same from the file's text; `path` names the source in messages.
+  static KnotTable parse(const std::string& text, const std::string& path);
   /// Loads the table at knot_table_path() once per process and returns it.
   static const KnotTable& global();
 
   /// The record of `name`; throws InputError("unknown knot ...") otherwise.
-  /// Accepts the table's names and the aliases "unknot" for 0_1.
+  /// Accepts the table's names and the aliases "unknot" and "0" for 0_1 (when no
+  /// row has that name).
   const KnotRecord& at(const std::string& name) const;
   /// nullptr when the name is unknown.
   const KnotRecord* find(const std::string& name) const;
