@@ -4,6 +4,7 @@
 #include <Spectra/SymEigsSolver.h>
 
 #include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <limits>
 
@@ -289,6 +290,10 @@ struct Search {
       return finish(SaddleStatus::Degenerate, it);
     it.shift = shift;
     const VecX d = prfo_along(lambda, g.dot(v)) * v + dperp;
+    if (o.verbose)
+      std::fprintf(stderr, "saddle %4d E %.12g |g| %.3e lambda %.4e rank %d overlap %.3f gv %.3e dv %.3e |dperp| %.3e radius %.3e shift %.2e\n",
+                   result.iterations, E, it.gradient_norm, lambda, rank, it.overlap, g.dot(v),
+                   prfo_along(lambda, g.dot(v)), dperp.cwiseAbs().maxCoeff(), radius, shift);
     if (!take(g, E, d, it)) return finish(SaddleStatus::Stalled, it);
     if (o.record_trace) result.trace.push_back(it);
     return true;

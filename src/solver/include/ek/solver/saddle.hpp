@@ -73,6 +73,7 @@ struct SaddleSearchOptions {
   int eigen_count = 3;               ///< [1] eigenpairs per iteration (>= the followed mode's rank + 2)
   double eigen_tolerance = 1e-10;    ///< [1] relative tolerance of the Ritz values
   bool record_trace = false;         ///< keep one SaddleIteration per iteration
+  bool verbose = false;              ///< print each iteration on stderr
   void validate() const;             ///< std::invalid_argument for impossible values
 };
 

@@ -1,0 +1,148 @@
+// find_knot_saddles() on a small knot (4_1, 120 unit edges: a few seconds):
+// every verified saddle passes the checks again on its own, the same saddle
+// is found from both states it joins with the barriers swapped, and the
+// start is refused when it is not a stable equilibrium.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "ek/analysis/similarity.hpp"
+#include "ek/core/errors.hpp"
+#include "ek/knots/alexander.hpp"
+#include "ek/knots/table.hpp"
+#include "ek/lattice/lattice_polygon.hpp"
+#include "ek/lattice/sampling.hpp"
+#include "ek/transitions/saddles.hpp"
+#include "testing.hpp"
+
+using namespace ek;
+
+namespace {
+
+constexpr int kVertices = 120;
+
+/// The stable states of three BFACF samples of 4_1 (seed 1, unit edges).
+const std::vector<Points>& states() {
+  static const std::vector<Points> out = [] {
+    SampleOptions so;
+    so.vertices = kVertices;
+    so.count = 3;
+    const SampleBatch batch = sample_knot(KnotTable::global().at("4_1"), so);
+    std::vector<Points> s;
+    for (const auto& p : batch.samples) {
+      const RelaxResult r = relax(to_points(p), RelaxOptions{});
+      EXPECT_EQ(r.status(), "converged-stable");
+      s.push_back(r.positions);
+    }
+    return s;
+  }();
+  return out;
+}
+
+VecX unit_rest() { return VecX::Ones(kVertices); }
+
+double sim(const Points& a, const Points& b) {
+  SimilarityOptions o;
+  o.reversal = true;
+  return similarity(a, b, o);
+}
+
+struct SearchRun {
+  SaddleStart start;
+  std::vector<SaddleRecord> records;
+};
+
+SearchRun run(const Points& state, int modes) {
+  KnotSaddleOptions o;
+  o.modes = modes;
+  SearchRun r{prepare_start(state, unit_rest(), o), {}};
+  r.records = find_knot_saddles(r.start, unit_rest(), o, sim);
+  return r;
+}
+
+}  // namespace
+
+// Each verified record, checked again independently of the search: the
+// saddle's gradient at the tolerance, exactly one eigenvalue below −ε·λ_min
+// and none within ±ε·λ_min; both minima stable equilibria (no eigenvalue
+// below ε·λ_min), the first the start (similarity >= 0.99, energy within
+// 1e-8 relative), the second not; the path's highest image is the saddle;
+// the Alexander polynomial on every image.
+TEST(KnotSaddles, VerifiedSaddlesOf41PassTheChecksAgain) {
+  const SearchRun r = run(states()[1], 3);
+  const AlexanderPolynomial a41 = alexander(states()[1]);
+  int verified = 0;
+  for (const SaddleRecord& s : r.records) {
+    EXPECT_FALSE(s.status.empty());
+    EXPECT_EQ(s.verified, s.status == "verified");
+    if (!s.verified) continue;
+    ++verified;
+    const PointCheck c = check_point(s.saddle, unit_rest(), RelaxOptions{});
+    EXPECT_LE(c.gradient_norm, c.tolerance);
+    ASSERT_TRUE(c.index.converged);
+    EXPECT_EQ(c.index.negative, 1) << c.index.values.transpose();
+    EXPECT_EQ(c.index.near_zero, 0);
+    EXPECT_GT(s.energy, r.start.energy);  // the descent to the start is monotone
+    EXPECT_GT(s.energy, s.minima[1].energy);
+    for (int k = 0; k < 2; ++k) {
+      const SaddleMinimum& m = s.minima[k];
+      EXPECT_EQ(m.status, "converged-stable");
+      const PointCheck e = check_point(m.positions, unit_rest(), RelaxOptions{});
+      EXPECT_LE(e.gradient_norm, e.tolerance);
+      EXPECT_GT(e.index.values(0), e.threshold) << "minimum " << k << " is not stable";
+      for (size_t j = 0; j < m.images.size(); ++j) {
+        EXPECT_EQ(alexander(m.images[j]), a41);
+        EXPECT_LE(m.energies[j], s.energy + 1e-12 * std::abs(s.energy)) << "image " << j << " of minimum " << k;
+      }
+    }
+    EXPECT_GE(sim(s.minima[0].positions, r.start.positions), 0.99);
+    EXPECT_NEAR(s.minima[0].energy, r.start.energy, 1e-8 * r.start.energy);
+    EXPECT_GT(std::abs(s.minima[1].energy - r.start.energy), 1e-8 * r.start.energy);
+    std::vector<double> energies;
+    int at = -1;
+    const std::vector<Points> path = saddle_path(s, energies, at);
+    ASSERT_EQ(path.size(), energies.size());
+    EXPECT_EQ(path[static_cast<size_t>(at)], s.saddle);
+    EXPECT_EQ(path.front(), s.minima[0].positions);
+    EXPECT_EQ(path.back(), s.minima[1].positions);
+  }
+  std::cout << "[ measured ] " << verified << " of " << r.records.size() << " searches verified" << std::endl;
+  EXPECT_GE(verified, 1);  // measured: 3 of 6 (two distinct saddles)
+}
+
+// The saddle between states 1 and 2 is found from each side: the same energy
+// (1e-9 relative), each start's forward barrier the other's backward one.
+TEST(KnotSaddles, TheSaddleBetweenTwoStatesIsFoundFromBoth) {
+  const SearchRun a = run(states()[1], 3);
+  const SearchRun b = run(states()[2], 1);
+  bool found = false;
+  for (const SaddleRecord& x : a.records) {
+    for (const SaddleRecord& y : b.records) {
+      if (!x.verified || !y.verified || std::abs(x.energy - y.energy) > 1e-9 * x.energy) continue;
+      found = true;
+      EXPECT_GE(sim(x.saddle, y.saddle), 0.99);
+      EXPECT_NEAR(x.minima[1].energy, b.start.energy, 1e-8 * b.start.energy);
+      EXPECT_NEAR(y.minima[1].energy, a.start.energy, 1e-8 * a.start.energy);
+    }
+  }
+  EXPECT_TRUE(found) << "no common verified saddle of 4_1's states 1 and 2";
+}
+
+// A curve that is no equilibrium, or an unstable one, is refused.
+TEST(KnotSaddles, StartMustBeAStableEquilibrium) {
+  KnotSaddleOptions o;
+  SampleOptions so;
+  so.vertices = kVertices;
+  const SampleBatch batch = sample_knot(KnotTable::global().at("4_1"), so);
+  const Points lattice = to_points(batch.samples[0]);
+  fixtures::expect_input_error([&] { prepare_start(lattice, unit_rest(), o); }, "not an equilibrium");
+  // a verified saddle is an equilibrium but not stable
+  const SearchRun r = run(states()[1], 2);
+  for (const SaddleRecord& s : r.records) {
+    if (!s.verified) continue;
+    fixtures::expect_input_error([&] { prepare_start(s.saddle, unit_rest(), o); }, "not a stable equilibrium");
+    break;
+  }
+  o.modes = 0;
+  EXPECT_THROW(o.validate(), InputError);
+}
