@@ -29,6 +29,7 @@ inline Json saddles_json(const std::vector<SaddleRecord>& records, double start_
     j["barrier"] = number(r.energy - start_energy);
     j["other_energy"] = number(r.minima[1].energy);
     j["start_similarity"] = number(r.minima[0].start_similarity);
+    j["other_similarity"] = number(r.minima[1].start_similarity);
     j["barrier_forward"] = number(r.energy - start_energy);
     j["barrier_backward"] = number(r.energy - r.minima[1].energy);
     j["barrier_forward_scaled"] = number((r.energy - start_energy) / scale);
