@@ -19,6 +19,9 @@ using Clock = std::chrono::steady_clock;
 using SpMat = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 using Ldlt = Eigen::SimplicialLDLT<SpMat, Eigen::Upper, Eigen::AMDOrdering<int>>;
 
+/// Halvings of the complement step before it is given up (relax_complement).
+constexpr int kMaxBacktracks = 40;
+
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 /// y = P (H − τI)⁻¹ P x, P = I − Q Qᵀ.
@@ -265,6 +268,33 @@ struct Search {
     return false;
   }
 
+  /// The complement step d⊥ (⊥ v and the rigid modes, a descent direction
+  /// since M is positive definite there) with a backtracking line search on
+  /// the energy (Armijo, 1e-4), at most the largest trust radius long and cut
+  /// by the CCD. The quadratic model of a rod is accurate only over short
+  /// steps (a linear step stretches the edges at second order), so a trust
+  /// region on d⊥ would keep it a small fraction of Newton's step; the line
+  /// search takes what lowers the energy, as Newton's method does. False when
+  /// no step lowers it.
+  bool relax_complement(const VecX& g, double E, const VecX& dperp) {
+    const double dmax = dperp.cwiseAbs().maxCoeff();
+    if (!(dmax > 0.0) || !(g.dot(dperp) < 0.0)) return false;
+    double t = std::min(1.0, o.max_trust_radius / dmax);
+    for (int k = 0; k < kMaxBacktracks; ++k, t *= 0.5) {
+      VecX dd = t * dperp;
+      dd *= f.max_step(x, dd);
+      f.set_dofs(x + dd);
+      const double E1 = f.energy();
+      if (std::isfinite(E1) && E1 <= E + 1e-4 * g.dot(dd)) {
+        x += dd;
+        f.accept();
+        return true;
+      }
+    }
+    f.set_dofs(x);
+    return false;
+  }
+
   /// One iteration; false when the search ends (result.status set).
   bool iterate() {
     SaddleIteration it;
@@ -289,12 +319,15 @@ struct Search {
     if (!complement.step(A.matrix(), A.pattern_version(), g, C, o.base_shift, shift, dperp))
       return finish(SaddleStatus::Degenerate, it);
     it.shift = shift;
-    const VecX d = prfo_along(lambda, g.dot(v)) * v + dperp;
+    const bool relaxed = relax_complement(g, E, dperp);
+    const VecX g1 = relaxed ? f.gradient() : g;
+    const double E1 = relaxed ? f.energy() : E;
+    const VecX d = prfo_along(lambda, g1.dot(v)) * v;
     if (o.verbose)
       std::fprintf(stderr, "saddle %4d E %.12g |g| %.3e lambda %.4e rank %d overlap %.3f gv %.3e dv %.3e |dperp| %.3e radius %.3e shift %.2e\n",
                    result.iterations, E, it.gradient_norm, lambda, rank, it.overlap, g.dot(v),
                    prfo_along(lambda, g.dot(v)), dperp.cwiseAbs().maxCoeff(), radius, shift);
-    if (!take(g, E, d, it)) return finish(SaddleStatus::Stalled, it);
+    if (!take(g1, E1, d, it)) return finish(SaddleStatus::Stalled, it);
     if (o.record_trace) result.trace.push_back(it);
     return true;
   }

@@ -19,12 +19,18 @@
 ///        d = −M⁻¹(g + Cη),   (CᵀM⁻¹C) η = −CᵀM⁻¹g,   C = [v Q],
 ///     with σ = σ₀·10^j the smallest rung for which M is positive definite on
 ///     C^⊥, read from the inertia: neg(ZᵀMZ) = neg(M) + pos(CᵀM⁻¹C) − cols(C);
-///  4. the step d = Δ_v v + d_⊥ is scaled to the trust radius (largest |d_i|)
-///     and cut to the collision-free fraction (Objective::max_step: the CCD,
-///     so no step lets two edges touch and the knot type cannot change); it
-///     is accepted when the energy change agrees with the quadratic model
-///     g·d + ½dᵀHd within half the model's scale |g·d| + ½|dᵀHd| (the radius
-///     then grows ×2 after a good agreement), else the radius shrinks ×1/4.
+///  4. d_⊥ is taken with a backtracking line search on the energy (Armijo,
+///     1e-4; at most max_trust_radius long): it is a descent direction, and
+///     the quadratic model of a rod holds only over short steps (a linear
+///     step stretches the edges at second order), so a trust region on d_⊥
+///     would keep it a small fraction of Newton's step;
+///  5. then, with g_v at the new point, the step Δ_v v is scaled to the trust
+///     radius (largest |d_i|); it is accepted when the energy change agrees
+///     with the quadratic model g·d + ½dᵀHd within half the model's scale
+///     |g·d| + ½|dᵀHd| (the radius then grows ×2 after a good agreement),
+///     else the radius shrinks ×1/4.
+///  Every trial is cut to the collision-free fraction (Objective::max_step:
+///  the CCD, so no step lets two edges touch and the knot type cannot change).
 /// Near a non-degenerate index-1 saddle the step is Newton's (quadratic
 /// convergence). The search ends converged when ||g||₂ <= the tolerance with
 /// λ_v < 0 and v the lowest mode; otherwise with a status (never a false
