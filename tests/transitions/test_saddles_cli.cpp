@@ -90,5 +90,8 @@ TEST(SaddlesCli, WritesVerifiedSaddlesAndKeepsAnExistingFolder) {
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_FALSE(fs::exists(out + "/mine.txt"));
   EXPECT_EQ(r.json().at("searches").size(), 2u);
-  for (const auto& e : fs::directory_iterator(dir)) EXPECT_EQ(e.path().filename().string().find(".tmp."), std::string::npos);
+  for (const auto& e : fs::directory_iterator(dir)) {
+    EXPECT_EQ(e.path().filename().string().find(".tmp."), std::string::npos) << e.path();
+    EXPECT_EQ(e.path().filename().string().find(".old."), std::string::npos) << e.path();
+  }
 }

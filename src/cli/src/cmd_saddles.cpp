@@ -98,8 +98,13 @@ void write_outputs(const SaddlesCommand& c, const SaddleStart& s, const std::vec
     AtomicFile f((tmp / "summary.json").string());
     f.stream() << summary.dump(2) << "\n";
     f.commit();
-    if (fs::exists(out)) fs::remove_all(out);  // --overwrite (checked before the run)
+    // --overwrite (checked before the run): the old folder is moved aside
+    // and removed only once the new one is in place.
+    const fs::path old = out.parent_path() / (out.filename().string() + ".old." + std::to_string(::getpid()));
+    const bool replace = fs::exists(out);
+    if (replace) fs::rename(out, old);
     fs::rename(tmp, out);
+    if (replace) fs::remove_all(old);
   } catch (...) {
     std::error_code ec;
     fs::remove_all(tmp, ec);
