@@ -34,7 +34,7 @@ for v in saddles:
 ax.axvline(0, color="0.8", lw=0.8)
 ax.set_xlabel("image (0: the saddle; left: descent to the start, right: to the other minimum)")
 ax.set_ylabel("(E - E_start) / (EI/L)")
-ax.legend(fontsize=6)
+ax.legend(fontsize=5, ncol=2, loc="lower left")
 ax.set_title(f"4_1: {s['saddles']} verified saddles from {s['states']} states "
              f"({s['verified']} of {s['searches']} searches), {s['seconds_per_saddle']:.2g} s per saddle", fontsize=9)
 
