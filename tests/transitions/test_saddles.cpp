@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <map>
 
 #include "ek/analysis/similarity.hpp"
 #include "ek/core/errors.hpp"
@@ -108,6 +109,38 @@ TEST(KnotSaddles, VerifiedSaddlesOf41PassTheChecksAgain) {
   }
   std::cout << "[ measured ] " << verified << " of " << r.records.size() << " searches verified" << std::endl;
   EXPECT_GE(verified, 1);  // measured: 3 of 6
+}
+
+// The verification's classification holds on every record of states 0 and 1
+// (measured: verified, start-not-reached, returns-to-start and
+// max-iterations all occur): a minimum "is the start" when its similarity is
+// >= 0.99 and its energy within 1e-8 relative; verified: the first is, the
+// second not; start-not-reached: neither; returns-to-start: both; a search
+// that did not converge has no descents.
+TEST(KnotSaddles, StatusesFollowFromTheDescents) {
+  std::map<std::string, int> seen;
+  for (int state : {0, 1}) {
+    const SearchRun r = run(states()[static_cast<size_t>(state)], 3);
+    const auto is_start = [&](const SaddleMinimum& m) {
+      return !m.images.empty() && m.start_similarity >= 0.99 &&
+             std::abs(m.energy - r.start.energy) <= 1e-8 * std::abs(r.start.energy);
+    };
+    for (const SaddleRecord& s : r.records) {
+      ++seen[s.status];
+      const bool descended = !s.minima[0].images.empty();
+      const bool stopped = s.status == "max-iterations" || s.status == "stalled" || s.status == "left-basin";
+      EXPECT_FALSE(stopped && descended) << s.status;
+      if (!descended) continue;
+      EXPECT_EQ(s.index, 1) << s.status;
+      const bool a = is_start(s.minima[0]), b = is_start(s.minima[1]);
+      EXPECT_EQ(s.status == "verified", a && !b) << s.status;
+      EXPECT_EQ(s.status == "start-not-reached", !a && !b) << s.status;
+      EXPECT_EQ(s.status == "returns-to-start", a && b) << s.status;
+    }
+  }
+  for (const auto& [status, count] : seen) std::cout << "[ measured ] " << status << ": " << count << std::endl;
+  EXPECT_GT(seen["verified"], 0);
+  EXPECT_GT(seen["start-not-reached"] + seen["returns-to-start"], 0);  // the checks reject something
 }
 
 // A path joins two independently relaxed samples: a verified saddle from
