@@ -124,6 +124,8 @@ bench: build
 	    --out results/bench && \
 	  taskset -c $(BENCH_CORE) $(BUILD)/experiments/exp_bench_solver --skips --count 3 \
 	    --knots 4_1,8_19,12a_1019 --out results/bench; fi
+	@if [ -x $(BUILD)/experiments/exp_bench_saddles ]; then \
+	  taskset -c $(BENCH_CORE) $(BUILD)/experiments/exp_bench_saddles --out results/bench; fi
 	taskset -c $(BENCH_CORE) $(BUILD)/experiments/exp_time_vs_error --scale $(BENCH_SCALE) --out results/bench/time_vs_error
 	MPLBACKEND=Agg $(PYTHON) figures/time_vs_error.py --results results/bench/time_vs_error --out figures/out
 	@$(PYTHON) scripts/bench_summary.py results/bench

@@ -17,6 +17,7 @@
 #include "periodic_braids_summary.hpp"
 #include "planarity_summary.hpp"
 #include "puzzles_summary.hpp"
+#include "saddles_summary.hpp"
 #include "thresholds.hpp"
 #include "time_vs_error_summary.hpp"
 
@@ -167,6 +168,13 @@ TEST(Summaries, OtherSummariesRoundTrip) {
   old.erase("radius");
   old.erase("dhat");
   EXPECT_FALSE(parse_summary<PuzzlesSummary>(old, "old").radius.has_value());
+  SaddlesSummary sd;
+  sd.knot = "4_1";
+  sd.verified_saddles = {{1, 3, 0.8, 2e-6, 0.79, 3e-4, -4e-6, 1.0, 0.9998, 0.05, "state1_search3"}};
+  const SaddlesSummary sr = round_trip(sd);
+  EXPECT_EQ(sr.verified_saddles.at(0).folder, "state1_search3");
+  EXPECT_DOUBLE_EQ(sr.verified_saddles.at(0).other_similarity, 0.9998);
+  EXPECT_EQ(ordered_json(sd).begin().key(), "scale");
   TimeVsErrorSummary t;
   t.michell = {{400, 2.6, 1e-4}};
   EXPECT_EQ(round_trip(t).michell.at(0).n, 400);

@@ -68,7 +68,7 @@ KnotEntry entry(const std::string& name) {
 
 std::string dataset(const std::string& name) {
   const std::string path = ::testing::TempDir() + name;
-  DatasetMetadata meta;
+  DatasetMetadata meta = dataset_metadata(ExploreOptions{});  // every parameter the writer needs
   meta.project_version = "test";
   meta.created = "2026-11-24T00:00:00Z";
   meta.sampling = "fixed:5";

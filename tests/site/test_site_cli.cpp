@@ -34,7 +34,7 @@ std::string small_dataset(const std::string& dir) {
   e.similarity = Eigen::MatrixXd::Constant(3, 3, 0.5);
   e.similarity.diagonal().setOnes();
   e.linkage = ek::complete_linkage_from_similarity(e.similarity).linkage_matrix();
-  ek::DatasetMetadata meta;
+  ek::DatasetMetadata meta = ek::dataset_metadata(ek::ExploreOptions{});  // every parameter the writer needs
   meta.sampling = "fixed:3";
   const std::string path = dir + "/ds.h5";
   ek::DatasetWriter w(path, meta);

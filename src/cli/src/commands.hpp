@@ -21,4 +21,5 @@ int cmd_search(int argc, char** argv);
 int cmd_export(int argc, char** argv);
 int cmd_site(int argc, char** argv);
 int cmd_serve(int argc, char** argv);
+int cmd_saddles(int argc, char** argv);
 }  // namespace ek::cli
