@@ -36,6 +36,8 @@ std::string small_dataset(const std::string& dir) {
   e.linkage = ek::complete_linkage_from_similarity(e.similarity).linkage_matrix();
   ek::DatasetMetadata meta = ek::dataset_metadata(ek::ExploreOptions{});  // every parameter the writer needs
   meta.sampling = "fixed:3";
+  meta.created = "2026-11-24T00:00:00Z";
+  meta.project_version = "test";
   const std::string path = dir + "/ds.h5";
   ek::DatasetWriter w(path, meta);
   w.add(e);
