@@ -2,11 +2,11 @@
 (a) energy along the minimum energy path of each verified index-1 saddle of
 4_1's states, E - E_start in units of EI/L, from the start over the saddle to
 the other minimum; (b) the start, saddle and end of the path with the highest
-barrier, in the start's principal frame, coloured by curvature, with the
+barrier, in the start's principal frame, as tubes coloured by curvature, with the
 largest vertex displacement from the start."""
 import numpy as np
 
-from common import curvature, draw_shadow, parse_args, plt, read_csv, read_obj, read_summary, save
+from common import WIRE_RADIUS, curvature, draw_framed, frame_of, parse_args, plt, read_csv, read_obj, read_summary, save
 
 a = parse_args(__doc__)
 d = f"{a.results}/saddles"
@@ -40,15 +40,13 @@ ax.set_title(f"4_1: {s['saddles']} verified saddles from {s['states']} states "
 
 top = max(saddles, key=lambda v: v["barrier"])
 curves = [read_obj(f"{d}/{top['folder']}/{name}.obj") for name in ("start", "saddle", "end")]
-centre = curves[0].mean(axis=0)
-_, _, vt = np.linalg.svd(curves[0] - centre, full_matrices=False)
-frames = [(P - centre) @ vt.T for P in curves]
-vmax = max(np.percentile(curvature(Q), 99) for Q in frames)
+frame = frame_of(curves[0])
+vmax = max(np.percentile(curvature(P), 99) for P in curves)
 lc = None
-for c, (name, Q) in enumerate(zip(("start", "saddle", "end"), frames)):
+for c, (name, P) in enumerate(zip(("start", "saddle", "end"), curves)):
     sub = fig.add_subplot(grid[0, c + 1])
-    lc = draw_shadow(sub, Q, curvature(Q), (0, 1), vmax)
-    moved = np.linalg.norm(Q - frames[0], axis=1).max()
+    lc = draw_framed(sub, P, "top", frame, radius=WIRE_RADIUS, vmax=vmax)
+    moved = np.linalg.norm(P - curves[0], axis=1).max()
     sub.set_title(f"{name}\nmax. displacement {moved:.3g}", fontsize=8)
 fig.colorbar(lc, cax=fig.add_subplot(grid[0, 4]), label="curvature")
 fig.suptitle(f"highest barrier: {top['barrier_scaled']:.3g} EI/L (state {top['state']}, search {top['search']})",
