@@ -101,11 +101,6 @@ def draw_views(axs, P, views=("top", "front"), labels=True, **kwargs):
     return sm
 
 
-# The wire radius of every experiment's data sets (r = 0.2, experiments/common/scales.hpp),
-# for the figures whose summaries do not record it.
-WIRE_RADIUS = 0.2
-
-
 def frame_of(P):
     """The principal frame of a curve: (centre, R) with the rows of R its
     principal axes, largest first. Curves aligned onto one another (the
@@ -116,7 +111,7 @@ def frame_of(P):
     return c, vt
 
 
-def draw_framed(ax, P, view, frame, color="curvature", label=None, radius=WIRE_RADIUS, radius_scale=4.0, **kwargs):
+def draw_framed(ax, P, view, frame, *, radius, color="curvature", label=None, radius_scale=4.0, **kwargs):
     """draw_curve seen from `view` (top, front or side) of `frame` instead of
     the curve's own principal frame; several curves drawn into one axes this
     way overlay (each a tube; the later one is drawn over the earlier). The
@@ -134,6 +129,14 @@ def draw_framed(ax, P, view, frame, color="curvature", label=None, radius=WIRE_R
     if label is not None:
         ax.plot([], [], color=color, lw=3, label=label)
     return sm
+
+
+def save_empty(out, name, text):
+    """The figure when its results hold nothing to draw: one line saying so."""
+    fig, ax = plt.subplots(figsize=(4, 1))
+    ax.text(0.5, 0.5, text, ha="center")
+    ax.axis("off")
+    save(fig, out, name)
 
 
 def dataset_material(h5_path):

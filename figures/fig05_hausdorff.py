@@ -4,10 +4,11 @@ farther apart than the cut in similarity) that are closest in Hausdorff
 distance after rigid alignment, drawn on top of each other, with both
 numbers. Right: every pair, Hausdorff distance against 1 - similarity; the
 similarity's cut and the median Hausdorff distance of pairs within one state."""
-from common import draw_framed, frame_of, parse_args, plt, read_csv, read_obj, read_summary, save, flag
+from common import dataset_material, draw_framed, frame_of, parse_args, plt, read_csv, read_obj, read_summary, save, flag
 
 a = parse_args(__doc__)
 s = read_summary(a.results, "hausdorff")
+radius, _ = dataset_material(f"{a.results}/hausdorff/hausdorff.h5")
 rows = read_csv(f"{a.results}/hausdorff/pairs.csv")
 shown = s["shown"][:2]
 
@@ -19,8 +20,8 @@ for col, p in enumerate(shown):
     frame = frame_of(A)
     for row, view in enumerate(("top", "front")):
         ax = fig.add_subplot(grid[row, col])
-        draw_framed(ax, A, view, frame, color="tab:blue", label=f"#{p['a']} (state {p['cluster_a'] + 1})")
-        draw_framed(ax, B, view, frame, color="tab:orange", label=f"#{p['b']} (state {p['cluster_b'] + 1})")
+        draw_framed(ax, A, view, frame, radius=radius, color="tab:blue", label=f"#{p['a']} (state {p['cluster_a'] + 1})")
+        draw_framed(ax, B, view, frame, radius=radius, color="tab:orange", label=f"#{p['b']} (state {p['cluster_b'] + 1})")
         if row == 0:
             ax.set_title(f"Hausdorff {p['hausdorff']:.2f}\n1 − similarity {p['similarity_distance']:.3f}", fontsize=8)
             ax.legend(fontsize=6, loc="lower center", bbox_to_anchor=(0.5, -0.25), frameon=False)

@@ -2,7 +2,7 @@
 the data set with the smallest (upper block) and the largest value (lower
 block), each from three sides as a tube coloured by curvature, with the value
 and the knot type."""
-from common import WIRE_RADIUS, draw_views, parse_args, plt, read_obj, read_summary, save
+from common import dataset_material, draw_views, parse_args, plt, read_obj, read_summary, save
 
 LABELS = {"energy": "energy", "stiffness": "stiffness", "max_stress": "max. stress",
           "total_curvature": "total curvature", "threedim": "3D-ness", "sphericity": "sphericity",
@@ -10,6 +10,7 @@ LABELS = {"energy": "energy", "stiffness": "stiffness", "max_stress": "max. stre
 
 a = parse_args(__doc__)
 s = read_summary(a.results, "filters")
+radius, _ = dataset_material(f"{a.results}/{s['dataset']}")
 attributes = s["attributes"]
 by = {(x["attribute"], x["extreme"]): x for x in s["extremes"]}
 fig, axs = plt.subplots(6, len(attributes), figsize=(1.6 * len(attributes), 7.6), squeeze=False)
@@ -17,7 +18,7 @@ for col, attribute in enumerate(attributes):
     for block, extreme in enumerate(("min", "max")):
         x = by[(attribute, extreme)]
         cells = [axs[3 * block + k][col] for k in range(3)]
-        draw_views(cells, read_obj(f"{a.results}/filters/{x['curve']}"), views=("top", "front", "side"), radius=WIRE_RADIUS, radius_scale=4.0)
+        draw_views(cells, read_obj(f"{a.results}/filters/{x['curve']}"), views=("top", "front", "side"), radius=radius, radius_scale=4.0)
         for c in cells:
             c.set_title("")
         head = f"{LABELS.get(attribute, attribute)}\n" if block == 0 else ""

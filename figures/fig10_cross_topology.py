@@ -2,10 +2,11 @@
 equilibria of other knot types in the data set closest in shape (ICP
 alignment after a pre-filter on 3D-ness and diameter), ranked, each drawn
 aligned onto the query and in the query's frame, with its alignment distance."""
-from common import draw_framed, frame_of, parse_args, plt, read_obj, read_summary, save
+from common import dataset_material, draw_framed, frame_of, parse_args, plt, read_obj, read_summary, save
 
 a = parse_args(__doc__)
 s = read_summary(a.results, "cross_topology")
+radius, _ = dataset_material(f"{a.results}/{s['dataset']}")
 queries = s["queries"]
 cols = 1 + max((len(q["hits"]) for q in queries), default=0)
 fig, axs = plt.subplots(2 * len(queries), cols, figsize=(1.6 * cols, 3.4 * len(queries)), squeeze=False)
@@ -22,8 +23,8 @@ for row, q in enumerate(queries):
                 ax.axis("off")
                 continue
             if col > 0:  # the query in grey behind each hit
-                draw_framed(ax, Q, view, frame, color="0.8")
-            draw_framed(ax, curves[col][0], view, frame)
+                draw_framed(ax, Q, view, frame, radius=radius, color="0.8")
+            draw_framed(ax, curves[col][0], view, frame, radius=radius)
             if k == 0:
                 ax.set_title(curves[col][1], fontsize=6)
     axs[2 * row][0].set_ylabel("top", fontsize=7)

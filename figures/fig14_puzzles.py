@@ -3,7 +3,7 @@ same writhe (hence the same link for the joined wire): the two states from
 the top and the front, as tubes of the wire's radius coloured by contact
 (red: closer than the contact distance d̂ to another strand), since the
 states differ in their contact patterns, and the link of the puzzle."""
-from common import (contact_legend, draw_views, parse_args, plt, read_csv, read_obj, read_summary, save,
+from common import (contact_legend, draw_views, parse_args, plt, read_csv, read_obj, read_summary, save, save_empty,
                     summary_radius)
 
 SCALE = 2.0  # wire drawn at this multiple of its radius
@@ -20,10 +20,7 @@ for r in rows:
         best[r["knot"]] = r
 shown = sorted(best.values(), key=lambda r: float(r["similarity"]))[:4]
 if not shown:
-    fig, ax = plt.subplots(figsize=(4, 1))
-    ax.text(0.5, 0.5, "no puzzle found at this scale", ha="center")
-    ax.axis("off")
-    save(fig, a.out, "fig14_puzzles")
+    save_empty(a.out, "fig14_puzzles", "no puzzle found at this scale")
     raise SystemExit
 radius = summary_radius(s, "puzzles")
 dhat = s["dhat"]

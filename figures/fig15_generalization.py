@@ -5,10 +5,11 @@ knot types and distances. Bottom: the pretzel knots P(p,q,r) built with p, q
 and r crossings in the three touching regions, relaxed: crossings, whether a
 table knot shares the Alexander polynomial, energy, 3D-ness, similarity to
 9_35's state and the three-circle fit. Two views each (top, front)."""
-from common import draw_framed, frame_of, parse_args, plt, read_obj, read_summary, save
+from common import dataset_material, draw_framed, frame_of, parse_args, plt, read_obj, read_summary, save
 
 a = parse_args(__doc__)
 s = read_summary(a.results, "generalization")
+radius, _ = dataset_material(f"{a.results}/{s['dataset']}")  # the members are relaxed with its model
 folder = f"{a.results}/generalization"
 hits = s["search"][:5]
 members = s["members"]
@@ -42,8 +43,8 @@ for block, items in enumerate((top, bottom)):
                 continue
             P, label, fr = items[col]
             if block == 0 and col > 0:
-                draw_framed(ax, pattern, view, frame, color="0.8")
-            draw_framed(ax, P, view, fr)
+                draw_framed(ax, pattern, view, frame, radius=radius, color="0.8")
+            draw_framed(ax, P, view, fr, radius=radius)
             if k == 0:
                 ax.set_title(label, fontsize=5.5)
 axs[0][0].set_ylabel("top", fontsize=7)

@@ -6,7 +6,8 @@ barrier, in the start's principal frame, as tubes coloured by curvature, with th
 largest vertex displacement from the start."""
 import numpy as np
 
-from common import WIRE_RADIUS, curvature, draw_framed, frame_of, parse_args, plt, read_csv, read_obj, read_summary, save
+from common import (curvature, dataset_material, draw_framed, frame_of, parse_args, plt, read_csv, read_obj, read_summary,
+                    save, save_empty)
 
 a = parse_args(__doc__)
 d = f"{a.results}/saddles"
@@ -14,11 +15,9 @@ s = read_summary(a.results, "saddles")
 profile = read_csv(f"{d}/profile.csv")
 saddles = s["verified_saddles"]
 if not saddles:
-    fig, ax = plt.subplots(figsize=(4, 1))
-    ax.text(0.5, 0.5, "no verified saddle at this scale", ha="center")
-    ax.axis("off")
-    save(fig, a.out, "fig_saddles")
+    save_empty(a.out, "fig_saddles", "no verified saddle at this scale")
     raise SystemExit
+radius, _ = dataset_material(f"{a.results}/multistability/multistability.h5")  # the states' data set
 
 fig = plt.figure(figsize=(12, 4.2))
 grid = fig.add_gridspec(1, 5, width_ratios=[2.2, 1, 1, 1, 0.05])
@@ -45,7 +44,7 @@ vmax = max(np.percentile(curvature(P), 99) for P in curves)
 lc = None
 for c, (name, P) in enumerate(zip(("start", "saddle", "end"), curves)):
     sub = fig.add_subplot(grid[0, c + 1])
-    lc = draw_framed(sub, P, "top", frame, radius=WIRE_RADIUS, vmax=vmax)
+    lc = draw_framed(sub, P, "top", frame, radius=radius, vmax=vmax)
     moved = np.linalg.norm(P - curves[0], axis=1).max()
     sub.set_title(f"{name}\nmax. displacement {moved:.3g}", fontsize=8)
 fig.colorbar(lc, cax=fig.add_subplot(grid[0, 4]), label="curvature")
