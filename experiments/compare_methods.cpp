@@ -37,7 +37,7 @@ using namespace ek::exp;
 
 namespace {
 
-results::KnotMethodComparison knot_row(const KnotComparison& k, const CompareOptions& o) {
+results::KnotMethodComparison knot_row(const KnotComparison& k) {
   results::KnotMethodComparison r;
   r.knot = k.knot;
   r.equilibria_a = k.equilibria_a;
@@ -58,7 +58,6 @@ results::KnotMethodComparison knot_row(const KnotComparison& k, const CompareOpt
   r.lowest_b = k.lowest_b;
   r.energy_difference = k.energy_difference;
   r.ok = k.counterparts_ok && k.energy_ok;
-  (void)o;
   return r;
 }
 
@@ -71,7 +70,7 @@ results::DatasetMethodComparison compare(const std::string& root, const std::str
   results::DatasetMethodComparison out;
   out.experiment = experiment;
   for (const KnotComparison& k : d.knots) {
-    out.knots.push_back(knot_row(k, o));
+    out.knots.push_back(knot_row(k));
     const auto& r = out.knots.back();
     csv.row({method_b, experiment, r.knot, std::to_string(r.equilibria_a), std::to_string(r.equilibria_b),
              std::to_string(r.clusters_a), std::to_string(r.clusters_b), std::to_string(r.missing_a_in_b),
