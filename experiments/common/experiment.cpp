@@ -40,7 +40,7 @@ Args parse_args(int argc, char** argv, const std::string& name, const std::strin
       return argv[++i];
     };
     if (s == "--help" || s == "-h") {
-      std::cout << "usage: " << name << " --scale ci|default|paper --out DIR [--jobs J] [--method M] [--seed S]\n"
+      std::cout << "usage: " << name << " --scale ci|default|paper|paper10 --out DIR [--jobs J] [--method M] [--seed S]\n"
                 << description << "\n";
       std::exit(0);
     } else if (s == "--scale") {
@@ -48,7 +48,8 @@ Args parse_args(int argc, char** argv, const std::string& name, const std::strin
       if (a.scale_name == "ci") a.scale = Scale::CI;
       else if (a.scale_name == "default") a.scale = Scale::Default;
       else if (a.scale_name == "paper") a.scale = Scale::Paper;
-      else fail("--scale '" + a.scale_name + "': expected ci, default or paper");
+      else if (a.scale_name == "paper10") a.scale = Scale::Paper10;
+      else fail("--scale '" + a.scale_name + "': expected ci, default, paper or paper10");
     } else if (s == "--out") {
       a.out = value();
     } else if (s == "--jobs") {
