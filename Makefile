@@ -9,10 +9,11 @@ SCALE      ?= default
 PYTHON     ?= /usr/bin/python3
 CMAKE_ARGS ?=
 
-CONFIGURE = cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DEK_KNOT_TABLE=$(KNOT_TABLE) $(CMAKE_ARGS)
+CONFIGURE = cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DEK_KNOT_TABLE=$(KNOT_TABLE) \
+            -DPython3_EXECUTABLE=$(PYTHON) $(CMAKE_ARGS)
 CTEST     = cd $(BUILD) && KNOT_TABLE=$(KNOT_TABLE) ctest --output-on-failure -j$(JOBS)
 
-.PHONY: help help-experiments deps configure build test unit sanitize fuzz fuzz-build fuzz-test fuzz-seeds stress slurm-test bench figures experiments claims paper-open manifest compare-methods clean \
+.PHONY: help help-experiments deps configure build python test unit sanitize fuzz fuzz-build fuzz-test fuzz-seeds stress slurm-test bench figures experiments claims paper-open manifest compare-methods clean \
         explorer explorer-screenshots serve browser
 
 help:
@@ -33,6 +34,7 @@ help:
 	@echo "make slurm-test  the data set as a Slurm job array on a single-host Slurm (docs/cluster.md; root)"
 	@echo "make fuzz      libFuzzer on every reader, FUZZ_SECONDS=$(FUZZ_SECONDS) per target; crash inputs in results/fuzz/"
 	@echo "make unit      unit tests only"
+	@echo "make python    the Python module elastic_knots in $(BUILD)/python (docs/python.md)"
 	@echo "make deps      install missing Debian packages (scripts/install-deps.sh)"
 	@echo "make manifest  regenerate experiments/manifest.mk from experiments/manifest.json"
 	@echo "make clean     remove build folders (results/ and figures/out/ are kept)"
@@ -49,6 +51,9 @@ configure: deps
 
 build: configure
 	cmake --build $(BUILD) -j$(JOBS)
+
+python: configure
+	cmake --build $(BUILD) -j$(JOBS) --target elastic_knots
 
 test: build sanitize fuzz-test
 	$(CTEST) -LE 'stress-long|sanitize|paper-open'
@@ -127,6 +132,7 @@ bench: build
 	@if [ -x $(BUILD)/experiments/exp_bench_saddles ]; then \
 	  taskset -c $(BENCH_CORE) $(BUILD)/experiments/exp_bench_saddles --out results/bench; fi
 	taskset -c $(BENCH_CORE) $(BUILD)/experiments/exp_time_vs_error --scale $(BENCH_SCALE) --out results/bench/time_vs_error
+	PYTHONPATH=$(BUILD)/python $(PYTHON) bench/python_thread_pool.py --out results/bench
 	MPLBACKEND=Agg $(PYTHON) figures/time_vs_error.py --results results/bench/time_vs_error --out figures/out
 	@$(PYTHON) scripts/bench_summary.py results/bench
 

@@ -14,6 +14,7 @@ packages=(
   povray                                          # figures: the wires as shaded tubes
   libjs-three                                     # the data-set explorer (knots site)
   chromium chromium-driver python3-selenium       # the explorer's browser tests
+  python3-dev python3-pybind11 python3-pytest     # the Python module (make python) and its tests
 )
 optional=(slurmctld slurmd slurm-client munge)
 

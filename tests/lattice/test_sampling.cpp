@@ -184,3 +184,36 @@ TEST(Sampling, BadOptions) {
   const SampleBatch b = sample_lattice_polygons(sq, with([](SampleOptions& o) { o.growth_factor = 1.0; }));
   expect_sample(b.samples[0], 40);
 }
+
+// The start of `knots sample FILE` and of the Python sample(points): a lattice
+// polygon is used as it is, another curve is rounded at a certified scale;
+// both keep the curve's polynomial.
+TEST(Sampling, LatticeStartOfACurve) {
+  const LatticeStart square = lattice_start(to_points(lattice_start(KnotTable::global().at("3_1")).points));
+  EXPECT_EQ(square.method, "lattice");
+  EXPECT_FALSE(square.rounding_scale());
+  EXPECT_EQ(square.alexander, (AlexanderPolynomial{{1, -1, 1}}));
+  const Points coil = embed_knot(KnotTable::global().at("4_1"), EmbeddingSource::Braid, {}).points;
+  const LatticeStart rounded = lattice_start(coil);
+  EXPECT_EQ(rounded.method, "rounded");
+  ASSERT_TRUE(rounded.rounding_scale());
+  EXPECT_GT(*rounded.rounding_scale(), 0.0);
+  EXPECT_EQ(alexander(to_points(rounded.points)), (AlexanderPolynomial{{-1, 3, -1}}));
+  EXPECT_EQ(rounded.embedding_vertices, coil.rows());
+  EXPECT_TRUE(check_lattice_polygon(rounded.points).ok);
+  const LatticeStart table = lattice_start(KnotTable::global().at("4_1"));
+  EXPECT_EQ(table.rounding_scale(), table.rounding.scale);
+  EXPECT_FALSE(lattice_start(KnotTable::global().at("0_1")).rounding_scale());  // the unit square
+}
+
+TEST(Sampling, AttemptedMovesSumEveryPhase) {
+  SampleOptions o;
+  o.vertices = 40;
+  o.count = 3;
+  o.decorrelation_moves = 100;
+  const SampleBatch b = sample_knot(KnotTable::global().at("3_1"), o);
+  long long sum = 0;
+  for (const SampleReport& r : b.reports) sum += r.grow.attempts + r.shrink.attempts + r.decorrelation.attempts;
+  EXPECT_EQ(b.attempted_moves(), sum);
+  EXPECT_GT(b.reports[1].decorrelation.attempts, 0);
+}

@@ -20,9 +20,8 @@ void check_curve(const Points& P, const char* who) {
 }  // namespace
 
 void AttributeOptions::validate() const {
-  require(std::isfinite(radius) && radius > 0.0, "AttributeOptions: radius must be positive and finite");
-  require(std::isfinite(young_modulus) && young_modulus > 0.0,
-          "AttributeOptions: young_modulus must be positive and finite");
+  require_input(std::isfinite(radius) && radius > 0.0, "--radius must be positive");
+  require_input(std::isfinite(young_modulus) && young_modulus > 0.0, "--young must be positive");
 }
 
 Points curvature_binormals(const Points& P) {

@@ -81,6 +81,7 @@ SimilarityResult make_result(int n, const Best& corr, const Best* conv) {
   r.torsion_correlation = best->ct;
   r.mirrored = best->mirrored;
   r.reversed = rev;
+  r.samples = n;
   // correlation index s: vertex i of A matches vertex i + s of B;
   // convolution index c: Σ_i A_i B_{c-i}; B reversed (B'_j = B_{n-1-j}) matches at s = n-1-c.
   r.best_shift = rev ? ((n - 1 - best->index) % n + n) % n : best->index;

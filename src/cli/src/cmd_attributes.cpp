@@ -3,7 +3,7 @@
 
 #include "args.hpp"
 #include "commands.hpp"
-#include "ek/analysis/attributes.hpp"
+#include "ek/analysis/json.hpp"
 #include "ek/core/errors.hpp"
 #include "ek/geometry/curve_io.hpp"
 #include "output.hpp"
@@ -20,26 +20,14 @@ int cmd_attributes(int argc, char** argv) {
   args.option("--young", &material.young_modulus, "Young's modulus E for the stress (default 2000)");
   args.flag("--json", &json, "print one JSON object");
   if (!args.parse(argc, argv)) return 0;
-  require_input(std::isfinite(material.radius) && material.radius > 0.0, "--radius must be positive");
-  require_input(std::isfinite(material.young_modulus) && material.young_modulus > 0.0, "--young must be positive");
+  material.validate();
 
   const Points P = read_curve(file);
   const Attributes a = compute_attributes(P, material);
-  // The rod-dependent attributes (energy, energy_stretch, energy_bend,
-  // energy_twist) and the solver's stiffness are not computed yet: they stay
-  // unset (JSON null) until the rod and solver modules exist; then fill
-  // a.physical here (e.g. from the rod energy of P with this material, and the
-  // smallest positive eigenvalue of the full Hessian) before printing.
   if (json) {
     Json j;
     j["file"] = file;
-    j["vertices"] = P.rows();
-    for (const std::string& name : attribute_names()) {
-      const std::optional<double> v = attribute_value(a, name);
-      j[name] = v ? number(*v) : Json(nullptr);
-    }
-    j["radius"] = number(material.radius);
-    j["young_modulus"] = number(material.young_modulus);
+    j.update(attributes_json(a, static_cast<int>(P.rows()), material));
     print_json(j);
     return 0;
   }

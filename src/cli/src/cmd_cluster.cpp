@@ -6,6 +6,7 @@
 #include "args.hpp"
 #include "commands.hpp"
 #include "ek/core/errors.hpp"
+#include "ek/dataset/json.hpp"
 #include "ek/dataset/pipeline.hpp"
 #include "output.hpp"
 
@@ -29,21 +30,7 @@ int cmd_cluster(int argc, char** argv) {
   const std::vector<StateCluster> clusters = clusters_at_cut(e, *cut);
   const int k = static_cast<int>(clusters.size());
   if (json) {
-    Json j;
-    j["name"] = name;
-    j["cut"] = *cut;
-    j["equilibria"] = m;
-    j["clusters"] = Json::array();
-    for (const auto& c : clusters) {
-      Json cj;
-      cj["size"] = c.members.size();
-      cj["representative"] = c.representative;
-      cj["energy_min"] = number(c.energy_min);
-      cj["energy_max"] = number(c.energy_max);
-      cj["members"] = c.members;
-      j["clusters"].push_back(cj);
-    }
-    print_json(j);
+    print_json(clusters_json(name, *cut, m, clusters));
     return 0;
   }
   std::cout << name << ": " << m << " equilibria in " << k << " clusters at cut " << *cut << " (sorted by energy)\n";

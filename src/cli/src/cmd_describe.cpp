@@ -4,6 +4,7 @@
 #include "args.hpp"
 #include "commands.hpp"
 #include "ek/dataset/dataset_file.hpp"
+#include "ek/dataset/json.hpp"
 #include "output.hpp"
 
 namespace ek::cli {
@@ -19,8 +20,7 @@ int cmd_describe(int argc, char** argv) {
   if (json) {
     Json j;
     j["file"] = file;
-    j["parameters"] = Json::parse(reader.metadata().json());
-    j["knots"] = reader.knot_names();
+    j.update(describe_json(reader));
     print_json(j);
     return 0;
   }

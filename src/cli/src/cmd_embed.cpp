@@ -8,7 +8,7 @@
 #include "ek/core/errors.hpp"
 #include "ek/embedding/embedding.hpp"
 #include "ek/geometry/curve_io.hpp"
-#include "ek/knots/alexander.hpp"
+#include "ek/embedding/json.hpp"
 #include "output.hpp"
 
 namespace ek::cli {
@@ -42,22 +42,12 @@ int cmd_embed(int argc, char** argv) {
   const KnotRecord& knot = KnotTable::global().at(name);
   const Embedding e = embed_knot(knot, parse_embedding_source(from), opt);
   write_curve(out, e.points);
-  const AlexanderPolynomial alex = alexander(e.points);
   if (json) {
-    Json j;
-    j["name"] = knot.name;
-    j["from"] = e.method;
-    j["output"] = out;
-    j["vertices"] = e.points.rows();
-    j["edge_length"] = number(e.edge_length);
-    j["max_edge_deviation"] = number(e.max_edge_deviation);
-    j["clearance"] = number(e.clearance);
-    j["alexander"] = alex.coefficients;
-    print_json(j);
+    print_json(embedding_json(knot.name, e, out));
   } else {
     std::cout << "wrote " << out << ": " << knot.name << " from " << e.method << ", " << e.points.rows()
               << " vertices, edge length " << fmt(e.edge_length) << ", clearance " << fmt(e.clearance)
-              << ", Alexander " << alex.to_string() << "\n";
+              << ", Alexander " << e.alexander->to_string() << "\n";
   }
   return 0;
 }

@@ -3,7 +3,7 @@
 
 #include "args.hpp"
 #include "commands.hpp"
-#include "ek/knots/alexander.hpp"
+#include "ek/knots/json.hpp"
 #include "ek/knots/table.hpp"
 #include "output.hpp"
 
@@ -19,31 +19,11 @@ int cmd_info(int argc, char** argv) {
 
   const auto& table = KnotTable::global();
   const KnotRecord& k = table.at(name);
-  AlexanderPolynomial alex;
-  if (k.pd) alex = alexander(*k.pd);
-  if (k.braid && alexander(*k.braid) != alex)
-    throw std::runtime_error("the table's braid word and PD code of " + k.name +
-                             " give different Alexander polynomials");
-  auto opt = [](const std::optional<int>& v) { return v ? Json(*v) : Json(nullptr); };
   if (json) {
-    Json j;
-    j["name"] = k.name;
-    j["crossing_number"] = k.crossing_number;
-    j["bridge_index"] = opt(k.bridge_index);
-    j["braid_index"] = opt(k.braid_index);
-    j["unknotting_number"] = opt(k.unknotting_number);
-    j["alternating"] = k.alternating ? Json(*k.alternating) : Json(nullptr);
-    j["symmetry_type"] = k.symmetry_type;
-    j["dt"] = k.dt ? Json(to_string(*k.dt)) : Json(nullptr);
-    j["pd"] = k.pd ? Json(to_string(*k.pd)) : Json(nullptr);
-    j["braid"] = k.braid ? Json(to_string(*k.braid)) : Json(nullptr);
-    j["braid_strands"] = k.braid ? Json(k.braid->strands) : Json(nullptr);
-    j["alexander"] = alex.coefficients;
-    j["determinant"] = alex.determinant();
-    j["table"] = table.path();
-    print_json(j);
+    print_json(knot_info_json(k, table));
     return 0;
   }
+  const AlexanderPolynomial alex = table_alexander(k);
   auto show = [](const std::optional<int>& v) { return v ? std::to_string(*v) : std::string("?"); };
   std::cout << "name:              " << k.name << "\n"
             << "crossing number:   " << k.crossing_number << "\n"

@@ -4,9 +4,8 @@
 #include "args.hpp"
 #include "commands.hpp"
 #include "ek/geometry/curve_io.hpp"
-#include "ek/geometry/polyline.hpp"
-#include "ek/geometry/writhe.hpp"
-#include "ek/knots/alexander.hpp"
+#include "ek/knots/invariants.hpp"
+#include "ek/knots/json.hpp"
 #include "output.hpp"
 
 namespace ek::cli {
@@ -20,24 +19,17 @@ int cmd_invariants(int argc, char** argv) {
   if (!args.parse(argc, argv)) return 0;
 
   const Points P = read_curve(file);
-  const AlexanderPolynomial alex = alexander(P);
-  const double wr = writhe(P);
-  const double tc = total_curvature(P);
-  const Clearance cl = clearance(P);
-  const double len = curve_length(P);
+  const CurveInvariants c = curve_invariants(P);
   if (json) {
     Json j;
     j["file"] = file;
-    j["vertices"] = P.rows();
-    j["length"] = number(len);
-    j["alexander"] = alex.coefficients;
-    j["determinant"] = alex.determinant();
-    j["writhe"] = number(wr);
-    j["total_curvature"] = number(tc);
-    j["clearance"] = number(cl.distance);
+    j.update(invariants_json(c));
     print_json(j);
     return 0;
   }
+  const AlexanderPolynomial& alex = c.alexander;
+  const double wr = c.writhe, tc = c.total_curvature, len = c.length;
+  const Clearance& cl = c.clearance;
   std::cout << "vertices:        " << P.rows() << "\n"
             << "length:          " << fmt(len) << "\n"
             << "Alexander:       " << alex.to_string() << "\n"

@@ -16,7 +16,6 @@
 #include "ek/core/atomic_file.hpp"
 #include "ek/core/errors.hpp"
 #include "ek/geometry/curve_io.hpp"
-#include "ek/knots/alexander.hpp"
 #include "ek/lattice/sampling.hpp"
 #include "output.hpp"
 
@@ -114,61 +113,28 @@ std::vector<std::string> output_files(const SampleArgs& a, const std::string& na
   return files;
 }
 
-/// The lattice polygon the walk starts from, and how it was made.
-struct SampleStart {
-  std::string method;  // "lattice", "rounded", or lattice_start()'s method
-  LatticePoints points;
-  AlexanderPolynomial expected;
-  std::optional<double> scale;  // rounding scale, when the start was rounded
-};
-
-/// A curve file is used as it is when it is a lattice polygon and rounded
-/// otherwise; a table knot starts from lattice_start().
-SampleStart sample_start(const SampleSource& src) {
-  SampleStart st;
-  if (src.from_file) {
-    st.expected = alexander(src.curve);
-    if (as_lattice_polygon(src.curve, &st.points)) {
-      st.method = "lattice";
-    } else {
-      const RoundingResult r = round_to_lattice(src.curve, {}, st.expected);
-      st.points = r.points;
-      st.method = "rounded";
-      st.scale = r.scale;
-    }
-  } else {
-    const LatticeStart s = lattice_start(*src.knot);
-    st.points = s.points;
-    st.method = s.method;
-    st.expected = s.alexander;
-    if (s.method != "square") st.scale = s.rounding.scale;
-  }
-  return st;
-}
-
-void print_summary(const SampleArgs& a, const SampleSource& src, const SampleStart& st, const SampleBatch& batch,
+void print_summary(const SampleArgs& a, const SampleSource& src, const LatticeStart& start, const SampleBatch& batch,
                    const std::vector<std::string>& files) {
-  long long moves = 0;
-  for (const SampleReport& r : batch.reports) moves += r.decorrelation.attempts + r.grow.attempts + r.shrink.attempts;
   if (a.json) {
     Json j;
     j["name"] = src.name;
     j["input"] = src.from_file ? Json(a.input) : Json(nullptr);
-    j["start"] = st.method;
-    j["start_vertices"] = st.points.rows();
-    j["rounding_scale"] = st.scale ? number(*st.scale) : Json(nullptr);
+    j["start"] = start.method;
+    j["start_vertices"] = start.points.rows();
+    const std::optional<double> scale = start.rounding_scale();
+    j["rounding_scale"] = scale ? number(*scale) : Json(nullptr);
     j["vertices"] = a.opt.vertices;
     j["count"] = a.count;
     j["seed"] = a.seed;
     j["decorrelation"] = a.opt.decorrelation_moves;
-    j["alexander"] = st.expected.coefficients;
-    j["attempted_moves"] = moves;
+    j["alexander"] = start.alexander.coefficients;
+    j["attempted_moves"] = batch.attempted_moves();
     j["files"] = files;
     print_json(j);
   } else {
     std::cout << "wrote " << a.count << " sample" << (a.count > 1 ? "s" : "") << " of " << src.name << " ("
-              << a.opt.vertices << " vertices, Alexander " << st.expected.to_string() << ") from a "
-              << st.points.rows() << "-vertex " << st.method << " lattice polygon: " << files.front();
+              << a.opt.vertices << " vertices, Alexander " << start.alexander.to_string() << ") from a "
+              << start.points.rows() << "-vertex " << start.method << " lattice polygon: " << files.front();
     if (a.count > 1) std::cout << " ... " << files.back();
     std::cout << "\n";
   }
@@ -181,11 +147,12 @@ int cmd_sample(int argc, char** argv) {
   if (!parse_sample_args(argc, argv, a)) return 0;
   const SampleSource src = open_source(a.input);
   const std::vector<std::string> files = output_files(a, src.name);
-  const SampleStart st = sample_start(src);
-  const SampleBatch batch = sample_lattice_polygons(st.points, a.opt, st.expected, src.name);
+  // a curve file is used as it is when it is a lattice polygon and rounded otherwise
+  const LatticeStart start = src.from_file ? lattice_start(src.curve) : lattice_start(*src.knot);
+  const SampleBatch batch = sample_lattice_polygons(start.points, a.opt, start.alexander, src.name);
   for (int k = 0; k < a.count; ++k)
     write_curve(files[static_cast<size_t>(k)], to_points(batch.samples[static_cast<size_t>(k)]));
-  print_summary(a, src, st, batch, files);
+  print_summary(a, src, start, batch, files);
   return 0;
 }
 

@@ -4,7 +4,7 @@
 
 #include "args.hpp"
 #include "commands.hpp"
-#include "ek/analysis/similarity.hpp"
+#include "ek/analysis/json.hpp"
 #include "ek/core/errors.hpp"
 #include "ek/geometry/curve_io.hpp"
 #include "output.hpp"
@@ -33,21 +33,12 @@ int cmd_similarity(int argc, char** argv) {
   opt.reversal = reverse;
   opt.mirror = mirror;
   opt.samples = samples.value_or(0);
-  const int n = samples ? *samples : static_cast<int>(std::min(A.rows(), B.rows()));
   const SimilarityResult r = compare_curves(A, B, opt);
   if (json) {
     Json j;
     j["file_a"] = file_a;
     j["file_b"] = file_b;
-    j["similarity"] = number(r.similarity);
-    j["curvature_correlation"] = number(r.curvature_correlation);
-    j["torsion_correlation"] = number(r.torsion_correlation);
-    j["best_shift"] = r.best_shift;
-    j["reversed"] = r.reversed;
-    j["mirrored"] = r.mirrored;
-    j["samples"] = n;
-    j["reverse_allowed"] = reverse;
-    j["mirror_allowed"] = mirror;
+    j.update(similarity_json(r, opt));
     print_json(j);
     return 0;
   }
@@ -55,8 +46,8 @@ int cmd_similarity(int argc, char** argv) {
             << "curvature correlation: " << fmt(r.curvature_correlation) << "\n"
             << "torsion correlation:   " << fmt(r.torsion_correlation) << "\n"
             << "best shift:            " << r.best_shift << " (vertex i of A matches vertex i + " << r.best_shift
-            << " of B" << (r.reversed ? " reversed" : "") << (r.mirrored ? " mirrored" : "") << ", at n = " << n
-            << ")\n";
+            << " of B" << (r.reversed ? " reversed" : "") << (r.mirrored ? " mirrored" : "") << ", at n = "
+            << r.samples << ")\n";
   return 0;
 }
 

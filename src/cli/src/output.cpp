@@ -12,8 +12,6 @@ void print_json(const Json& j) {
   std::cout << j.dump(-1, ' ', false, Json::error_handler_t::replace) << std::endl;
 }
 
-Json number(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
-
 std::string fmt(double x, int digits) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.*g", digits, x);

@@ -1,19 +1,20 @@
 #pragma once
 // Output helpers shared by the commands.
-#include <nlohmann/json.hpp>
 #include <string>
+
+#include "ek/core/json.hpp"
 
 namespace ek::cli {
 
 /// JSON objects keep the insertion order of their keys (stable output).
-using Json = nlohmann::ordered_json;
+using ek::Json;
 
 /// Prints one JSON object on one line to stdout; bytes of strings that are
 /// not UTF-8 print as U+FFFD.
 void print_json(const Json& j);
 
 /// A double for JSON: finite values as numbers, others as null.
-Json number(double x);
+inline Json number(double x) { return json_number(x); }
 
 /// "%.10g" formatting for human-readable output.
 std::string fmt(double x, int digits = 10);

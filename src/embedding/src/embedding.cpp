@@ -51,6 +51,7 @@ Embedding finish_embedding(const Points& dense, const EmbeddingOptions& o, const
       throw InputError(method + " embedding with " + std::to_string(o.vertices) +
                        " vertices is too coarse to keep the knot type (Alexander " + got.to_string() +
                        " instead of " + expected->to_string() + "); use more vertices");
+    e.alexander = got;
   }
   return e;
 }

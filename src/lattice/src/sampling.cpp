@@ -150,6 +150,32 @@ LatticeStart lattice_start(const KnotRecord& knot, const LatticeStartOptions& o)
   return best;
 }
 
+LatticeStart lattice_start(const Points& curve, const RoundingOptions& rounding) {
+  LatticeStart start;
+  start.alexander = alexander(curve);
+  start.embedding_vertices = static_cast<int>(curve.rows());
+  if (as_lattice_polygon(curve, &start.points)) {
+    start.method = "lattice";
+    start.rounding.points = start.points;
+    return start;
+  }
+  start.rounding = round_to_lattice(curve, rounding, start.alexander);
+  start.points = start.rounding.points;
+  start.method = "rounded";
+  return start;
+}
+
+std::optional<double> LatticeStart::rounding_scale() const {
+  if (method == "square" || method == "lattice") return std::nullopt;
+  return rounding.scale;
+}
+
+long long SampleBatch::attempted_moves() const {
+  long long moves = 0;
+  for (const SampleReport& r : reports) moves += r.decorrelation.attempts + r.grow.attempts + r.shrink.attempts;
+  return moves;
+}
+
 SampleBatch sample_knot(const KnotRecord& knot, const SampleOptions& options, const LatticeStartOptions& start_options,
                         LatticeStart* start_out) {
   if (knot.crossing_number > 0 && options.vertices < 24)  // also for knots with Δ = 1

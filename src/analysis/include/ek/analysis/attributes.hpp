@@ -57,7 +57,8 @@ struct AttributeOptions {
   double radius = 0.2;              ///< [length] wire radius r (length/diameter = 1000 at n = 400, unit edges)
   double young_modulus = 2000.0;    ///< [stress] Young's modulus E
 
-  /// Throws std::invalid_argument unless radius > 0 and young_modulus > 0 (both finite).
+  /// Throws InputError unless radius > 0 and young_modulus > 0 (both finite),
+  /// naming the option of `knots attributes` (--radius, --young).
   void validate() const;
 };
 

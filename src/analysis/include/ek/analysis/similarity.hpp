@@ -98,6 +98,7 @@ struct SimilarityResult {
   int best_shift = 0;
   bool reversed = false;  ///< the best score uses the second curve's reversed orientation
   bool mirrored = false;  ///< the best score uses the second curve's mirror image
+  int samples = 0;        ///< [1] the common vertex count n the curves were compared at
 };
 
 /// Fourier transforms of a signature, normalised, for repeated comparisons.

@@ -2,10 +2,12 @@
 /// Initial 3D embeddings of a knot type (paper Sections 5 and 8.3, Fig. 13):
 /// simple closed polygons with a requested number of vertices and equal edge
 /// lengths, built from a braid word or a PD code of the table.
+#include <optional>
 #include <string>
 
 #include "ek/geometry/types.hpp"
 #include "ek/knots/codes.hpp"
+#include "ek/knots/polynomial.hpp"
 #include "ek/knots/table.hpp"
 
 namespace ek {
@@ -49,7 +51,10 @@ struct Embedding {
   double edge_length = 0.0;  ///< [length] common edge length
   double max_edge_deviation = 0.0;  ///< [length] max | |e_i| - edge_length |
   double clearance = 0.0;    ///< [length] smallest distance between non-adjacent edges
-  std::string method;        ///< "braid" or "pd"
+  std::string method;        ///< "braid", "pd" or "circle" (the unknot)
+  /// The polygon's Alexander polynomial, checked against the code's (set
+  /// when EmbeddingOptions::verify).
+  std::optional<AlexanderPolynomial> alexander;
 };
 
 /// Closed braid as a coil around the z axis (Scharein 1998; paper Fig. 13):

@@ -64,6 +64,9 @@ struct SampleReport {
 struct SampleBatch {
   std::vector<LatticePoints> samples;  ///< K polygons, n by 3 each
   std::vector<SampleReport> reports;   ///< one per sample
+
+  /// [moves] attempted BFACF moves of every phase of every sample.
+  long long attempted_moves() const;
 };
 
 /// Runs the schedule from the self-avoiding lattice polygon `start`. When
@@ -94,15 +97,28 @@ struct LatticeStartOptions {
 struct LatticeStart {
   LatticePoints points;           ///< self-avoiding lattice polygon of the knot type
   RoundingResult rounding;        ///< the rounding (its points are `points`)
-  std::string method;             ///< "pd", "braid" or "square" (the unknot)
-  int embedding_vertices = 0;     ///< [1] vertex count of the rounded embedding
-  AlexanderPolynomial alexander;  ///< the table's polynomial (checked on `points`)
+  /// "pd", "braid" or "square" (the unknot) for a table knot; "lattice" or
+  /// "rounded" for a curve (lattice_start(const Points&)).
+  std::string method;
+  int embedding_vertices = 0;     ///< [1] vertex count of the rounded embedding (the curve's)
+  AlexanderPolynomial alexander;  ///< the table's (or the curve's) polynomial (checked on `points`)
+
+  /// [lattice units / length] the rounding's scale; none when nothing was
+  /// rounded ("square", "lattice").
+  std::optional<double> rounding_scale() const;
 };
 
 /// The initial lattice polygon of a table knot (unknot: the unit square).
 /// Embeddings whose own Alexander polynomial differs from the table's (too
 /// coarse) are skipped; none left: InputError.
 LatticeStart lattice_start(const KnotRecord& knot, const LatticeStartOptions& options = {});
+
+/// The initial lattice polygon of a closed curve (n by 3): the curve itself
+/// when it already is a self-avoiding lattice polygon (method "lattice",
+/// as_lattice_polygon()), otherwise the curve rounded onto Z³ at a proven-safe
+/// scale (method "rounded", round_to_lattice() checked against the curve's
+/// own polynomial). InputError for a curve that cannot be rounded.
+LatticeStart lattice_start(const Points& curve, const RoundingOptions& rounding = {});
 
 /// The table knot's samples: lattice_start() then sample_lattice_polygons().
 SampleBatch sample_knot(const KnotRecord& knot, const SampleOptions& options,

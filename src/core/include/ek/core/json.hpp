@@ -1,0 +1,16 @@
+#pragma once
+/// JSON descriptions of results: the objects that `knots COMMAND --json`
+/// prints and that the Python module returns as result objects (their keys
+/// are the documented contract of docs/cli.md). Each module's json.hpp
+/// describes its own results with these types.
+#include <nlohmann/json.hpp>
+
+namespace ek {
+
+/// A JSON object keeps the insertion order of its keys (stable output).
+using Json = nlohmann::ordered_json;
+
+/// A double for JSON: finite values as numbers, NaN and ±inf as null.
+Json json_number(double x);
+
+}  // namespace ek

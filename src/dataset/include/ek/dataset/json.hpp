@@ -1,0 +1,27 @@
+#pragma once
+/// JSON descriptions of data-set results (docs/cli.md): the objects of
+/// `knots cluster --json`, `knots query --json` and `knots describe --json`
+/// (the latter without the key `file`, which the command adds first).
+#include <string>
+#include <vector>
+
+#include "ek/core/json.hpp"
+#include "ek/dataset/dataset_file.hpp"
+#include "ek/dataset/pipeline.hpp"
+#include "ek/dataset/query.hpp"
+
+namespace ek {
+
+/// name, cut, equilibria (count), clusters: [{size, representative,
+/// energy_min, energy_max, members}] in the order given (clusters_at_cut():
+/// by energy).
+Json clusters_json(const std::string& name, double cut, int equilibria, const std::vector<StateCluster>& clusters);
+
+/// rows: [{knot, index, one key per column}], count.
+Json query_json(const QueryResult& result);
+
+/// parameters (DatasetMetadata::json(): attribute name -> value, null when
+/// not recorded), knots (names in table order).
+Json describe_json(const DatasetReader& reader);
+
+}  // namespace ek

@@ -1,0 +1,47 @@
+#pragma once
+/// Filtering and sorting the equilibria of a data set by their attributes,
+/// as `knots query` does (and the Python module's Dataset.query()).
+/// Attribute names as in docs/dataset-format.md ("Layout").
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ek/dataset/dataset_file.hpp"
+
+namespace ek {
+
+/// One filter, "ATTR<VALUE": the operators <, <=, >, >=, = (or ==) and !=.
+struct QueryCondition {
+  std::string attribute;
+  std::string op;      ///< "<", "<=", ">", ">=", "=", "==" or "!="
+  double value = 0.0;
+  bool holds(double x) const;
+};
+/// Parses "ATTR<VALUE" (InputError naming the text when malformed).
+QueryCondition parse_query_condition(const std::string& text);
+
+struct QueryOptions {
+  std::optional<std::string> knot;   ///< only this knot type; none: every knot of the file
+  /// "ATTR", "ATTR:asc" or "ATTR:desc"; empty: file order. The sort is stable.
+  std::string sort;
+  std::vector<std::string> where;    ///< conditions "ATTR<VALUE", all must hold
+  std::optional<int> limit;          ///< [rows] at most this many rows, >= 0; none: all
+};
+
+struct QueryRow {
+  std::string knot;
+  int index = 0;                     ///< equilibrium index within the knot (0-based)
+  std::vector<double> values;        ///< one per QueryResult::columns
+};
+
+struct QueryResult {
+  std::vector<std::string> columns;  ///< the attribute names (of the first knot read)
+  std::vector<QueryRow> rows;
+};
+
+/// The rows of the data set that pass every condition, sorted and limited.
+/// InputError for an unknown attribute (listing the known ones), an unknown
+/// knot, a malformed condition or sort, or a negative limit.
+QueryResult query_dataset(const DatasetReader& reader, const QueryOptions& options);
+
+}  // namespace ek

@@ -1,0 +1,32 @@
+#pragma once
+/// Invariants of a table knot and of a curve, as `knots info` and `knots
+/// invariants` report them (and the Python module's knot() and invariants()).
+#include <cstdint>
+
+#include "ek/geometry/polyline.hpp"
+#include "ek/geometry/types.hpp"
+#include "ek/knots/polynomial.hpp"
+#include "ek/knots/table.hpp"
+
+namespace ek {
+
+/// The Alexander polynomial of a table knot: from its PD code, cross-checked
+/// with its braid word when the table lists one (the unknot: 1). Throws
+/// std::runtime_error when the two disagree (a broken table row).
+AlexanderPolynomial table_alexander(const KnotRecord& knot);
+
+/// What `knots invariants` measures on a closed polygon.
+struct CurveInvariants {
+  int vertices = 0;                 ///< [1] n
+  double length = 0.0;              ///< [length] Σ edge lengths
+  AlexanderPolynomial alexander;    ///< Δ(t), normal form (polynomial.hpp)
+  double writhe = 0.0;              ///< [1] Wr, exact Gauss double sum
+  double total_curvature = 0.0;     ///< [rad] Σ turning angles
+  Clearance clearance;              ///< [length] smallest distance of edges sharing no vertex, and the two edges
+};
+
+/// The invariants of the closed polygon P (n by 3, a simple polygon: the
+/// Alexander polynomial needs a generic projection; InputError otherwise).
+CurveInvariants curve_invariants(const Points& P);
+
+}  // namespace ek

@@ -1,0 +1,22 @@
+#pragma once
+/// JSON descriptions of the knots module's results (docs/cli.md): the
+/// objects of `knots info --json` and `knots invariants --json`, without the
+/// keys that name files (the command adds those).
+#include "ek/core/json.hpp"
+#include "ek/knots/invariants.hpp"
+#include "ek/knots/table.hpp"
+
+namespace ek {
+
+/// `knots info`: name, crossing_number, bridge_index, braid_index,
+/// unknotting_number, alternating, symmetry_type, dt, pd, braid,
+/// braid_strands (null when unknown), alexander (coefficients, lowest degree
+/// first), determinant, table (path of the table read). Computes the
+/// polynomial (table_alexander).
+Json knot_info_json(const KnotRecord& knot, const KnotTable& table);
+
+/// `knots invariants` after `file`: vertices, length, alexander,
+/// determinant, writhe, total_curvature, clearance.
+Json invariants_json(const CurveInvariants& invariants);
+
+}  // namespace ek

@@ -1,0 +1,42 @@
+#include "ek/knots/json.hpp"
+
+namespace ek {
+namespace {
+
+Json optional_int(const std::optional<int>& v) { return v ? Json(*v) : Json(nullptr); }
+
+}  // namespace
+
+Json knot_info_json(const KnotRecord& k, const KnotTable& table) {
+  const AlexanderPolynomial alex = table_alexander(k);
+  Json j;
+  j["name"] = k.name;
+  j["crossing_number"] = k.crossing_number;
+  j["bridge_index"] = optional_int(k.bridge_index);
+  j["braid_index"] = optional_int(k.braid_index);
+  j["unknotting_number"] = optional_int(k.unknotting_number);
+  j["alternating"] = k.alternating ? Json(*k.alternating) : Json(nullptr);
+  j["symmetry_type"] = k.symmetry_type;
+  j["dt"] = k.dt ? Json(to_string(*k.dt)) : Json(nullptr);
+  j["pd"] = k.pd ? Json(to_string(*k.pd)) : Json(nullptr);
+  j["braid"] = k.braid ? Json(to_string(*k.braid)) : Json(nullptr);
+  j["braid_strands"] = k.braid ? Json(k.braid->strands) : Json(nullptr);
+  j["alexander"] = alex.coefficients;
+  j["determinant"] = alex.determinant();
+  j["table"] = table.path();
+  return j;
+}
+
+Json invariants_json(const CurveInvariants& c) {
+  Json j;
+  j["vertices"] = c.vertices;
+  j["length"] = json_number(c.length);
+  j["alexander"] = c.alexander.coefficients;
+  j["determinant"] = c.alexander.determinant();
+  j["writhe"] = json_number(c.writhe);
+  j["total_curvature"] = json_number(c.total_curvature);
+  j["clearance"] = json_number(c.clearance.distance);
+  return j;
+}
+
+}  // namespace ek
