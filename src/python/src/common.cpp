@@ -4,6 +4,17 @@
 #include "ek/geometry/curve_io.hpp"
 
 namespace ek::python {
+namespace {
+
+/// Text from files (knot names, attribute names, messages) may not be UTF-8:
+/// such bytes become U+FFFD, as in the command's JSON (print_json).
+py::str text(const std::string& s) {
+  PyObject* o = PyUnicode_DecodeUTF8(s.data(), static_cast<Py_ssize_t>(s.size()), "replace");
+  if (!o) throw py::error_already_set();
+  return py::reinterpret_steal<py::str>(o);
+}
+
+}  // namespace
 
 py::object from_json(const Json& j, const std::string& kind) {
   switch (j.type()) {
@@ -18,7 +29,7 @@ py::object from_json(const Json& j, const std::string& kind) {
     case Json::value_t::number_float:
       return py::float_(j.get<double>());
     case Json::value_t::string:
-      return py::str(j.get<std::string>());
+      return text(j.get<std::string>());
     case Json::value_t::array: {
       py::list list;
       for (const Json& item : j) list.append(from_json(item, kind));
@@ -33,7 +44,7 @@ py::object from_json(const Json& j, const std::string& kind) {
 
 Result result_from_json(const Json& j, const std::string& kind) {
   Result r{kind, py::dict()};
-  for (const auto& [key, value] : j.items()) r.fields[py::str(key)] = from_json(value, key);
+  for (const auto& [key, value] : j.items()) r.fields[text(key)] = from_json(value, key);
   return r;
 }
 
