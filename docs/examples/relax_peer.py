@@ -45,7 +45,9 @@ print(f"writhe {result.writhe:.6g}, {result.contacts} contacts, Alexander preser
 if out:
     print(f"wrote {out}")
 
-# %% The equilibrium's energy, recomputed from its positions, is the relaxation's
+# %% The equilibrium's energy, recomputed from its positions: energy() takes the
+# equilibrium's own edges as rest lengths (no stretching), while the relaxation kept
+# the start's; the edges stretched by ~1e-6 relative, so the two agree to ~1e-5
 again = ek.energy(result.points)
-assert abs(again.energy - result.energy) <= 1e-9 * result.energy, (again.energy, result.energy)
-assert result.converged and result.alexander_preserved
+assert abs(again.energy - result.energy) <= 1e-5 * result.energy, (again.energy, result.energy)
+assert result.converged and result.alexander_preserved and result.energy < start.energy
