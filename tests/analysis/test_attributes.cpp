@@ -179,8 +179,8 @@ TEST(Attributes, CurvatureBinormalsAndStress) {
   EXPECT_NEAR(max_bending_stress(P, 0.4, 2000.0), 2 * s, 1e-12 * s);
   EXPECT_NEAR(max_bending_stress(P, 0.2, 1000.0), 0.5 * s, 1e-12 * s);
   EXPECT_NEAR(max_bending_stress(Points(3.0 * P), 0.2, 2000.0), s, 1e-12 * s);
-  EXPECT_THROW(max_bending_stress(P, 0.0, 2000.0), std::invalid_argument);
-  EXPECT_THROW(max_bending_stress(P, 0.2, -1.0), std::invalid_argument);
+  EXPECT_THROW(max_bending_stress(P, 0.0, 2000.0), InputError);
+  EXPECT_THROW(max_bending_stress(P, 0.2, -1.0), InputError);
 }
 
 TEST(Attributes, NamesAndValues) {

@@ -92,5 +92,6 @@ def test_bad_input_is_a_value_error_with_the_cli_message(ds, knots, dataset_path
     with pytest.raises(ValueError) as e:
         ek.Dataset(missing)
     assert str(e.value) == knots.error("describe", missing)
-    with pytest.raises(ValueError, match="cut"):
+    with pytest.raises(ValueError) as e:
         ds.clusters("3_1", cut=1.5)
+    assert str(e.value) == knots.error("cluster", dataset_path, "3_1", "--cut", "1.5")

@@ -171,7 +171,6 @@ double importance_score(const Eigen::MatrixXd& sim, int earlier, const std::vect
 }
 
 std::vector<StateCluster> clusters_at_cut(const KnotEntry& e, double cut, std::vector<int>* rank) {
-  require_input(cut >= 0.0 && cut <= 1.0, "the cut must be in [0, 1], got " + std::to_string(cut));
   const int m = static_cast<int>(e.equilibria.size());
   if (rank) rank->assign(static_cast<size_t>(m), -1);
   if (m == 0) return {};

@@ -188,6 +188,7 @@ field per attribute), count. ValueError for an unknown attribute, listing the kn
       .def(
           "clusters",
           [](const Dataset& d, const std::string& name, double cut) {
+            if (!(cut >= 0.0 && cut <= 1.0)) throw InputError("--cut must be in [0, 1]");  // as knots cluster
             const KnotEntry e = d.reader->read(name);
             return result_from_json(clusters_json(name, cut, static_cast<int>(e.equilibria.size()), clusters_at_cut(e, cut)),
                                     "clusters");

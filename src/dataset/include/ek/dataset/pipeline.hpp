@@ -154,7 +154,6 @@ struct StateCluster {
 /// The clusters of the entry's equilibria at `cut` (complete linkage on
 /// 1 - similarity, from the stored linkage), sorted by increasing energy.
 /// `rank` (optional) receives each equilibrium's cluster position in that order.
-/// InputError for a cut outside [0, 1].
 std::vector<StateCluster> clusters_at_cut(const KnotEntry& entry, double cut, std::vector<int>* rank = nullptr);
 
 /// Recomputes the similarity matrix and the complete-linkage dendrogram of
