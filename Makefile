@@ -17,7 +17,7 @@ CTEST     = cd $(BUILD) && KNOT_TABLE=$(KNOT_TABLE) ctest --output-on-failure -j
         explorer explorer-screenshots serve browser
 
 help:
-	@echo "make test      build, run all tests (unit, parsers, short stress, paper claims at ci scale, Slurm, sanitizers, fuzz corpus + 20 s per fuzz target)"
+	@echo "make test      build, run all tests (unit, parsers, short stress, paper claims at ci scale, Python module, Slurm, sanitizers, fuzz corpus + 20 s per fuzz target)"
 	@echo "make figures   build, run every experiment at SCALE=$(SCALE), write figures/out/*.png|pdf"
 	@echo "make experiment-NAME   run one experiment (NAME: $(PAPER_EXPERIMENTS) $(BENCH_EXPERIMENTS))"
 	@echo "make help-experiments  each experiment's inputs and run time per scale (experiments/manifest.json)"
