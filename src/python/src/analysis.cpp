@@ -26,9 +26,8 @@ py::array_t<std::int64_t> index_array(const std::vector<int>& v) {
   return a;
 }
 
-}  // namespace
-
-void bind_analysis(py::module_& m) {
+/// similarity() and similarity_matrix() (paper Section 7.1).
+void bind_similarity(py::module_& m) {
   m.def(
       "similarity",
       [](const py::handle& a, const py::handle& b, bool reverse, bool mirror, std::optional<int> samples) {
@@ -63,7 +62,10 @@ mirrored, samples, reverse_allowed, mirror_allowed.)doc");
       py::arg("curves"), py::kw_only(), py::arg("reverse") = false, py::arg("mirror") = false,
       py::arg("samples") = py::none(),
       "The (N, N) similarity matrix of N closed curves (symmetric, diagonal 1), options as similarity().");
+}
 
+/// cluster(), mds() and attributes() (paper Sections 7.2, 7.3).
+void bind_clustering(py::module_& m) {
   m.def(
       "cluster",
       [](const py::handle& similarity, std::optional<double> cut) {
@@ -128,6 +130,13 @@ converged.)doc");
 max_stress (with radius and young), energy, energy_stretch, energy_bend, energy_twist,
 stiffness (None: not computed here; energy() and the data sets have them), radius,
 young_modulus.)doc");
+}
+
+}  // namespace
+
+void bind_analysis(py::module_& m) {
+  bind_similarity(m);
+  bind_clustering(m);
 }
 
 }  // namespace ek::python
