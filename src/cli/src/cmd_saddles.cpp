@@ -16,6 +16,7 @@
 #include "ek/core/errors.hpp"
 #include "ek/geometry/curve_io.hpp"
 #include "ek/transitions/saddles.hpp"
+#include "folder_output.hpp"
 #include "output.hpp"
 #include "saddle_json.hpp"
 
@@ -51,17 +52,6 @@ bool parse_saddles(int argc, char** argv, SaddlesCommand& c) {
   return args.parse(argc, argv);
 }
 
-/// Refuses an output folder that exists (without --overwrite) or whose parent
-/// cannot take the temporary folder, before any search.
-void check_output(const SaddlesCommand& c) {
-  if (c.out.empty()) throw InputError("-o DIR is required");
-  const fs::path out = fs::absolute(c.out);
-  if (fs::exists(out) && !c.overwrite)
-    throw InputError("output folder " + c.out + " exists (use --overwrite to replace it)");
-  if (fs::exists(out) && !fs::is_directory(out)) throw InputError("output " + c.out + " exists and is not a folder");
-  check_writable((out.parent_path() / ".knots-saddles-probe").string());
-}
-
 Json summary_json(const SaddlesCommand& c, const SaddleStart& s, const std::vector<SaddleRecord>& records,
                   double seconds) {
   Json j = start_json(s);
@@ -75,14 +65,10 @@ Json summary_json(const SaddlesCommand& c, const SaddleStart& s, const std::vect
   return j;
 }
 
-/// The folder's files in a temporary folder, renamed onto DIR at the end.
+/// The folder's files (folder_output.hpp: written as a whole).
 void write_outputs(const SaddlesCommand& c, const SaddleStart& s, const std::vector<SaddleRecord>& records,
                    const Json& summary) {
-  const fs::path out = fs::absolute(c.out);
-  const fs::path tmp = out.parent_path() / (out.filename().string() + ".tmp." + std::to_string(::getpid()));
-  fs::remove_all(tmp);
-  fs::create_directories(tmp);
-  try {
+  write_folder(c.out, [&](const fs::path& tmp) {
     write_curve((tmp / "start.obj").string(), s.positions);
     for (size_t k = 0; k < records.size(); ++k) {
       const SaddleRecord& r = records[k];
@@ -98,18 +84,7 @@ void write_outputs(const SaddlesCommand& c, const SaddleStart& s, const std::vec
     AtomicFile f((tmp / "summary.json").string());
     f.stream() << summary.dump(2) << "\n";
     f.commit();
-    // --overwrite (checked before the run): the old folder is moved aside
-    // and removed only once the new one is in place.
-    const fs::path old = out.parent_path() / (out.filename().string() + ".old." + std::to_string(::getpid()));
-    const bool replace = fs::exists(out);
-    if (replace) fs::rename(out, old);
-    fs::rename(tmp, out);
-    if (replace) fs::remove_all(old);
-  } catch (...) {
-    std::error_code ec;
-    fs::remove_all(tmp, ec);
-    throw;
-  }
+  });
 }
 
 void print_text(const SaddleStart& s, const std::vector<SaddleRecord>& records, double seconds) {
@@ -139,7 +114,7 @@ int cmd_saddles(int argc, char** argv) {
   if (!parse_saddles(argc, argv, c)) return 0;
   require_input(c.rest_length > 0.0 && std::isfinite(c.rest_length), "--rest-length must be positive");
   c.options.validate();
-  check_output(c);
+  check_output_folder(c.out, c.overwrite);
   const auto t0 = std::chrono::steady_clock::now();
   const Points state = read_curve(c.file);
   const VecX rest = VecX::Constant(state.rows(), c.rest_length);

@@ -22,4 +22,7 @@ int cmd_export(int argc, char** argv);
 int cmd_site(int argc, char** argv);
 int cmd_serve(int argc, char** argv);
 int cmd_saddles(int argc, char** argv);
+int cmd_transition(int argc, char** argv);
+int cmd_transitions(int argc, char** argv);
+int cmd_path(int argc, char** argv);
 }  // namespace ek::cli

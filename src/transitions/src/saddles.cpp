@@ -6,14 +6,11 @@
 #include "ek/core/errors.hpp"
 #include "ek/geometry/polyline.hpp"
 #include "ek/knots/alexander.hpp"
+#include "saddle_checks.hpp"
 
 namespace ek {
-namespace {
 
-using Clock = std::chrono::steady_clock;
-
-/// Halvings of the displacement from the saddle before a descent is given up.
-constexpr int kMaxHalvings = 30;
+namespace detail {
 
 RelaxOptions direct(const KnotSaddleOptions& o) { return with_method(o.relax, "hybrid"); }
 
@@ -24,6 +21,17 @@ AlexanderPolynomial alexander_or_zero(const Points& x) {
     return AlexanderPolynomial{{0}};
   }
 }
+
+}  // namespace detail
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using detail::alexander_or_zero;
+using detail::direct;
+
+/// Halvings of the displacement from the saddle before a descent is given up.
+constexpr int kMaxHalvings = 30;
 
 /// At most `count` images evenly spaced by path length (first and last kept).
 void thin_images(Descent& d, int count) {
@@ -57,8 +65,8 @@ bool link_holds(KnotSystem& sys, const KnotSaddleOptions& o, double& link) {
 /// is built at x_s's positions (θ relaxed there when the model has θ: at an
 /// equilibrium θ minimises the twisting energy); `step` is a direction, whose
 /// θ part does not depend on the reference frames.
-SaddleMinimum descend_from(const SaddleStart& start, const VecX& rest, const KnotSaddleOptions& o, const Points& saddle,
-                           const VecX& step, const CurveSimilarity& similarity) {
+SaddleMinimum descend_from(const AlexanderPolynomial& alexander, const VecX& rest, const KnotSaddleOptions& o,
+                           const Points& saddle, const VecX& step) {
   KnotSystem sys(saddle, rest, direct(o));
   Objective& f = sys.objective();
   const VecX xs = f.dofs();
@@ -87,52 +95,62 @@ SaddleMinimum descend_from(const SaddleStart& start, const VecX& rest, const Kno
   thin_images(descent, o.max_images);
   for (const VecX& x : descent.images) {
     m.images.push_back(sys.positions(x));
-    if (alexander_or_zero(m.images.back()) != start.alexander) m.alexander_preserved = false;
+    if (alexander_or_zero(m.images.back()) != alexander) m.alexander_preserved = false;
   }
   m.energies = descent.energies;
   m.positions = m.images.back();
-  m.start_similarity = similarity(m.positions, start.positions);
   if (!m.alexander_preserved || !m.link_preserved) m.status = "topology-changed";
   return m;
 }
 
-/// Items 2-4 of the file comment for a converged search at x_s.
-void check_saddle(const SaddleStart& start, const VecX& rest, const KnotSaddleOptions& o, KnotSystem& sys,
-                  const VecX& xs, const CurveSimilarity& similarity, SaddleRecord& r) {
+}  // namespace
+
+namespace detail {
+
+std::string descend_saddle(const AlexanderPolynomial& alexander, const VecX& rest, const KnotSaddleOptions& o,
+                           KnotSystem& sys, const VecX& xs, SaddleRecord& r) {
   Objective& f = sys.objective();
   f.set_dofs(xs);
   const double threshold = sys.newton().shift_epsilon * sys.lambda_min();
   const HessianIndex idx = hessian_index(f, 2, threshold);
-  if (!idx.converged) {
-    r.status = "degenerate-hessian";
-    return;
-  }
+  if (!idx.converged) return "degenerate-hessian";
   r.index = idx.negative;
   r.negative_eigenvalue = idx.values(0);
   r.second_eigenvalue = idx.values.size() > 1 ? idx.values(1) : 0.0;
-  if (idx.near_zero > 0) {
-    r.status = "degenerate-hessian";
-    return;
-  }
-  if (idx.negative != 1) {
-    r.status = "index-" + std::to_string(idx.negative);
-    return;
-  }
+  if (idx.near_zero > 0) return "degenerate-hessian";
+  if (idx.negative != 1) return "index-" + std::to_string(idx.negative);
   const VecX v = idx.vectors.col(0);
   const VecX step = v * (o.displacement / v.head(3 * rest.size()).cwiseAbs().maxCoeff());
   const bool link_ok = link_holds(sys, o, r.link);
-  SaddleMinimum a = descend_from(start, rest, o, sys.positions(xs), step, similarity);
-  SaddleMinimum b = descend_from(start, rest, o, sys.positions(xs), -step, similarity);
+  const Points saddle = sys.positions(xs);
+  r.minima = {descend_from(alexander, rest, o, saddle, step), descend_from(alexander, rest, o, saddle, -step)};
+  const SaddleMinimum& a = r.minima[0];
+  const SaddleMinimum& b = r.minima[1];
+  if (!link_ok || !a.alexander_preserved || !b.alexander_preserved || !a.link_preserved || !b.link_preserved)
+    return "topology-changed";
+  if (a.status != "converged-stable" || b.status != "converged-stable") return "descent-failed";
+  return "";
+}
+
+}  // namespace detail
+
+namespace {
+
+/// Items 2-4 of the file comment for a converged search at x_s.
+void check_saddle(const SaddleStart& start, const VecX& rest, const KnotSaddleOptions& o, KnotSystem& sys,
+                  const VecX& xs, const CurveSimilarity& similarity, SaddleRecord& r) {
+  const std::string failed = detail::descend_saddle(start.alexander, rest, o, sys, xs, r);
+  for (SaddleMinimum& m : r.minima)
+    if (!m.images.empty()) m.start_similarity = similarity(m.positions, start.positions);
+  SaddleMinimum& a = r.minima[0];
+  SaddleMinimum& b = r.minima[1];
   const auto is_start = [&](const SaddleMinimum& m) {
     return m.start_similarity >= o.start_similarity &&
            std::abs(m.energy - start.energy) <= o.start_energy_tolerance * std::abs(start.energy);
   };
   if (is_start(b) > is_start(a) || (is_start(b) == is_start(a) && b.start_similarity > a.start_similarity))
     std::swap(a, b);
-  r.minima = {a, b};
-  if (!link_ok || !a.alexander_preserved || !b.alexander_preserved || !a.link_preserved || !b.link_preserved)
-    r.status = "topology-changed";
-  else if (a.status != "converged-stable" || b.status != "converged-stable") r.status = "descent-failed";
+  if (!failed.empty()) r.status = failed;
   else if (!is_start(a)) r.status = "start-not-reached";
   else if (is_start(b)) r.status = "returns-to-start";
   else r.status = "verified";

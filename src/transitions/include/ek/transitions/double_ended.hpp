@@ -1,0 +1,132 @@
+#pragma once
+/// Double-ended search for a transition between two known, distinct stable
+/// states A and B of an elastic knot (paper Section 8.5: "we currently do not
+/// have the means to find the transition between such states, nor quantify
+/// the energy barrier separating them"). The single-ended searches of
+/// saddles.hpp start from one state and find what lies next to it; this one
+/// is steered towards a given second state.
+///
+///  1. Alignment. Over both orientations of B and every cyclic shift s, the
+///     rigid motion (R, t) minimising Σ_i |A_i − R B_{(i+s) mod n} − t|²
+///     (Kabsch: closed form, SVD of the 3×3 cross-covariance, det R = +1;
+///     O(n²) in all); the least residual wins. This is exact on the vertex
+///     correspondence the path needs (align_curves() of ek/analysis works on
+///     resampled curves and ICP: a different, approximate correspondence). No
+///     mirror image: it is not a motion. x_B is the aligned B: the same
+///     curve, so the same energy (the model is invariant under rigid
+///     motions, re-indexing and reversal with equal rest lengths).
+///  2. Steered path. From x₀ = A, for stages j = 0, 1, ...: Newton's method
+///     of the model (its direct method) on
+///        F_j(x) = E(x) + (k_j/2) |P(x) − x_B|²,   k_j = k₀·growth^j,
+///        k₀ = initial_stiffness · λ₁(A)   [energy/length²],
+///     λ₁(A) the softest non-rigid eigenvalue of the Hessian at A (so the
+///     first stages barely move A: x*(k) − x_A ≈ k (H + kI)⁻¹ (x_B − x_A)),
+///     P(x) the positions (n by 3) of the dofs x, from the previous stage's
+///     result. The stage minimisers x*(k_j) follow the minimum of F from A
+///     until it disappears (a fold: the pull has carried it over the
+///     barrier) and Newton's method falls into B's side; the highest images
+///     lie near that fold. Every Newton step is cut by the CCD (Objective::max_step), so
+///     no step lets two edges pass through each other and the knot type is
+///     kept: a B that can only be reached by a strand passage (a crossing
+///     change) is never reached. Once an image has similarity >= `reach`
+///     to B, Newton's method on E alone from it (the release) must end
+///     converged-stable at B (similarity >= `reach`, energy within
+///     `energy_tolerance` relative of E_B, and aligned RMS vertex distance
+///     to B at most `same_distance`: the similarity alone does not tell a
+///     chiral curve from its mirror image); else steering goes on. The chain
+///     is every accepted iterate from A to B (the stages, then the release),
+///     thinned evenly by length to `max_images`; the Alexander polynomial of
+///     every stored image must be A's.
+///  3. Saddle. From the `seeds` highest interior local maxima of E along
+///     the whole chain (every accepted iterate, before thinning; by
+///     decreasing energy), search_saddle() (ek/solver/saddle.hpp) follows the
+///     mode closest to the chain's tangent x_{i+1} − x_{i−1} there; a
+///     converged search gets saddles.hpp's checks 1-4 (gradient, exactly one
+///     negative and no near-zero eigenvalue, two converged-stable descents
+///     from x_s ± δ·v₁ with the topology kept), and counts only when one
+///     descent ends at A and the other at B (each similarity >= `reach`,
+///     energy within `energy_tolerance` relative and aligned distance <=
+///     `same_distance`): then the barriers are
+///     E_s − E_A and E_s − E_B. The first verified seed ends the search.
+/// Statuses (never a false saddle): "verified"; "same-state" (A and B are one
+/// curve: energies within `energy_tolerance` relative and the aligned RMS
+/// vertex distance at most `same_distance`; a mirror image, which the
+/// similarity cannot tell apart, is not the same curve); "different-knot" (Alexander polynomials differ: no path without a
+/// strand passage); "not-reached" (the stages ran out before the release
+/// reached B); "topology-changed" (an image's Alexander polynomial differs:
+/// the CCD makes this a defect, never expected); else the last seed's status
+/// (the search's: "max-iterations", "stalled", "left-basin", "degenerate";
+/// the checks': "degenerate-hessian", "index-K", "descent-failed"; and
+/// "other-minima" when the descents do not end at A and B); "no-seed" when
+/// the chain has no interior local maximum of E.
+/// The chain's highest energy, E_max − E_A, bounds the barrier of the best
+/// path between A and B from above even when no saddle verifies.
+#include <array>
+#include <string>
+#include <vector>
+
+#include "ek/transitions/saddles.hpp"
+
+namespace ek {
+
+struct TransitionSearchOptions {
+  /// The model and the checks of the saddle (relax, search, displacement,
+  /// max_images, link_tolerance, start_gradient_factor, max_rise_factor:
+  /// a seed's search has left the basin when E rises by more than
+  /// max_rise_factor·E_A above the seed); `modes` is not used.
+  KnotSaddleOptions saddle;
+  double initial_stiffness = 0.1;   ///< [1] k₀ / λ₁(A)
+  double growth = 1.5;              ///< [1] k_{j+1} / k_j (> 1)
+  int max_stages = 60;              ///< [1] steering stages before "not-reached" (k up to 0.1·1.5⁵⁹ ≈ 2·10⁹ λ₁)
+  int stage_iterations = 200;       ///< [1] Newton iterations per stage (and for the release)
+  double reach = 0.99;              ///< [1] similarity to B (and A) that counts as reaching it
+  double energy_tolerance = 1e-8;   ///< [1] relative energy difference that counts as the same minimum
+  /// [length] aligned RMS vertex distance (align_vertices()) within which two
+  /// minima of equal energy are one curve (A and B; a descent's end and A or B)
+  double same_distance = 1e-2;
+  int max_images = 48;              ///< [1] images kept in the chain (>= 3)
+  int seeds = 3;                    ///< [1] highest local maxima of E along the chain that seed a saddle search (>= 1)
+  void validate() const;            ///< InputError for impossible values
+};
+
+/// The outcome of transition_search(). Energies in [energy], EI/L in
+/// energy_scale (L the total rest length).
+struct TransitionSearch {
+  std::string status;                ///< see the file comment
+  bool reached = false;              ///< the release from the chain reached B
+  bool verified = false;             ///< status == "verified"
+  double energy_a = 0.0;             ///< [energy] A after the polish
+  double energy_b = 0.0;             ///< [energy] B after the polish
+  double energy_scale = 0.0;         ///< [energy] EI / L
+  double similarity_ab = 0.0;        ///< [1] of A and B
+  double alignment_distance = 0.0;   ///< [length] RMS vertex distance of the aligned B to A
+  int stages = 0;                    ///< [1] steering stages run
+  double final_stiffness = 0.0;      ///< [energy/length²] k of the last stage
+  double reached_similarity = 0.0;   ///< [1] of the chain's last image to B
+  Points a, b;                       ///< n by 3: A, and B aligned to A (both polished)
+  std::vector<Points> chain;         ///< images from A (first) to the chain's end (B when reached)
+  std::vector<double> chain_energies;  ///< [energy] E of the images
+  bool alexander_preserved = true;   ///< on every chain image
+  double path_barrier = 0.0;         ///< [energy] highest chain iterate's E − E_A (when reached; else 0)
+  int seeds_tried = 0;               ///< [1] saddle searches run
+  std::vector<std::string> seed_statuses;  ///< each seed's search status, in order
+  /// The last seed's search: minima[0] the descent that ended nearer A (by
+  /// similarity), minima[1] the other; their start_similarity is to A.
+  SaddleRecord saddle;
+  std::array<double, 2> minima_to_b{0.0, 0.0};  ///< [1] similarity of saddle.minima to B
+  double seconds = 0.0;              ///< [s]
+};
+
+/// B aligned to A vertex by vertex (step 1 of the file comment): the same
+/// curve as B, reversed and cyclically re-indexed and rigidly moved; n by 3
+/// each (equal vertex counts, else InputError). `distance` receives the RMS
+/// vertex distance [length].
+Points align_vertices(const Points& a, const Points& b, double& distance);
+
+/// The double-ended search between stable states `a` and `b` (n by 3 each,
+/// rest lengths `rest`): InputError when either is not a stable equilibrium
+/// of the model (prepare_start()) or the vertex counts differ.
+TransitionSearch transition_search(const Points& a, const Points& b, const VecX& rest,
+                                   const TransitionSearchOptions& options, const CurveSimilarity& similarity);
+
+}  // namespace ek

@@ -1,0 +1,40 @@
+#pragma once
+/// The transitions file (HDF5; docs/dataset-format.md, "Transitions file"):
+///
+///   /   attributes: format = "elastic-knots-transitions", format_version = 1,
+///       knot, dataset (the source file), cut, energy_scale [energy] (EI/L),
+///       options (the search options' text), complete (0/1)
+///   states/      energy float64 [s], cluster int64 [s] (-1: not in the data set),
+///                equilibrium int64 [s] (-1: new), positions float64 [s, n, 3]
+///   saddles/     energy, negative_eigenvalue, second_eigenvalue, gradient_norm float64 [k],
+///                energy_to float64 [k] (the minimum reached on the `to` side),
+///                index, from, to, saddle_image, double_ended int64 [k], positions float64 [k, n, 3],
+///                path_<j>/ images float64 [p, n, 3], energies float64 [p]
+///   edges/       from, to, saddle int64 [e], energy, barrier_forward, barrier_backward,
+///                barrier_forward_scaled, barrier_backward_scaled float64 [e]
+///   searches/    state, mode, direction, verified, index, iterations int64 [m],
+///                status string [m], energy, gradient_norm, seconds float64 [m]
+///   pairs/       a, b, reached, verified, stages, saddle int64 [q] (-1: none),
+///                status string [q], path_barrier, reached_similarity,
+///                saddle_energy, seconds float64 [q] (double-ended searches)
+///
+/// Written to a temporary name and renamed into place.
+#include <string>
+
+#include "ek/transitions/graph.hpp"
+
+namespace ek {
+
+/// Writes the graph; `dataset` and `options` are recorded as attributes.
+void write_transitions(const std::string& path, const TransitionGraph& graph, const std::string& dataset,
+                       const std::string& options, bool complete);
+/// Reads a transitions file (InputError naming the file for any problem).
+/// `options` (optional) receives the recorded options text.
+TransitionGraph read_transitions(const std::string& path, std::string* options = nullptr);
+
+/// A path as HDF5: attributes format = "elastic-knots-path", knot;
+/// images float64 [p, n, 3], energies float64 [p], saddle_images int64 [s].
+void write_path_h5(const std::string& path, const std::string& knot, const std::vector<Points>& images,
+                   const std::vector<double>& energies, const std::vector<int>& saddle_images);
+
+}  // namespace ek

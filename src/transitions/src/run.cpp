@@ -1,0 +1,143 @@
+#include "ek/transitions/run.hpp"
+
+#include <chrono>
+#include <sstream>
+
+#include "ek/analysis/similarity.hpp"
+#include "ek/core/errors.hpp"
+#include "ek/dataset/pipeline.hpp"
+#include "ek/knots/table.hpp"
+
+namespace ek {
+
+void TransitionRunOptions::validate() const {
+  require_input(cut > 0.0 && cut < 1.0, "transitions: the cut must be in (0, 1)");
+  require_input(max_states >= 0, "transitions: max_states must be >= 0");
+  require_input(pair_gap >= 0, "transitions: pair_gap must be >= 0");
+  require_input(max_pairs >= 0, "transitions: max_pairs must be >= 0");
+  saddles.validate();
+  pair.validate();
+}
+
+RelaxOptions dataset_model(const DatasetMetadata& m) {
+  RelaxOptions o;
+  if (m.young) o.material.young = *m.young;
+  if (m.poisson) o.material.poisson = *m.poisson;
+  if (m.radius) o.material.radius = *m.radius;
+  if (m.tolerance) o.tolerance = *m.tolerance;
+  if (m.contact_stiffness) o.contact_stiffness = *m.contact_stiffness;
+  if (m.dhat) o.dhat = *m.dhat;
+  if (m.max_iterations) o.max_iterations = *m.max_iterations;
+  require_input(!m.twist_model || *m.twist_model == "twist-free",
+                "transitions: only data sets of the twist-free model are supported");
+  return o;
+}
+
+CurveSimilarity knot_similarity(const std::string& knot) {
+  SimilarityOptions so;
+  so.reversal = true;
+  const KnotRecord* record = KnotTable::global().find(knot);
+  so.mirror = record && record->symmetry_type.find("amphicheiral") != std::string::npos;
+  return [so](const Points& a, const Points& b) { return similarity(a, b, so); };
+}
+
+std::string transition_run_key(const std::string& knot, const TransitionRunOptions& r, double rest) {
+  const KnotSaddleOptions& o = r.saddles;
+  const TransitionSearchOptions& p = r.pair;
+  std::ostringstream s;
+  s.precision(17);
+  s << "transitions 1 knot=" << knot << " cut=" << r.cut << " modes=" << o.modes << " states=" << r.max_states
+    << " max_iter=" << o.search.max_iterations << " trust=" << o.search.trust_radius << " images=" << o.max_images
+    << " displacement=" << o.displacement << " rise=" << o.max_rise_factor << " pair_gap=" << r.pair_gap
+    << " max_pairs=" << r.max_pairs << " k0=" << p.initial_stiffness << " growth=" << p.growth
+    << " stages=" << p.max_stages << " seeds=" << p.seeds << " reach=" << p.reach << " E=" << o.relax.material.young
+    << " nu=" << o.relax.material.poisson << " r=" << o.relax.material.radius << " tol=" << o.relax.tolerance
+    << " omega=" << o.relax.contact_stiffness << " dhat=" << o.relax.dhat << " rest=" << rest;
+  return s.str();
+}
+
+std::vector<std::pair<int, int>> transition_pairs(int states, const TransitionRunOptions& r) {
+  std::vector<std::pair<int, int>> out;
+  for (int a = 0; a < states; ++a)
+    for (int b = a + 1; b < states && b - a <= r.pair_gap; ++b)
+      if (static_cast<int>(out.size()) < r.max_pairs) out.emplace_back(a, b);
+  return out;
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+/// The single-ended searches from state k (an InputError of the start is kept as its error).
+StateSearches searches_of(const KnotSaddleOptions& o, int k, const Points& x, const VecX& rest,
+                          const CurveSimilarity& sim) {
+  StateSearches s;
+  s.state = k;
+  const auto t0 = Clock::now();
+  try {
+    const SaddleStart start = prepare_start(x, rest, o);
+    s.energy = start.energy;
+    s.records = find_knot_saddles(start, rest, o, sim);
+  } catch (const InputError& e) {
+    s.error = e.what();
+  }
+  s.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  return s;
+}
+
+/// The double-ended search between states a and b, refused ones as a status.
+void pair_search(TransitionGraph& g, int a, int b, const VecX& rest, const TransitionSearchOptions& o,
+                 const CurveSimilarity& sim) {
+  TransitionSearch t;
+  try {
+    t = transition_search(g.states[static_cast<size_t>(a)].positions, g.states[static_cast<size_t>(b)].positions,
+                          rest, o, sim);
+  } catch (const InputError& e) {
+    t = TransitionSearch{};
+    t.status = std::string("refused: ") + e.what();
+  }
+  add_pair(g, a, b, t, sim);
+}
+
+}  // namespace
+
+TransitionGraph knot_transitions(const KnotEntry& entry, const DatasetMetadata& metadata,
+                                 const TransitionRunOptions& r) {
+  TransitionRunOptions o = r;
+  o.saddles.relax = dataset_model(metadata);
+  o.pair.saddle = o.saddles;
+  o.validate();
+  const double rest_length = metadata.edge_length.value_or(1.0);
+  const std::vector<StateCluster> clusters = clusters_at_cut(entry, o.cut);
+  require_input(!clusters.empty(), "transitions: " + entry.name + " has no stored equilibria");
+  const CurveSimilarity sim = knot_similarity(entry.name);
+  TransitionGraph g;
+  g.knot = entry.name;
+  g.cut = o.cut;
+  const int energy = entry.attribute_column("energy");
+  for (size_t k = 0; k < clusters.size(); ++k) {
+    const int rep = clusters[k].representative;
+    g.states.push_back({static_cast<int>(k), rep, entry.attributes(rep, energy), entry.equilibria[rep]});
+  }
+  const int states = static_cast<int>(g.states.size());
+  const int searched = o.max_states > 0 ? std::min(o.max_states, states) : states;
+  std::vector<StateSearches> all;
+  for (int k = 0; k < searched; ++k) {
+    if (o.progress) o.progress("state " + std::to_string(k + 1) + "/" + std::to_string(searched));
+    const VecX rest = VecX::Constant(g.states[k].positions.rows(), rest_length);
+    all.push_back(searches_of(o.saddles, k, g.states[k].positions, rest, sim));
+    if (all.back().error.empty()) g.states[k].energy = all.back().energy;
+  }
+  g.energy_scale = o.saddles.relax.material.bending_stiffness() /
+                   (rest_length * static_cast<double>(entry.equilibria.front().rows()));
+  for (StateSearches& s : all) add_searches(g, std::move(s), sim, 1.0 - o.cut);
+  const std::vector<std::pair<int, int>> pairs = transition_pairs(searched, o);
+  for (size_t k = 0; k < pairs.size(); ++k) {
+    if (o.progress) o.progress("pair " + std::to_string(k + 1) + "/" + std::to_string(pairs.size()));
+    const VecX rest = VecX::Constant(g.states[pairs[k].first].positions.rows(), rest_length);
+    pair_search(g, pairs[k].first, pairs[k].second, rest, o.pair, sim);
+  }
+  return g;
+}
+
+}  // namespace ek

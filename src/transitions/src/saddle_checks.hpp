@@ -1,0 +1,27 @@
+#pragma once
+// The checks of a converged saddle search shared by the single-ended
+// (saddles.cpp) and double-ended (double_ended.cpp) searches: items 2-4 of
+// saddles.hpp's file comment without the classification of the minima.
+#include <string>
+
+#include "ek/knots/polynomial.hpp"
+#include "ek/transitions/saddles.hpp"
+
+namespace ek::detail {
+
+/// The model's direct method (with_method(o.relax, "hybrid")).
+RelaxOptions direct(const KnotSaddleOptions& o);
+
+/// The Alexander polynomial of a curve, {0} when it cannot be computed.
+AlexanderPolynomial alexander_or_zero(const Points& x);
+
+/// At x_s (dofs of `sys`): the index (r.index, eigenvalues) and, when it is
+/// one, the descents from x_s ± δ·v₁ into r.minima (+v₁ first; their
+/// start_similarity is left 0) with every image's Alexander polynomial
+/// compared with `alexander`, and r.link. Returns "" when both descents
+/// ended converged-stable with the topology kept, else the failure status
+/// ("degenerate-hessian", "index-K", "topology-changed", "descent-failed").
+std::string descend_saddle(const AlexanderPolynomial& alexander, const VecX& rest, const KnotSaddleOptions& o,
+                           KnotSystem& sys, const VecX& xs, SaddleRecord& r);
+
+}  // namespace ek::detail

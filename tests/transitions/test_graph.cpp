@@ -1,0 +1,141 @@
+// The transition graph: the minimax path on a hand-made graph with a known
+// answer, the chain profile (each edge's whole path, in the direction
+// travelled), and the transitions file round trip.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+
+#include "ek/core/errors.hpp"
+#include "ek/transitions/graph.hpp"
+#include "ek/transitions/run.hpp"
+#include "ek/transitions/transitions_file.hpp"
+
+using namespace ek;
+
+namespace {
+
+Points curve(double shift) {
+  Points P(4, 3);
+  P << 0, 0, shift, 1, 0, shift, 1, 1, shift, 0, 1, shift;
+  return P;
+}
+
+/// States 0..4 with energies; saddles (a, b, E): 0-1 at 5, 1-2 at 3, 0-2 at 9,
+/// 2-3 at 4; state 4 is isolated. The lowest path 0 -> 3 is 0-1-2-3 (highest
+/// saddle 5), not 0-2-3 (9).
+TransitionGraph example() {
+  TransitionGraph g;
+  g.knot = "test";
+  g.cut = 0.05;
+  g.energy_scale = 0.5;
+  const double state_energies[5] = {1.0, 1.1, 1.2, 1.3, 1.4};
+  for (int k = 0; k < 5; ++k) g.states.push_back({k, k, state_energies[k], curve(k)});
+  const int pairs[4][2] = {{0, 1}, {1, 2}, {0, 2}, {2, 3}};
+  const double energies[4] = {5, 3, 9, 4};
+  for (int k = 0; k < 4; ++k) {
+    TransitionSaddle s;
+    s.energy = energies[k];
+    s.negative_eigenvalue = -1.0;
+    s.second_eigenvalue = 0.5;
+    s.index = 1;
+    s.from = pairs[k][0];
+    s.to = pairs[k][1];
+    s.positions = curve(10 + k);
+    s.path = {g.states[s.from].positions, s.positions, g.states[s.to].positions};
+    s.path_energies = {g.states[s.from].energy, s.energy, g.states[s.to].energy};
+    s.saddle_image = 1;
+    s.energy_to = g.states[s.to].energy;
+    s.double_ended = k == 1;
+    g.saddles.push_back(s);
+    g.edges.push_back({s.from, s.to, k, s.energy, s.energy - g.states[s.from].energy, s.energy - g.states[s.to].energy});
+  }
+  PairSearch p;
+  p.a = 1;
+  p.b = 2;
+  p.status = "verified";
+  p.reached = p.verified = true;
+  p.stages = 7;
+  p.path_barrier = 2.5;
+  p.reached_similarity = 0.995;
+  p.saddle_energy = 3;
+  p.saddle = 1;
+  p.seconds = 1.5;
+  g.pairs.push_back(p);
+  g.pairs.push_back({0, 3, "not-reached", false, false, 40, 0.0, 0.4, 0.0, -1, 2.0});
+  return g;
+}
+
+}  // namespace
+
+TEST(TransitionGraph, MinimaxPathAvoidsTheHighSaddle) {
+  const TransitionGraph g = example();
+  const auto path = minimax_path(g, 0, 3);
+  ASSERT_TRUE(path.has_value());
+  EXPECT_EQ(*path, (std::vector<int>{0, 1, 3}));
+  EXPECT_FALSE(minimax_path(g, 0, 4).has_value());  // no chain of saddles reaches state 4
+  EXPECT_TRUE(minimax_path(g, 2, 2)->empty());
+  const auto back = minimax_path(g, 3, 0);
+  ASSERT_TRUE(back.has_value());
+  EXPECT_EQ(*back, (std::vector<int>{3, 1, 0}));
+}
+
+TEST(TransitionGraph, ChainProfileJoinsThePathsInTheDirectionTravelled) {
+  const TransitionGraph g = example();
+  std::vector<Points> images;
+  std::vector<double> energies;
+  std::vector<int> saddles;
+  chain_profile(g, 3, {3, 1, 0}, images, energies, saddles);  // 3 -> 2 -> 1 -> 0, each edge reversed
+  EXPECT_EQ(energies, (std::vector<double>{1.3, 4, 1.2, 1.2, 3, 1.1, 1.1, 5, 1.0}));
+  EXPECT_EQ(saddles, (std::vector<int>{1, 4, 7}));
+  EXPECT_EQ(images.size(), energies.size());
+  EXPECT_THROW(chain_profile(g, 4, {0}, images, energies, saddles), std::invalid_argument);
+}
+
+// Double-ended pairs: the nearest states in energy rank, bounded.
+TEST(TransitionGraph, PairsAreNeighboursInEnergyRank) {
+  TransitionRunOptions o;
+  o.pair_gap = 1;
+  EXPECT_EQ(transition_pairs(4, o), (std::vector<std::pair<int, int>>{{0, 1}, {1, 2}, {2, 3}}));
+  o.pair_gap = 2;
+  o.max_pairs = 3;
+  EXPECT_EQ(transition_pairs(4, o), (std::vector<std::pair<int, int>>{{0, 1}, {0, 2}, {1, 2}}));
+  o.pair_gap = 0;
+  EXPECT_TRUE(transition_pairs(4, o).empty());
+}
+
+TEST(TransitionsFile, RoundTripAndBadInput) {
+  const TransitionGraph g = example();
+  const std::string path = std::filesystem::temp_directory_path() / "ek_test_transitions.h5";
+  write_transitions(path, g, "dataset.h5", "options", true);
+  std::string options;
+  const TransitionGraph r = read_transitions(path, &options);
+  EXPECT_EQ(options, "options");
+  EXPECT_EQ(r.knot, "test");
+  ASSERT_EQ(r.states.size(), g.states.size());
+  ASSERT_EQ(r.saddles.size(), g.saddles.size());
+  ASSERT_EQ(r.edges.size(), g.edges.size());
+  for (size_t k = 0; k < g.saddles.size(); ++k) {
+    EXPECT_EQ(r.saddles[k].energy, g.saddles[k].energy);
+    EXPECT_EQ(r.saddles[k].path_energies, g.saddles[k].path_energies);
+    EXPECT_EQ(r.saddles[k].path.size(), 3u);
+    EXPECT_TRUE(r.saddles[k].positions.isApprox(g.saddles[k].positions));
+  }
+  for (size_t k = 0; k < g.saddles.size(); ++k) {
+    EXPECT_EQ(r.saddles[k].energy_to, g.saddles[k].energy_to);
+    EXPECT_EQ(r.saddles[k].double_ended, g.saddles[k].double_ended);
+  }
+  ASSERT_EQ(r.pairs.size(), 2u);
+  EXPECT_EQ(r.pairs[0].status, "verified");
+  EXPECT_EQ(r.pairs[0].saddle, 1);
+  EXPECT_EQ(r.pairs[0].stages, 7);
+  EXPECT_EQ(r.pairs[1].status, "not-reached");
+  EXPECT_EQ(r.pairs[1].saddle, -1);
+  EXPECT_FALSE(r.pairs[1].reached);
+  EXPECT_EQ(*minimax_path(r, 0, 3), (std::vector<int>{0, 1, 3}));
+  std::remove(path.c_str());
+  const std::string bad = std::filesystem::temp_directory_path() / "ek_test_transitions_bad.h5";
+  { std::FILE* f = std::fopen(bad.c_str(), "w"); std::fputs("not hdf5", f); std::fclose(f); }
+  EXPECT_THROW(read_transitions(bad), InputError);
+  std::remove(bad.c_str());
+}
