@@ -103,15 +103,15 @@ void write_searches(const Args& a, const TransitionGraph& g, results::Transition
 }
 
 void write_pairs(const Args& a, const TransitionGraph& g, results::TransitionsSummary& sum) {
-  Csv csv(a.out + "/pairs.csv", {"a", "b", "status", "reached", "verified", "stages", "path_barrier_scaled",
+  Csv csv(a.out + "/pairs.csv", {"a", "b", "status", "seed_statuses", "reached", "verified", "stages", "path_barrier_scaled",
                                  "reached_similarity", "saddle", "seconds"});
   double seconds = 0.0;
   for (const PairSearch& p : g.pairs) {
     const double barrier = p.reached ? p.path_barrier / g.energy_scale : 0.0;
-    csv.row({std::to_string(p.a), std::to_string(p.b), p.status, Csv::flag(p.reached), Csv::flag(p.verified),
+    csv.row({std::to_string(p.a), std::to_string(p.b), p.status, p.seed_statuses, Csv::flag(p.reached), Csv::flag(p.verified),
              std::to_string(p.stages), p.reached ? Csv::num(barrier) : "", Csv::num(p.reached_similarity),
              std::to_string(p.saddle), Csv::num(p.seconds, 4)});
-    sum.pair_list.push_back({p.a, p.b, p.status, p.reached, p.verified, p.stages, barrier, p.seconds});
+    sum.pair_list.push_back({p.a, p.b, p.status, p.seed_statuses, p.reached, p.verified, p.stages, barrier, p.seconds});
     ++sum.pairs;
     sum.pairs_reached += p.reached;
     sum.pairs_verified += p.verified;

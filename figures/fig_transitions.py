@@ -3,7 +3,9 @@
 energy (E - E_lowest in units of EI/L), each verified saddle as a marker at
 its energy joined to the states its descents reach (a marker above one state:
 a saddle between two minima of that state), the double-ended searches as
-dashed lines labelled by their status; (b) the energy along each edge's
+dashed lines labelled by their status, with the highest image of the
+steered chain (hollow square: an upper bound on the barrier) when it
+reached B; (b) the energy along each edge's
 path, from the state it was searched from over the saddle, E - E_from in
 units of EI/L."""
 import numpy as np
@@ -39,6 +41,8 @@ for r in pairs:
     i, j = int(r["a"]), int(r["b"])
     ax.plot([i, j], [y[i], y[j]], "--", color="0.6", lw=0.7)
     ax.annotate(r["status"], ((i + j) / 2, (y[i] + y[j]) / 2), fontsize=5, color="0.3", ha="center")
+    if r["reached"] == "true":  # the steered chain's highest image: an upper bound on the barrier
+        ax.plot([(i + j) / 2], [y[i] + float(r["path_barrier_scaled"])], "s", mfc="none", color="0.4", ms=5)
 ax.set_xlabel("state (by energy)")
 ax.set_ylabel("(E - E_lowest) / (EI/L)")
 ax.set_title(f"4_1: {s['edges']} edges ({s['inter_state_edges']} between states), "

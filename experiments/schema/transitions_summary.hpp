@@ -28,13 +28,14 @@ EK_JSON_FIELDS(TransitionEdgeSummary, from, to, inter_state, double_ended, saddl
 struct PairSummary {
   int a = -1, b = -1;                 ///< states
   std::string status;                 ///< transition_search()'s
+  std::string seed_statuses;          ///< each seed search's status, separated by ";"
   bool reached = false;               ///< the steered chain reached B
   bool verified = false;              ///< a verified saddle joins A and B
   int stages = 0;                     ///< [1] steering stages
   double path_barrier_scaled = 0.0;   ///< [1] highest chain image − E_A over EI/L (when reached)
   double seconds = 0.0;               ///< [s]
 };
-EK_JSON_FIELDS(PairSummary, a, b, status, reached, verified, stages, path_barrier_scaled, seconds)
+EK_JSON_FIELDS(PairSummary, a, b, status, seed_statuses, reached, verified, stages, path_barrier_scaled, seconds)
 
 struct TransitionsSummary {
   std::string scale;

@@ -45,6 +45,7 @@ TransitionGraph example() {
     s.path = {g.states[s.from].positions, s.positions, g.states[s.to].positions};
     s.path_energies = {g.states[s.from].energy, s.energy, g.states[s.to].energy};
     s.saddle_image = 1;
+    s.energy_from = g.states[s.from].energy;
     s.energy_to = g.states[s.to].energy;
     s.double_ended = k == 1;
     g.saddles.push_back(s);
@@ -54,6 +55,7 @@ TransitionGraph example() {
   p.a = 1;
   p.b = 2;
   p.status = "verified";
+  p.seed_statuses = "other-minima;verified";
   p.reached = p.verified = true;
   p.stages = 7;
   p.path_barrier = 2.5;
@@ -62,7 +64,7 @@ TransitionGraph example() {
   p.saddle = 1;
   p.seconds = 1.5;
   g.pairs.push_back(p);
-  g.pairs.push_back({0, 3, "not-reached", false, false, 40, 0.0, 0.4, 0.0, -1, 2.0});
+  g.pairs.push_back({0, 3, "not-reached", "", false, false, 40, 0.0, 0.4, 0.0, -1, 2.0});
   return g;
 }
 
@@ -122,6 +124,7 @@ TEST(TransitionsFile, RoundTripAndBadInput) {
     EXPECT_TRUE(r.saddles[k].positions.isApprox(g.saddles[k].positions));
   }
   for (size_t k = 0; k < g.saddles.size(); ++k) {
+    EXPECT_EQ(r.saddles[k].energy_from, g.saddles[k].energy_from);
     EXPECT_EQ(r.saddles[k].energy_to, g.saddles[k].energy_to);
     EXPECT_EQ(r.saddles[k].double_ended, g.saddles[k].double_ended);
   }
@@ -129,6 +132,7 @@ TEST(TransitionsFile, RoundTripAndBadInput) {
   EXPECT_EQ(r.pairs[0].status, "verified");
   EXPECT_EQ(r.pairs[0].saddle, 1);
   EXPECT_EQ(r.pairs[0].stages, 7);
+  EXPECT_EQ(r.pairs[0].seed_statuses, "other-minima;verified");
   EXPECT_EQ(r.pairs[1].status, "not-reached");
   EXPECT_EQ(r.pairs[1].saddle, -1);
   EXPECT_FALSE(r.pairs[1].reached);

@@ -44,7 +44,7 @@ bool parse_transition(int argc, char** argv, TransitionCommand& c) {
   args.option("--stages", &o.max_stages, "steering stages before not-reached (default 60; stiffness x1.5 each)");
   args.option("--seeds", &o.seeds, "highest local maxima of the energy along the chain that seed a saddle search (default 3)");
   args.option("--images", &o.max_images, "images kept in the chain (default 48)");
-  args.option("--max-iter", &o.saddle.search.max_iterations, "iterations per saddle search (default 400)");
+  args.option("--max-iter", &o.search_iterations, "iterations per saddle search (default 1500)");
   args.flag("--json", &c.json, "print the summary as one JSON object");
   return args.parse(argc, argv);
 }
@@ -68,10 +68,14 @@ Json saddle_json(const TransitionSearch& t) {
   j["status"] = r.status;
   j["verified"] = r.verified;
   j["energy"] = number(r.energy);
-  j["barrier_forward"] = number(r.energy - t.energy_a);
-  j["barrier_backward"] = number(r.energy - t.energy_b);
-  j["barrier_forward_scaled"] = number((r.energy - t.energy_a) / t.energy_scale);
-  j["barrier_backward_scaled"] = number((r.energy - t.energy_b) / t.energy_scale);
+  const bool descended = !r.minima[0].images.empty();
+  const auto barrier = [&](int k, double scale) {
+    return descended ? number((r.energy - r.minima[k].energy) / scale) : Json(nullptr);
+  };
+  j["barrier_forward"] = barrier(0, 1.0);
+  j["barrier_backward"] = barrier(1, 1.0);
+  j["barrier_forward_scaled"] = barrier(0, t.energy_scale);
+  j["barrier_backward_scaled"] = barrier(1, t.energy_scale);
   j["negative_eigenvalue"] = number(r.negative_eigenvalue);
   j["second_eigenvalue"] = number(r.second_eigenvalue);
   j["index"] = r.index;
@@ -141,8 +145,9 @@ void print_text(const TransitionSearch& t) {
     const SaddleRecord& r = t.saddle;
     std::cout << "saddle (" << t.seeds_tried << " seed(s)): " << r.status;
     if (r.verified)
-      std::cout << ", energy " << fmt(r.energy) << ", barrier " << fmt((r.energy - t.energy_a) / t.energy_scale, 5)
-                << " / " << fmt((r.energy - t.energy_b) / t.energy_scale, 5) << " EI/L, lambda "
+      std::cout << ", energy " << fmt(r.energy) << ", barrier "
+                << fmt((r.energy - r.minima[0].energy) / t.energy_scale, 5) << " / "
+                << fmt((r.energy - r.minima[1].energy) / t.energy_scale, 5) << " EI/L, lambda "
                 << fmt(r.negative_eigenvalue, 4);
     std::cout << "\n";
   }

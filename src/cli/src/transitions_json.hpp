@@ -14,9 +14,9 @@ inline Json graph_saddles_json(const TransitionGraph& g) {
   for (const TransitionSaddle& s : g.saddles) {
     Json j;
     j["energy"] = number(s.energy);
-    j["barrier_forward"] = number(s.energy - g.states[s.from].energy);
+    j["barrier_forward"] = number(s.energy - s.energy_from);
     j["barrier_backward"] = number(s.energy - s.energy_to);
-    j["barrier_forward_scaled"] = number((s.energy - g.states[s.from].energy) / g.energy_scale);
+    j["barrier_forward_scaled"] = number((s.energy - s.energy_from) / g.energy_scale);
     j["barrier_backward_scaled"] = number((s.energy - s.energy_to) / g.energy_scale);
     j["double_ended"] = s.double_ended;
     j["inter_state"] = s.from != s.to;
@@ -85,6 +85,7 @@ inline Json graph_json(const TransitionGraph& g) {
     pj["a"] = p.a;
     pj["b"] = p.b;
     pj["status"] = p.status;
+    pj["seed_statuses"] = p.seed_statuses;
     pj["reached"] = p.reached;
     pj["verified"] = p.verified;
     pj["stages"] = p.stages;

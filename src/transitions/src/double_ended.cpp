@@ -103,17 +103,33 @@ class SteeredObjective final : public Objective {
   SparseAssembler H_;
 };
 
-/// x (energy `energy`) is the minimum ref: similarity >= reach, energy within
-/// energy_tolerance relative, and aligned RMS vertex distance <= same_distance
-/// (the similarity alone cannot tell a chiral curve from its mirror image).
+/// x (energy `energy`) is the minimum ref itself: energy within
+/// energy_tolerance relative and aligned RMS vertex distance <= same_distance.
 bool same_minimum(const Points& x, double energy, const Points& ref, double ref_energy,
-                  const TransitionSearchOptions& o, const CurveSimilarity& similarity, double* sim = nullptr) {
-  const double s = similarity(x, ref);
-  if (sim) *sim = s;
-  if (s < o.reach || std::abs(energy - ref_energy) > o.energy_tolerance * std::abs(ref_energy)) return false;
+                  const TransitionSearchOptions& o) {
+  if (std::abs(energy - ref_energy) > o.energy_tolerance * std::abs(ref_energy)) return false;
   double distance = 0.0;
   align_vertices(ref, x, distance);
   return distance <= o.same_distance;
+}
+
+/// The state a minimum x belongs to (the file comment's "ends at"): 0 A,
+/// 1 B, 2 neither. A state is the class of curves with similarity >= reach
+/// to it; when x is in both classes (A and B are that similar, e.g. a chiral
+/// curve and its mirror image, which the similarity cannot tell apart) only
+/// the minimum itself counts (same_minimum()).
+int which_state(const Points& x, double energy, const SaddleStart& a, const SaddleStart& b,
+                const TransitionSearchOptions& o, const CurveSimilarity& similarity, double* to_a = nullptr,
+                double* to_b = nullptr) {
+  const double sa = similarity(x, a.positions), sb = similarity(x, b.positions);
+  if (to_a) *to_a = sa;
+  if (to_b) *to_b = sb;
+  const bool in_a = sa >= o.reach, in_b = sb >= o.reach;
+  if (in_a != in_b) return in_a ? 0 : 1;
+  if (!in_a) return 2;
+  if (same_minimum(x, energy, a.positions, a.energy, o)) return 0;
+  if (same_minimum(x, energy, b.positions, b.energy, o)) return 1;
+  return 2;
 }
 
 /// The steered chain (step 2): every accepted iterate (dofs) and its E.
@@ -124,7 +140,7 @@ struct Chain {
 
 /// Newton on E from the current dofs; true (and the images appended) when it
 /// ends converged-stable at B.
-bool release(KnotSystem& sys, const SaddleStart& b, const TransitionSearchOptions& o,
+bool release(KnotSystem& sys, const SaddleStart& a, const SaddleStart& b, const TransitionSearchOptions& o,
              const CurveSimilarity& similarity, Chain& chain) {
   Objective& f = sys.objective();
   NewtonOptions no = sys.newton();
@@ -132,7 +148,7 @@ bool release(KnotSystem& sys, const SaddleStart& b, const TransitionSearchOption
   const Descent d = descend(f, no);
   if (d.report.status != SolverStatus::ConvergedStable) return false;
   const Points end = sys.positions(d.images.back());
-  if (!same_minimum(end, d.energies.back(), b.positions, b.energy, o, similarity)) return false;
+  if (which_state(end, d.energies.back(), a, b, o, similarity) != 1) return false;
   chain.images.insert(chain.images.end(), d.images.begin() + 1, d.images.end());
   chain.energies.insert(chain.energies.end(), d.energies.begin() + 1, d.energies.end());
   return true;
@@ -162,7 +178,7 @@ Chain steer(KnotSystem& sys, const SaddleStart& a, const SaddleStart& b, const T
     f.accept();
     t.reached_similarity = similarity(sys.positions(x), b.positions);
     if (t.reached_similarity < o.reach) continue;
-    if (release(sys, b, o, similarity, chain)) {
+    if (release(sys, a, b, o, similarity, chain)) {
       t.reached = true;
       t.reached_similarity = similarity(sys.positions(chain.images.back()), b.positions);
       break;
@@ -204,6 +220,7 @@ SaddleRecord seed_search(const Points& seed, const VecX& tangent, const SaddleSt
   so.gradient_tolerance = sys.tolerance();
   so.base_shift = sys.newton().shift_epsilon * sys.lambda_min();
   so.max_energy_rise = o.saddle.max_rise_factor * std::abs(a.energy);
+  so.max_iterations = o.search_iterations;
   const SaddleSearchResult s = search_saddle(f, tangent, so);
   SaddleRecord r;
   r.status = to_string(s.status);
@@ -218,8 +235,9 @@ SaddleRecord seed_search(const Points& seed, const VecX& tangent, const SaddleSt
     bool at_a[2] = {false, false}, at_b[2] = {false, false};
     for (int m = 0; m < 2 && r.index == 1 && !r.minima[m].images.empty(); ++m) {
       SaddleMinimum& mm = r.minima[m];
-      at_a[m] = same_minimum(mm.positions, mm.energy, a.positions, a.energy, o, similarity, &mm.start_similarity);
-      at_b[m] = same_minimum(mm.positions, mm.energy, b.positions, b.energy, o, similarity, &to_b[m]);
+      const int state = which_state(mm.positions, mm.energy, a, b, o, similarity, &mm.start_similarity, &to_b[m]);
+      at_a[m] = state == 0;
+      at_b[m] = state == 1;
     }
     if (r.minima[1].start_similarity > r.minima[0].start_similarity) {
       std::swap(r.minima[0], r.minima[1]);
@@ -240,6 +258,41 @@ SaddleRecord seed_search(const Points& seed, const VecX& tangent, const SaddleSt
   return r;
 }
 
+/// The state of the minimum Newton's method on E reaches from dofs x
+/// (which_state()), 2 when it does not end converged-stable.
+int basin(KnotSystem& sys, const VecX& x, const SaddleStart& a, const SaddleStart& b,
+          const TransitionSearchOptions& o, const CurveSimilarity& similarity) {
+  Objective& f = sys.objective();
+  f.set_dofs(x);
+  f.accept();
+  NewtonOptions no = sys.newton();
+  no.max_iterations = o.stage_iterations;
+  const Descent d = descend(f, no);
+  if (d.report.status != SolverStatus::ConvergedStable) return 2;
+  const Points end = sys.positions(d.images.back());
+  return which_state(end, d.energies.back(), a, b, o, similarity);
+}
+
+/// A point of A's basin next to its boundary on the chain (step 3): a
+/// binary search over the iterates for consecutive ones, the first in A's
+/// basin and the second not, then `bisections` halvings of the straight step
+/// between them (a step the CCD cleared). `outside` receives the other end.
+VecX basin_boundary(KnotSystem& sys, const Chain& full, const SaddleStart& a, const SaddleStart& b,
+                    const TransitionSearchOptions& o, const CurveSimilarity& similarity, VecX& outside) {
+  size_t lo = 0, hi = full.images.size() - 1;  // A, and the released end at B
+  while (hi - lo > 1) {
+    const size_t mid = (lo + hi) / 2;
+    (basin(sys, full.images[mid], a, b, o, similarity) == 0 ? lo : hi) = mid;
+  }
+  VecX inside = full.images[lo];
+  outside = full.images[hi];
+  for (int j = 0; j < o.bisections; ++j) {
+    const VecX mid = 0.5 * (inside + outside);
+    (basin(sys, mid, a, b, o, similarity) == 0 ? inside : outside) = mid;
+  }
+  return inside;
+}
+
 /// The chain's interior local maxima of E (E_i > E_{i−1}, E_i >= E_{i+1}) by decreasing energy.
 std::vector<size_t> seed_order(const std::vector<double>& energies) {
   std::vector<size_t> idx;
@@ -247,6 +300,33 @@ std::vector<size_t> seed_order(const std::vector<double>& energies) {
     if (energies[i] > energies[i - 1] && energies[i] >= energies[i + 1]) idx.push_back(i);
   std::stable_sort(idx.begin(), idx.end(), [&](size_t p, size_t q) { return energies[p] > energies[q]; });
   return idx;
+}
+
+/// One seed's search and its bookkeeping; true when verified.
+bool try_seed(const Points& seed, const VecX& direction, const SaddleStart& a, const SaddleStart& b,
+              const VecX& rest, const TransitionSearchOptions& o, const CurveSimilarity& similarity,
+              TransitionSearch& t) {
+  ++t.seeds_tried;
+  t.minima_to_b = {0.0, 0.0};
+  t.saddle = seed_search(seed, direction, a, b, rest, o, similarity, t.minima_to_b);
+  t.seed_statuses.push_back(t.saddle.status);
+  return t.saddle.verified;
+}
+
+/// Step 3's seeds in order: the basin boundary on the chain (when
+/// `bisections` > 0), then the chain's highest local maxima of E.
+void run_seeds(KnotSystem& sys, const Chain& full, const SaddleStart& a, const SaddleStart& b, const VecX& rest,
+               const TransitionSearchOptions& o, const CurveSimilarity& similarity, TransitionSearch& t) {
+  if (o.bisections > 0) {
+    VecX outside;
+    const VecX inside = basin_boundary(sys, full, a, b, o, similarity, outside);
+    if (try_seed(sys.positions(inside), outside - inside, a, b, rest, o, similarity, t)) return;
+  }
+  for (const size_t i : seed_order(full.energies)) {
+    if (t.seeds_tried >= o.seeds) return;
+    const VecX tangent = full.images[i + 1] - full.images[i - 1];
+    if (try_seed(sys.positions(full.images[i]), tangent, a, b, rest, o, similarity, t)) return;
+  }
 }
 
 }  // namespace
@@ -263,6 +343,8 @@ void TransitionSearchOptions::validate() const {
   require_input(max_images >= 3, "transition: max_images must be >= 3");
   require_input(same_distance > 0.0 && std::isfinite(same_distance), "transition: same_distance must be positive");
   require_input(seeds >= 1, "transition: seeds must be >= 1");
+  require_input(bisections >= 0 && bisections <= 60, "transition: bisections must be in [0, 60]");
+  require_input(search_iterations >= 1, "transition: search_iterations must be >= 1");
 }
 
 Points align_vertices(const Points& a, const Points& b, double& distance) {
@@ -325,15 +407,7 @@ TransitionSearch transition_search(const Points& a, const Points& b, const VecX&
   if (!t.alexander_preserved) return done("topology-changed");
   if (!t.reached) return done("not-reached");
   t.path_barrier = *std::max_element(full.energies.begin(), full.energies.end()) - t.energy_a;
-  for (const size_t i : seed_order(full.energies)) {
-    if (t.seeds_tried >= o.seeds) break;
-    ++t.seeds_tried;
-    t.minima_to_b = {0.0, 0.0};
-    const VecX tangent = full.images[i + 1] - full.images[i - 1];
-    t.saddle = seed_search(sys.positions(full.images[i]), tangent, sa, sb, rest, o, similarity, t.minima_to_b);
-    t.seed_statuses.push_back(t.saddle.status);
-    if (t.saddle.verified) break;
-  }
+  run_seeds(sys, full, sa, sb, rest, o, similarity, t);
   if (t.seeds_tried == 0) return done("no-seed");
   return done(t.saddle.status);
 }

@@ -45,6 +45,7 @@ TransitionSaddle make_saddle(const SaddleRecord& r, int from, int to) {
   s.gradient_norm = r.gradient_norm;
   s.from = from;
   s.to = to;
+  s.energy_from = r.minima[0].energy;
   s.energy_to = r.minima[1].energy;
   s.positions = r.saddle;
   s.path = saddle_path(r, s.path_energies, s.saddle_image);
@@ -57,7 +58,7 @@ void add_edge(TransitionGraph& g, TransitionSaddle s) {
   e.to = s.to;
   e.saddle = static_cast<int>(g.saddles.size());
   e.energy = s.energy;
-  e.barrier_forward = s.energy - g.states[static_cast<size_t>(s.from)].energy;
+  e.barrier_forward = s.energy - s.energy_from;
   e.barrier_backward = s.energy - s.energy_to;
   g.saddles.push_back(std::move(s));
   g.edges.push_back(e);
@@ -93,6 +94,7 @@ void add_pair(TransitionGraph& g, int a, int b, const TransitionSearch& t, const
   p.a = a;
   p.b = b;
   p.status = t.status;
+  for (const std::string& x : t.seed_statuses) p.seed_statuses += (p.seed_statuses.empty() ? "" : ";") + x;
   p.reached = t.reached;
   p.verified = t.verified;
   p.stages = t.stages;

@@ -91,6 +91,7 @@ void write_saddles(hid_t file, const TransitionGraph& graph) {
   put(g.id(), "from", ints(s, [](const S& x) { return x.from; }));
   put(g.id(), "to", ints(s, [](const S& x) { return x.to; }));
   put(g.id(), "saddle_image", ints(s, [](const S& x) { return x.saddle_image; }));
+  put(g.id(), "energy_from", doubles(s, [](const S& x) { return x.energy_from; }));
   put(g.id(), "energy_to", doubles(s, [](const S& x) { return x.energy_to; }));
   put(g.id(), "double_ended", ints(s, [](const S& x) { return x.double_ended ? 1 : 0; }));
   std::vector<Points> pos;
@@ -168,6 +169,9 @@ void write_pairs(hid_t file, const TransitionGraph& graph) {
   std::vector<std::string> status;
   for (const P& x : p) status.push_back(x.status);
   h5::write_strings(g.id(), "status", status);
+  std::vector<std::string> seeds;
+  for (const P& x : p) seeds.push_back(x.seed_statuses);
+  h5::write_strings(g.id(), "seed_statuses", seeds);
   put(g.id(), "reached", ints(p, [](const P& x) { return x.reached ? 1 : 0; }));
   put(g.id(), "verified", ints(p, [](const P& x) { return x.verified ? 1 : 0; }));
   put(g.id(), "stages", ints(p, [](const P& x) { return x.stages; }));
@@ -242,12 +246,13 @@ void read_saddles(hid_t file, TransitionGraph& g) {
   const std::vector<std::int64_t> index = h5::read_int64(s.id(), "index");
   const std::vector<std::int64_t> from = h5::read_int64(s.id(), "from"), to = h5::read_int64(s.id(), "to");
   const std::vector<std::int64_t> at = h5::read_int64(s.id(), "saddle_image");
+  const std::vector<double> energy_from = h5::read_doubles(s.id(), "energy_from");
   const std::vector<double> energy_to = h5::read_doubles(s.id(), "energy_to");
   const std::vector<std::int64_t> two = h5::read_int64(s.id(), "double_ended");
   const std::vector<Points> pos = energy.empty() ? std::vector<Points>{} : read_curves(s.id(), "positions");
   const size_t k = energy.size();
   if (neg.size() != k || second.size() != k || grad.size() != k || index.size() != k || from.size() != k ||
-      to.size() != k || at.size() != k || pos.size() != k || energy_to.size() != k || two.size() != k)
+      to.size() != k || at.size() != k || pos.size() != k || energy_to.size() != k || energy_from.size() != k || two.size() != k)
     throw InputError("saddles: columns of different lengths");
   for (size_t j = 0; j < k; ++j) {
     TransitionSaddle t;
@@ -259,6 +264,7 @@ void read_saddles(hid_t file, TransitionGraph& g) {
     t.from = static_cast<int>(from[j]);
     t.to = static_cast<int>(to[j]);
     t.saddle_image = static_cast<int>(at[j]);
+    t.energy_from = energy_from[j];
     t.energy_to = energy_to[j];
     t.double_ended = two[j] != 0;
     t.positions = pos[j];
@@ -296,6 +302,7 @@ void read_pairs(hid_t file, TransitionGraph& g) {
   const h5::Handle p = h5::open_group(file, "pairs");
   const std::vector<std::int64_t> a = h5::read_int64(p.id(), "a"), b = h5::read_int64(p.id(), "b");
   const std::vector<std::string> status = h5::read_strings(p.id(), "status");
+  const std::vector<std::string> seeds = h5::read_strings(p.id(), "seed_statuses");
   const std::vector<std::int64_t> reached = h5::read_int64(p.id(), "reached");
   const std::vector<std::int64_t> verified = h5::read_int64(p.id(), "verified");
   const std::vector<std::int64_t> stages = h5::read_int64(p.id(), "stages");
@@ -305,7 +312,7 @@ void read_pairs(hid_t file, TransitionGraph& g) {
   const std::vector<double> energy = h5::read_doubles(p.id(), "saddle_energy");
   const std::vector<double> seconds = h5::read_doubles(p.id(), "seconds");
   const size_t k = a.size();
-  for (const size_t m : {b.size(), status.size(), reached.size(), verified.size(), stages.size(), saddle.size(),
+  for (const size_t m : {b.size(), status.size(), seeds.size(), reached.size(), verified.size(), stages.size(), saddle.size(),
                          barrier.size(), reach.size(), energy.size(), seconds.size()})
     if (m != k) throw InputError("pairs: columns of different lengths");
   for (size_t j = 0; j < k; ++j) {
@@ -313,6 +320,7 @@ void read_pairs(hid_t file, TransitionGraph& g) {
     x.a = static_cast<int>(a[j]);
     x.b = static_cast<int>(b[j]);
     x.status = status[j];
+    x.seed_statuses = seeds[j];
     x.reached = reached[j] != 0;
     x.verified = verified[j] != 0;
     x.stages = static_cast<int>(stages[j]);

@@ -30,24 +30,36 @@
 ///     kept: a B that can only be reached by a strand passage (a crossing
 ///     change) is never reached. Once an image has similarity >= `reach`
 ///     to B, Newton's method on E alone from it (the release) must end
-///     converged-stable at B (similarity >= `reach`, energy within
-///     `energy_tolerance` relative of E_B, and aligned RMS vertex distance
-///     to B at most `same_distance`: the similarity alone does not tell a
-///     chiral curve from its mirror image); else steering goes on. The chain
+///     converged-stable in B's state (below); else steering goes on. The chain
 ///     is every accepted iterate from A to B (the stages, then the release),
 ///     thinned evenly by length to `max_images`; the Alexander polynomial of
 ///     every stored image must be A's.
-///  3. Saddle. From the `seeds` highest interior local maxima of E along
-///     the whole chain (every accepted iterate, before thinning; by
-///     decreasing energy), search_saddle() (ek/solver/saddle.hpp) follows the
-///     mode closest to the chain's tangent x_{i+1} − x_{i−1} there; a
+///  3. Saddle. Seeds, in order: (a) a point on the boundary of A's basin
+///     along the chain: a binary search over the chain's iterates (every
+///     accepted iterate, before thinning) for consecutive ones x_j, x_{j+1}
+///     of which Newton's method on E takes the first to A and the second not,
+///     then `bisections` halvings of the straight step between them (a step
+///     the CCD cleared); the saddle between A and B is the lowest point of
+///     that boundary, and its unstable mode crosses it, so the search starts
+///     there along x_{j+1} − x_j; (b) the chain's highest interior local
+///     maxima of E along its tangent x_{i+1} − x_{i−1}; `seeds` in all. From
+///     each, search_saddle() (ek/solver/saddle.hpp) follows the mode
+///     closest to the given direction; a
 ///     converged search gets saddles.hpp's checks 1-4 (gradient, exactly one
 ///     negative and no near-zero eigenvalue, two converged-stable descents
 ///     from x_s ± δ·v₁ with the topology kept), and counts only when one
-///     descent ends at A and the other at B (each similarity >= `reach`,
-///     energy within `energy_tolerance` relative and aligned distance <=
-///     `same_distance`): then the barriers are
-///     E_s − E_A and E_s − E_B. The first verified seed ends the search.
+///     descent ends in A's state and the other in B's: then the barriers
+///     are E_s minus the energies of the two minima reached. The first
+///     verified seed ends the search.
+/// States. A minimum is in A's state when its similarity to A is >= `reach`
+/// and its similarity to B is not (and vice versa): the landscape around a
+/// state holds many nearby minima of slightly different energy (the
+/// single-ended searches join them), which the data set's clustering
+/// merges. When it is similar to both (A and B in one similarity class,
+/// e.g. a chiral curve and its mirror image, which the similarity cannot
+/// tell apart), only A or B itself counts: energy within
+/// `energy_tolerance` relative and aligned RMS vertex distance (step 1) at
+/// most `same_distance`.
 /// Statuses (never a false saddle): "verified"; "same-state" (A and B are one
 /// curve: energies within `energy_tolerance` relative and the aligned RMS
 /// vertex distance at most `same_distance`; a mirror image, which the
@@ -82,10 +94,14 @@ struct TransitionSearchOptions {
   double reach = 0.99;              ///< [1] similarity to B (and A) that counts as reaching it
   double energy_tolerance = 1e-8;   ///< [1] relative energy difference that counts as the same minimum
   /// [length] aligned RMS vertex distance (align_vertices()) within which two
-  /// minima of equal energy are one curve (A and B; a descent's end and A or B)
+  /// minima of equal energy are one curve (see "States")
   double same_distance = 1e-2;
   int max_images = 48;              ///< [1] images kept in the chain (>= 3)
-  int seeds = 3;                    ///< [1] highest local maxima of E along the chain that seed a saddle search (>= 1)
+  int seeds = 3;                    ///< [1] saddle searches at most (the boundary point, then local maxima of E; >= 1)
+  /// [1] iterations of each seed's saddle search (replaces saddle.search.max_iterations:
+  /// a seed is no equilibrium, and the searches from it take longer than from a state)
+  int search_iterations = 1500;
+  int bisections = 30;              ///< [1] halvings of the chain step that crosses A's basin boundary (0: no boundary seed)
   void validate() const;            ///< InputError for impossible values
 };
 
@@ -111,7 +127,8 @@ struct TransitionSearch {
   int seeds_tried = 0;               ///< [1] saddle searches run
   std::vector<std::string> seed_statuses;  ///< each seed's search status, in order
   /// The last seed's search: minima[0] the descent that ended nearer A (by
-  /// similarity), minima[1] the other; their start_similarity is to A.
+  /// similarity; in A's state when verified), minima[1] the other; their
+  /// start_similarity is to A. Barriers: energy − minima[k].energy.
   SaddleRecord saddle;
   std::array<double, 2> minima_to_b{0.0, 0.0};  ///< [1] similarity of saddle.minima to B
   double seconds = 0.0;              ///< [s]

@@ -42,6 +42,7 @@ struct StateSearches {
 struct PairSearch {
   int a = -1, b = -1;                  ///< states
   std::string status;                  ///< transition_search()'s, or "refused: <reason>"
+  std::string seed_statuses;           ///< each seed search's status, separated by ";"
   bool reached = false;                ///< the steered chain reached B
   bool verified = false;
   int stages = 0;                      ///< [1]
@@ -59,6 +60,7 @@ struct TransitionSaddle {
   int index = 1;                     ///< [1]
   double gradient_norm = 0.0;        ///< [energy/length]
   int from = -1, to = -1;            ///< states (from: searched, or A; to: the other minimum's, or B)
+  double energy_from = 0.0;          ///< [energy] the minimum the descent on the `from` side reached (single-ended: the state)
   double energy_to = 0.0;            ///< [energy] the minimum the descent on the `to` side reached
   bool double_ended = false;         ///< found by a double-ended search
   Points positions;                  ///< n by 3
@@ -70,7 +72,7 @@ struct TransitionSaddle {
 struct TransitionEdge {
   int from = -1, to = -1, saddle = -1;
   double energy = 0.0;                 ///< [energy] of the saddle
-  double barrier_forward = 0.0;        ///< [energy] E_saddle − E_from (the state's)
+  double barrier_forward = 0.0;        ///< [energy] E_saddle − the energy of the minimum reached on the `from` side
   double barrier_backward = 0.0;       ///< [energy] E_saddle − the energy of the minimum reached on the `to` side
 };
 

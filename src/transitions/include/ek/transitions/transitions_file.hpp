@@ -7,7 +7,7 @@
 ///   states/      energy float64 [s], cluster int64 [s] (-1: not in the data set),
 ///                equilibrium int64 [s] (-1: new), positions float64 [s, n, 3]
 ///   saddles/     energy, negative_eigenvalue, second_eigenvalue, gradient_norm float64 [k],
-///                energy_to float64 [k] (the minimum reached on the `to` side),
+///                energy_from, energy_to float64 [k] (the minima the descents reached),
 ///                index, from, to, saddle_image, double_ended int64 [k], positions float64 [k, n, 3],
 ///                path_<j>/ images float64 [p, n, 3], energies float64 [p]
 ///   edges/       from, to, saddle int64 [e], energy, barrier_forward, barrier_backward,
@@ -15,7 +15,7 @@
 ///   searches/    state, mode, direction, verified, index, iterations int64 [m],
 ///                status string [m], energy, gradient_norm, seconds float64 [m]
 ///   pairs/       a, b, reached, verified, stages, saddle int64 [q] (-1: none),
-///                status string [q], path_barrier, reached_similarity,
+///                status, seed_statuses string [q], path_barrier, reached_similarity,
 ///                saddle_energy, seconds float64 [q] (double-ended searches)
 ///
 /// Written to a temporary name and renamed into place.
