@@ -1,0 +1,119 @@
+// `knots transition`, `knots transitions`, `knots path`: the command-line
+// contract (docs/cli.md): one-line errors with exit status 2 for bad input,
+// an existing output kept without --overwrite, the double-ended search
+// joining two relaxed samples of 4_1 (its folder agreeing with the JSON),
+// and the graph of a small data set with a path through it or the statement
+// that none joins the states.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+
+#include "cli_runner.hpp"
+
+using ek::clitest::run;
+using ek::clitest::temp_dir;
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// Samples `first` and `first + 1` of 4_1 (BFACF, 120 unit edges, seed 1)
+/// relaxed by the default method.
+std::pair<std::string, std::string> states_41(const std::string& dir) {
+  auto r = run("sample 4_1 -n 120 --count 3 -o " + dir + "/lattice");
+  EXPECT_EQ(r.status, 0) << r.err;
+  for (const char* k : {"1", "2"}) {
+    r = run("relax " + dir + "/lattice/4_1-000" + k + ".obj -o " + dir + "/state" + k + ".obj");
+    EXPECT_EQ(r.status, 0) << r.err;
+  }
+  return {dir + "/state1.obj", dir + "/state2.obj"};
+}
+
+size_t lines(const std::string& s) { return static_cast<size_t>(std::count(s.begin(), s.end(), '\n')); }
+
+}  // namespace
+
+TEST(TransitionCli, BadInputIsOneLineAndExitTwo) {
+  const std::string dir = temp_dir("transition_cli_bad");
+  const auto [a, b] = states_41(dir);
+  ASSERT_EQ(run("sample 4_1 -n 100 -o " + dir + "/small").status, 0);
+  ASSERT_EQ(run("relax " + dir + "/small/4_1-0000.obj -o " + dir + "/small.obj").status, 0);
+  fs::create_directories(dir + "/exists");
+  for (const std::string& args :
+       {"transition " + a + " " + dir + "/missing.obj -o " + dir + "/o1",  // no such file
+        "transition " + a + " " + dir + "/small.obj -o " + dir + "/o2",    // vertex counts differ
+        "transition " + a + " " + b + " --stages 0 -o " + dir + "/o3",
+        "transition " + a + " " + b + " -o " + dir + "/exists",  // exists, no --overwrite
+        "transition " + a + " " + b, "transitions " + dir + "/missing.h5 4_1 -o " + dir + "/t.h5",
+        "path " + dir + "/missing.h5 4_1 0 1 -o " + dir + "/p.obj"}) {
+    const auto r = run(args);
+    EXPECT_EQ(r.status, 2) << args;
+    EXPECT_EQ(lines(r.err), 1u) << args << ": " << r.err;
+    EXPECT_TRUE(r.out.empty()) << args;
+  }
+  for (const char* sub : {"o1", "o2", "o3", "t.h5", "p.obj"}) EXPECT_FALSE(fs::exists(dir + "/" + sub)) << sub;
+  EXPECT_TRUE(fs::is_empty(dir + "/exists"));
+}
+
+// Two relaxed samples that one shallow saddle joins (test_double_ended.cpp):
+// verified, and the folder holds A, the aligned B, the chain, the saddle and
+// its path; the barriers agree with the minima's energies.
+TEST(TransitionCli, JoinsTwoRelaxedSamplesOf41) {
+  const std::string dir = temp_dir("transition_cli_ok");
+  const auto [a, b] = states_41(dir);
+  const std::string out = dir + "/out";
+  const auto r = run("transition " + a + " " + b + " -o " + out + " --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = r.json();
+  EXPECT_EQ(j.at("status"), "verified");
+  EXPECT_TRUE(j.at("reached").get<bool>());
+  EXPECT_TRUE(j.at("alexander_preserved").get<bool>());
+  const auto& s = j.at("saddle");
+  EXPECT_EQ(s.at("index"), 1);
+  ASSERT_EQ(s.at("minima").size(), 2u);
+  EXPECT_NEAR(s.at("barrier_forward").get<double>(),
+              s.at("energy").get<double>() - s.at("minima")[0].at("energy").get<double>(), 1e-15);
+  EXPECT_GT(s.at("barrier_forward").get<double>(), 0.0);
+  EXPECT_GT(s.at("barrier_backward").get<double>(), 0.0);
+  for (const char* f : {"summary.json", "a.obj", "b.obj", "chain.obj", "saddle.obj", "path.obj"})
+    EXPECT_TRUE(fs::exists(out + "/" + f)) << f;
+  const auto again = run("transition " + a + " " + b + " -o " + out);
+  EXPECT_EQ(again.status, 2);  // the folder exists
+}
+
+// The graph of a small data set (4_1, 8 samples of 120 vertices): the JSON
+// keys of the contract, and `knots path` between its two lowest states
+// either a chain of edges (exit 0, its file written) or "no chain" (exit 1,
+// nothing written), consistently with the graph's edges.
+TEST(TransitionsCli, GraphAndPathOfASmallDataSet) {
+  const std::string dir = temp_dir("transitions_cli");
+  const std::string ds = dir + "/ds.h5", tr = dir + "/tr.h5";
+  auto r = run("explore 4_1 --samples 8 -n 120 -o " + ds + " --jobs 2");
+  ASSERT_EQ(r.status, 0) << r.err;
+  r = run("transitions " + ds + " 4_1 --modes 1 --states 2 --max-pairs 1 -o " + tr + " --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto g = r.json();
+  for (const char* key : {"saddles", "states", "edges", "pairs", "seconds"}) EXPECT_TRUE(g.contains(key)) << key;
+  for (const auto& s : g.at("saddles"))
+    for (const char* key :
+         {"energy", "barrier_forward", "barrier_backward", "negative_eigenvalue", "index", "gradient_norm", "minima"})
+      EXPECT_TRUE(s.contains(key)) << key;
+  ASSERT_GE(g.at("states").size(), 2u);
+  EXPECT_LE(g.at("pairs").size(), 1u);
+  EXPECT_EQ(run("transitions " + ds + " 4_1 -o " + tr).status, 2);  // exists, no --overwrite
+  bool joined = false;
+  for (const auto& e : g.at("edges"))
+    joined = joined || (std::min(e.at("from").get<int>(), e.at("to").get<int>()) == 0 &&
+                        std::max(e.at("from").get<int>(), e.at("to").get<int>()) == 1);
+  const auto p = run("path " + tr + " 4_1 0 1 -o " + dir + "/p.obj --json");
+  const auto pj = p.json();
+  EXPECT_EQ(pj.at("connected").get<bool>(), p.status == 0);
+  EXPECT_EQ(fs::exists(dir + "/p.obj"), p.status == 0);
+  if (joined) {
+    EXPECT_EQ(p.status, 0);
+  }
+  EXPECT_EQ(run("path " + tr + " 3_1 0 1 -o " + dir + "/q.obj").status, 2);   // another knot
+  EXPECT_EQ(run("path " + tr + " 4_1 0 999 -o " + dir + "/q.obj").status, 2);  // no such state
+}
