@@ -273,10 +273,50 @@ int basin(KnotSystem& sys, const VecX& x, const SaddleStart& a, const SaddleStar
   return which_state(end, d.energies.back(), a, b, o, similarity);
 }
 
-/// A point of A's basin next to its boundary on the chain (step 3): a
-/// binary search over the iterates for consecutive ones, the first in A's
+/// `count` halvings of the step from `inside` (A's state) to `outside` (not).
+void bisect(KnotSystem& sys, const SaddleStart& a, const SaddleStart& b, const TransitionSearchOptions& o,
+            const CurveSimilarity& similarity, int count, VecX& inside, VecX& outside) {
+  for (int j = 0; j < count; ++j) {
+    const VecX mid = 0.5 * (inside + outside);
+    (basin(sys, mid, a, b, o, similarity) == 0 ? inside : outside) = mid;
+  }
+}
+
+/// `steps` Newton iterations on E from dofs x.
+VecX newton_steps(KnotSystem& sys, const VecX& x, int steps) {
+  Objective& f = sys.objective();
+  f.set_dofs(x);
+  f.accept();
+  NewtonOptions no = sys.newton();
+  no.max_iterations = steps;
+  return descend(f, no).images.back();
+}
+
+/// Edge tracking along the boundary of A's state (step 3): both points move
+/// by `tracking_steps` Newton iterations (each stays in its basin), the
+/// pair is checked (basins again, the straight step between them cleared by
+/// the CCD), then bisected again; it stops early when a check fails.
+void track_boundary(KnotSystem& sys, const SaddleStart& a, const SaddleStart& b, const TransitionSearchOptions& o,
+                    const CurveSimilarity& similarity, VecX& inside, VecX& outside) {
+  Objective& f = sys.objective();
+  for (int r = 0; r < o.tracking_rounds; ++r) {
+    const VecX in = newton_steps(sys, inside, o.tracking_steps);
+    const VecX out = newton_steps(sys, outside, o.tracking_steps);
+    f.set_dofs(in);
+    f.accept();
+    if (f.max_step(in, out - in) < 1.0) return;
+    if (basin(sys, in, a, b, o, similarity) != 0 || basin(sys, out, a, b, o, similarity) == 0) return;
+    inside = in;
+    outside = out;
+    bisect(sys, a, b, o, similarity, o.tracking_bisections, inside, outside);
+  }
+}
+
+/// A point of A's state's basin next to its boundary on the chain (step 3):
+/// a binary search over the iterates for consecutive ones, the first in A's
 /// basin and the second not, then `bisections` halvings of the straight step
-/// between them (a step the CCD cleared). `outside` receives the other end.
+/// between them (a step the CCD cleared), then track_boundary(). `outside`
+/// receives the other end.
 VecX basin_boundary(KnotSystem& sys, const Chain& full, const SaddleStart& a, const SaddleStart& b,
                     const TransitionSearchOptions& o, const CurveSimilarity& similarity, VecX& outside) {
   size_t lo = 0, hi = full.images.size() - 1;  // A, and the released end at B
@@ -286,10 +326,8 @@ VecX basin_boundary(KnotSystem& sys, const Chain& full, const SaddleStart& a, co
   }
   VecX inside = full.images[lo];
   outside = full.images[hi];
-  for (int j = 0; j < o.bisections; ++j) {
-    const VecX mid = 0.5 * (inside + outside);
-    (basin(sys, mid, a, b, o, similarity) == 0 ? inside : outside) = mid;
-  }
+  bisect(sys, a, b, o, similarity, o.bisections, inside, outside);
+  track_boundary(sys, a, b, o, similarity, inside, outside);
   return inside;
 }
 
@@ -310,6 +348,7 @@ bool try_seed(const Points& seed, const VecX& direction, const SaddleStart& a, c
   t.minima_to_b = {0.0, 0.0};
   t.saddle = seed_search(seed, direction, a, b, rest, o, similarity, t.minima_to_b);
   t.seed_statuses.push_back(t.saddle.status);
+  if (t.saddle.status == "other-minima") t.other_saddles.push_back(t.saddle);
   return t.saddle.verified;
 }
 
@@ -345,6 +384,8 @@ void TransitionSearchOptions::validate() const {
   require_input(seeds >= 1, "transition: seeds must be >= 1");
   require_input(bisections >= 0 && bisections <= 60, "transition: bisections must be in [0, 60]");
   require_input(search_iterations >= 1, "transition: search_iterations must be >= 1");
+  require_input(tracking_rounds >= 0 && tracking_steps >= 1 && tracking_bisections >= 0 && tracking_bisections <= 60,
+                "transition: tracking_rounds >= 0, tracking_steps >= 1 and tracking_bisections in [0, 60] are required");
 }
 
 Points align_vertices(const Points& a, const Points& b, double& distance) {

@@ -36,6 +36,25 @@ int known_saddle(const TransitionGraph& g, const SaddleRecord& r, const CurveSim
   return -1;
 }
 
+/// The images from minima[0] over the saddle to minima[1] (saddle_path()
+/// without its requirement of a verified record).
+std::vector<Points> descent_path(const SaddleRecord& r, std::vector<double>& energies, int& saddle_image) {
+  std::vector<Points> path;
+  energies.clear();
+  const SaddleMinimum& a = r.minima[0];
+  for (size_t k = a.images.size(); k-- > 0;) {
+    path.push_back(a.images[k]);
+    energies.push_back(a.energies[k]);
+  }
+  saddle_image = static_cast<int>(path.size()) - 1;
+  const SaddleMinimum& b = r.minima[1];
+  for (size_t k = 1; k < b.images.size(); ++k) {
+    path.push_back(b.images[k]);
+    energies.push_back(b.energies[k]);
+  }
+  return path;
+}
+
 TransitionSaddle make_saddle(const SaddleRecord& r, int from, int to) {
   TransitionSaddle s;
   s.energy = r.energy;
@@ -48,7 +67,7 @@ TransitionSaddle make_saddle(const SaddleRecord& r, int from, int to) {
   s.energy_from = r.minima[0].energy;
   s.energy_to = r.minima[1].energy;
   s.positions = r.saddle;
-  s.path = saddle_path(r, s.path_energies, s.saddle_image);
+  s.path = descent_path(r, s.path_energies, s.saddle_image);
   return s;
 }
 
@@ -64,6 +83,18 @@ void add_edge(TransitionGraph& g, TransitionSaddle s) {
   g.edges.push_back(e);
 }
 
+/// The state of a minimum reached by a descent: the most similar at
+/// `threshold`, or a new state appended.
+int state_of(TransitionGraph& g, const SaddleMinimum& m, const CurveSimilarity& similarity, double threshold) {
+  const int k = match_state(g.states, m.positions, similarity, threshold);
+  if (k >= 0) return k;
+  TransitionState s;
+  s.energy = m.energy;
+  s.positions = m.positions;
+  g.states.push_back(s);
+  return static_cast<int>(g.states.size()) - 1;
+}
+
 }  // namespace
 
 void add_searches(TransitionGraph& g, StateSearches searches, const CurveSimilarity& similarity, double threshold) {
@@ -71,23 +102,15 @@ void add_searches(TransitionGraph& g, StateSearches searches, const CurveSimilar
           "add_searches: the searched state is not in the graph");
   for (const SaddleRecord& r : searches.records) {
     if (!r.verified || r.duplicate_of >= 0 || known_saddle(g, r, similarity) >= 0) continue;
-    const SaddleMinimum& far = r.minima[1];
-    int to = match_state(g.states, far.positions, similarity, threshold);
-    if (to < 0) {
-      TransitionState s;
-      s.energy = far.energy;
-      s.positions = far.positions;
-      g.states.push_back(s);
-      to = static_cast<int>(g.states.size()) - 1;
-    }
-    add_edge(g, make_saddle(r, searches.state, to));
+    add_edge(g, make_saddle(r, searches.state, state_of(g, r.minima[1], similarity, threshold)));
   }
   for (SaddleRecord& r : searches.records)
     for (SaddleMinimum& m : r.minima) m.images.clear();  // kept once, in the saddles' paths
   g.searches.push_back(std::move(searches));
 }
 
-void add_pair(TransitionGraph& g, int a, int b, const TransitionSearch& t, const CurveSimilarity& similarity) {
+void add_pair(TransitionGraph& g, int a, int b, const TransitionSearch& t, const CurveSimilarity& similarity,
+              double threshold) {
   const int n = static_cast<int>(g.states.size());
   require(a >= 0 && a < n && b >= 0 && b < n && a != b, "add_pair: the states must be two states of the graph");
   PairSearch p;
@@ -110,6 +133,13 @@ void add_pair(TransitionGraph& g, int a, int b, const TransitionSearch& t, const
       p.saddle = static_cast<int>(g.saddles.size());
       add_edge(g, std::move(s));
     }
+  }
+  for (const SaddleRecord& r : t.other_saddles) {
+    if (known_saddle(g, r, similarity) >= 0) continue;
+    const int from = state_of(g, r.minima[0], similarity, threshold);
+    TransitionSaddle s = make_saddle(r, from, state_of(g, r.minima[1], similarity, threshold));
+    s.double_ended = true;
+    add_edge(g, std::move(s));
   }
   g.pairs.push_back(p);
 }

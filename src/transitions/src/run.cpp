@@ -87,7 +87,7 @@ StateSearches searches_of(const KnotSaddleOptions& o, int k, const Points& x, co
 
 /// The double-ended search between states a and b, refused ones as a status.
 void pair_search(TransitionGraph& g, int a, int b, const VecX& rest, const TransitionSearchOptions& o,
-                 const CurveSimilarity& sim) {
+                 const CurveSimilarity& sim, double threshold) {
   TransitionSearch t;
   try {
     t = transition_search(g.states[static_cast<size_t>(a)].positions, g.states[static_cast<size_t>(b)].positions,
@@ -96,7 +96,7 @@ void pair_search(TransitionGraph& g, int a, int b, const VecX& rest, const Trans
     t = TransitionSearch{};
     t.status = std::string("refused: ") + e.what();
   }
-  add_pair(g, a, b, t, sim);
+  add_pair(g, a, b, t, sim, threshold);
 }
 
 }  // namespace
@@ -135,7 +135,7 @@ TransitionGraph knot_transitions(const KnotEntry& entry, const DatasetMetadata& 
   for (size_t k = 0; k < pairs.size(); ++k) {
     if (o.progress) o.progress("pair " + std::to_string(k + 1) + "/" + std::to_string(pairs.size()));
     const VecX rest = VecX::Constant(g.states[pairs[k].first].positions.rows(), rest_length);
-    pair_search(g, pairs[k].first, pairs[k].second, rest, o.pair, sim);
+    pair_search(g, pairs[k].first, pairs[k].second, rest, o.pair, sim, 1.0 - o.cut);
   }
   return g;
 }

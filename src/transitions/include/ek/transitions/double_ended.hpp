@@ -37,11 +37,15 @@
 ///  3. Saddle. Seeds, in order: (a) a point on the boundary of A's basin
 ///     along the chain: a binary search over the chain's iterates (every
 ///     accepted iterate, before thinning) for consecutive ones x_j, x_{j+1}
-///     of which Newton's method on E takes the first to A and the second not,
-///     then `bisections` halvings of the straight step between them (a step
-///     the CCD cleared); the saddle between A and B is the lowest point of
-///     that boundary, and its unstable mode crosses it, so the search starts
-///     there along x_{j+1} − x_j; (b) the chain's highest interior local
+///     of which Newton's method on E takes the first into A's state and the
+///     second not, then `bisections` halvings of the straight step between
+///     them (a step the CCD cleared), then edge tracking (`tracking_rounds`
+///     rounds: both points move by `tracking_steps` Newton iterations, each
+///     staying in its basin, and the pair, checked again and its straight
+///     step cleared by the CCD, is bisected `tracking_bisections` times):
+///     the pair slides along the boundary towards the saddle on it, which
+///     has one descent into A's state and one out of it; the search starts
+///     from the inside point along the step to the outside one; (b) the chain's highest interior local
 ///     maxima of E along its tangent x_{i+1} − x_{i−1}; `seeds` in all. From
 ///     each, search_saddle() (ek/solver/saddle.hpp) follows the mode
 ///     closest to the given direction; a
@@ -102,6 +106,9 @@ struct TransitionSearchOptions {
   /// a seed is no equilibrium, and the searches from it take longer than from a state)
   int search_iterations = 1500;
   int bisections = 30;              ///< [1] halvings of the chain step that crosses A's basin boundary (0: no boundary seed)
+  int tracking_rounds = 6;          ///< [1] edge-tracking rounds along the boundary (0: none)
+  int tracking_steps = 2;           ///< [1] Newton iterations of both points per round
+  int tracking_bisections = 12;     ///< [1] halvings per round
   void validate() const;            ///< InputError for impossible values
 };
 
@@ -126,6 +133,11 @@ struct TransitionSearch {
   double path_barrier = 0.0;         ///< [energy] highest chain iterate's E − E_A (when reached; else 0)
   int seeds_tried = 0;               ///< [1] saddle searches run
   std::vector<std::string> seed_statuses;  ///< each seed's search status, in order
+  /// The seeds' saddles that passed checks 1-3 and 5 of saddles.hpp (index
+  /// one, gradient, two converged-stable descents, topology kept) but whose
+  /// descents do not end in A's and B's states ("other-minima"): saddles
+  /// between the minima they reached, with their descents.
+  std::vector<SaddleRecord> other_saddles;
   /// The last seed's search: minima[0] the descent that ended nearer A (by
   /// similarity; in A's state when verified), minima[1] the other; their
   /// start_similarity is to A. Barriers: energy − minima[k].energy.

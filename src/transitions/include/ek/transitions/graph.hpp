@@ -101,9 +101,13 @@ int match_state(const std::vector<TransitionState>& states, const Points& x, con
 /// side is matched to a state at `threshold` or appended as a new state.
 void add_searches(TransitionGraph& graph, StateSearches searches, const CurveSimilarity& similarity, double threshold);
 
-/// Adds one double-ended search between states a and b: its summary, and
-/// when verified (and not already in the graph) its saddle and the edge a–b.
-void add_pair(TransitionGraph& graph, int a, int b, const TransitionSearch& search, const CurveSimilarity& similarity);
+/// Adds one double-ended search between states a and b: its summary, when
+/// verified (and not already in the graph) its saddle and the edge a–b, and
+/// its other saddles (TransitionSearch::other_saddles: each minimum matched
+/// to a state at `threshold` or appended as a new one) as edges between the
+/// states their descents reached.
+void add_pair(TransitionGraph& graph, int a, int b, const TransitionSearch& search, const CurveSimilarity& similarity,
+              double threshold);
 
 /// The path from state a to state b whose highest saddle is lowest (edges
 /// in order; empty when a == b); nullopt when no chain of edges joins them.
