@@ -94,6 +94,49 @@ TEST(TransitionGraph, ChainProfileJoinsThePathsInTheDirectionTravelled) {
   EXPECT_THROW(chain_profile(g, 4, {0}, images, energies, saddles), std::invalid_argument);
 }
 
+// A double-ended search adds its summary, and its other saddles as edges
+// between the states their minima match (a minimum matching none: a new
+// state); a saddle already in the graph is not added twice.
+TEST(TransitionGraph, PairAddsItsOtherSaddlesBetweenMatchedStates) {
+  TransitionGraph g = example();
+  const CurveSimilarity same = [](const Points& x, const Points& y) { return x.isApprox(y) ? 1.0 : 0.0; };
+  TransitionSearch t;
+  t.status = "other-minima";
+  t.reached = true;
+  t.seed_statuses = {"other-minima"};
+  SaddleRecord r;
+  r.status = "other-minima";
+  r.energy = 7.0;
+  r.index = 1;
+  r.saddle = curve(20);
+  r.minima[0].positions = curve(1);  // state 1
+  r.minima[0].energy = 1.1;
+  r.minima[0].images = {curve(20), curve(1)};
+  r.minima[0].energies = {7.0, 1.1};
+  r.minima[1].positions = curve(30);  // no state: a new one
+  r.minima[1].energy = 2.0;
+  r.minima[1].images = {curve(20), curve(30)};
+  r.minima[1].energies = {7.0, 2.0};
+  t.other_saddles = {r};
+  const size_t states = g.states.size(), edges = g.edges.size();
+  add_pair(g, 0, 3, t, same, 0.95);
+  ASSERT_EQ(g.pairs.size(), 3u);
+  EXPECT_EQ(g.pairs.back().seed_statuses, "other-minima");
+  EXPECT_EQ(g.pairs.back().saddle, -1);
+  ASSERT_EQ(g.states.size(), states + 1);
+  ASSERT_EQ(g.edges.size(), edges + 1);
+  const TransitionEdge& e = g.edges.back();
+  EXPECT_EQ(e.from, 1);
+  EXPECT_EQ(e.to, static_cast<int>(states));
+  EXPECT_EQ(e.barrier_forward, 7.0 - 1.1);
+  EXPECT_EQ(e.barrier_backward, 7.0 - 2.0);
+  EXPECT_TRUE(g.saddles.back().double_ended);
+  EXPECT_EQ(g.saddles.back().path.size(), 3u);
+  EXPECT_EQ(g.saddles.back().saddle_image, 1);
+  add_pair(g, 0, 3, t, same, 0.95);  // the same saddle again
+  EXPECT_EQ(g.edges.size(), edges + 1);
+}
+
 // Double-ended pairs: the nearest states in energy rank, bounded.
 TEST(TransitionGraph, PairsAreNeighboursInEnergyRank) {
   TransitionRunOptions o;
