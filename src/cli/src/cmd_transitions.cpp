@@ -41,8 +41,8 @@ bool parse_transitions(int argc, char** argv, TransitionsCommand& c) {
   args.option("--pair-gap", &r.pair_gap,
               "double-ended searches between states whose energy ranks differ by at most G (default 1; 0: none)");
   args.option("--max-pairs", &r.max_pairs, "double-ended searches at most (default 8)");
-  args.option("--stages", &r.pair.max_stages, "steering stages of a double-ended search (default 40)");
-  args.option("--max-iter", &r.saddles.search.max_iterations, "iterations per saddle search (default 400)");
+  args.option("--stages", &r.pair.max_stages, "steering stages of a double-ended search (default 60)");
+  args.option("--max-iter", &r.saddles.search.max_iterations, "iterations per single-ended saddle search (default 400)");
   args.option("--images", &r.saddles.max_images, "images kept per descent (default 24)");
   args.flag("--quiet", &c.quiet, "no progress lines");
   args.flag("--json", &c.json, "print one JSON object");

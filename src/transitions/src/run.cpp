@@ -50,7 +50,9 @@ std::string transition_run_key(const std::string& knot, const TransitionRunOptio
     << " max_iter=" << o.search.max_iterations << " trust=" << o.search.trust_radius << " images=" << o.max_images
     << " displacement=" << o.displacement << " rise=" << o.max_rise_factor << " pair_gap=" << r.pair_gap
     << " max_pairs=" << r.max_pairs << " k0=" << p.initial_stiffness << " growth=" << p.growth
-    << " stages=" << p.max_stages << " seeds=" << p.seeds << " reach=" << p.reach << " E=" << o.relax.material.young
+    << " stages=" << p.max_stages << " seeds=" << p.seeds << " reach=" << p.reach
+    << " search_iter=" << p.search_iterations << " bisections=" << p.bisections << " tracking=" << p.tracking_rounds
+    << "x" << p.tracking_steps << "/" << p.tracking_bisections << " E=" << o.relax.material.young
     << " nu=" << o.relax.material.poisson << " r=" << o.relax.material.radius << " tol=" << o.relax.tolerance
     << " omega=" << o.relax.contact_stiffness << " dhat=" << o.relax.dhat << " rest=" << rest;
   return s.str();

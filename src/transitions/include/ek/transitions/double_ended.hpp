@@ -25,15 +25,16 @@
 ///     result. The stage minimisers x*(k_j) follow the minimum of F from A
 ///     until it disappears (a fold: the pull has carried it over the
 ///     barrier) and Newton's method falls into B's side; the highest images
-///     lie near that fold. Every Newton step is cut by the CCD (Objective::max_step), so
-///     no step lets two edges pass through each other and the knot type is
-///     kept: a B that can only be reached by a strand passage (a crossing
-///     change) is never reached. Once an image has similarity >= `reach`
-///     to B, Newton's method on E alone from it (the release) must end
-///     converged-stable in B's state (below); else steering goes on. The chain
-///     is every accepted iterate from A to B (the stages, then the release),
-///     thinned evenly by length to `max_images`; the Alexander polynomial of
-///     every stored image must be A's.
+///     lie near that fold. Every Newton step is cut by the CCD
+///     (Objective::max_step), so no step lets two edges pass through each
+///     other and the knot type is kept: a B that can only be reached by a
+///     strand passage (a crossing change) is never reached. Once an image
+///     has similarity >= `reach` to B, Newton's method on E alone from it
+///     (the release) must end converged-stable in B's state (below); else
+///     steering goes on. The chain is every accepted iterate from A to B
+///     (the stages, then the release), thinned evenly by length to
+///     `max_images`; the Alexander polynomial of every stored image must be
+///     A's.
 ///  3. Saddle. Seeds, in order: (a) a point on the boundary of A's basin
 ///     along the chain: a binary search over the chain's iterates (every
 ///     accepted iterate, before thinning) for consecutive ones x_j, x_{j+1}
@@ -45,16 +46,16 @@
 ///     step cleared by the CCD, is bisected `tracking_bisections` times):
 ///     the pair slides along the boundary towards the saddle on it, which
 ///     has one descent into A's state and one out of it; the search starts
-///     from the inside point along the step to the outside one; (b) the chain's highest interior local
-///     maxima of E along its tangent x_{i+1} − x_{i−1}; `seeds` in all. From
-///     each, search_saddle() (ek/solver/saddle.hpp) follows the mode
-///     closest to the given direction; a
-///     converged search gets saddles.hpp's checks 1-4 (gradient, exactly one
-///     negative and no near-zero eigenvalue, two converged-stable descents
-///     from x_s ± δ·v₁ with the topology kept), and counts only when one
-///     descent ends in A's state and the other in B's: then the barriers
-///     are E_s minus the energies of the two minima reached. The first
-///     verified seed ends the search.
+///     from the inside point along the step to the outside one; (b) the
+///     chain's highest interior local maxima of E, along its tangent
+///     x_{i+1} − x_{i−1}; `seeds` in all. From each, search_saddle()
+///     (ek/solver/saddle.hpp) follows the mode closest to the given
+///     direction; a converged search gets saddles.hpp's checks 1-3 and 5
+///     (gradient, exactly one negative and no near-zero eigenvalue, two
+///     converged-stable descents from x_s ± δ·v₁, the topology kept), and
+///     counts only when one descent ends in A's state and the other in B's:
+///     then the barriers are E_s minus the energies of the two minima
+///     reached. The first verified seed ends the search.
 /// States. A minimum is in A's state when its similarity to A is >= `reach`
 /// and its similarity to B is not (and vice versa): the landscape around a
 /// state holds many nearby minima of slightly different energy (the
@@ -67,13 +68,15 @@
 /// Statuses (never a false saddle): "verified"; "same-state" (A and B are one
 /// curve: energies within `energy_tolerance` relative and the aligned RMS
 /// vertex distance at most `same_distance`; a mirror image, which the
-/// similarity cannot tell apart, is not the same curve); "different-knot" (Alexander polynomials differ: no path without a
-/// strand passage); "not-reached" (the stages ran out before the release
+/// similarity cannot tell apart, is not the same curve); "different-knot"
+/// (Alexander polynomials differ: no path without a strand passage);
+/// "not-reached" (the stages ran out before the release
 /// reached B); "topology-changed" (an image's Alexander polynomial differs:
 /// the CCD makes this a defect, never expected); else the last seed's status
 /// (the search's: "max-iterations", "stalled", "left-basin", "degenerate";
 /// the checks': "degenerate-hessian", "index-K", "descent-failed"; and
-/// "other-minima" when the descents do not end at A and B); "no-seed" when
+/// "other-minima" when the descents do not end in A's and B's states:
+/// TransitionSearch::other_saddles keeps those); "no-seed" when
 /// the chain has no interior local maximum of E.
 /// The chain's highest energy, E_max − E_A, bounds the barrier of the best
 /// path between A and B from above even when no saddle verifies.
