@@ -43,7 +43,7 @@ for r in pairs:
     ax.annotate(r["status"], ((i + j) / 2, (y[i] + y[j]) / 2), fontsize=5, color="0.3", ha="center")
     if r["reached"] == "true":  # the steered chain's highest image: an upper bound on the barrier
         ax.plot([(i + j) / 2], [y[i] + float(r["path_barrier_scaled"])], "s", mfc="none", color="0.4", ms=5)
-ax.set_xlabel("state (by energy)")
+ax.set_xlabel("state (clusters by energy, then minima matching no cluster)")
 ax.set_ylabel("(E - E_lowest) / (EI/L)")
 ax.set_title(f"4_1: {s['edges']} edges ({s['inter_state_edges']} between states), "
              f"double-ended {s['pairs_verified']}/{s['pairs_reached']}/{s['pairs']} verified/reached/run",
