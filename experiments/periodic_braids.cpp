@@ -42,9 +42,9 @@
 // The links are Lk_0 + t, Lk_0 the flat coil's twist-free link (its writhe,
 // rounded: the braid's exponent sum, 0 for (σ1σ2⁻¹)^p and p for
 // (σ1σ2⁻¹σ3)^p), t the twist added:
-//   ci:      t = -8, 0, 8 [turns], no bisection, 1 state symmetrized
-//   default: t = -12, -11, ..., 12, 3 bisection steps per onset, 3 symmetrized
-//   paper:   t = -14, -13.5, ..., 14, 4 bisection steps, 5 symmetrized
+//   ci:      t = -8, 0, 1, 8 [turns], no bisection, 1 + 1 candidates symmetrized
+//   default: t = -12, -11, ..., 12, 3 bisection steps per onset, 3 + 3 candidates
+//   paper:   t = -14, -13.5, ..., 14, 4 bisection steps, 5 + 5 candidates
 // Braids of the two families whose closure has more than one component
 // ((σ1σ2⁻¹)^p for p divisible by 3: p = 3 is the Borromean rings) are
 // skipped and listed in "skipped".
@@ -112,8 +112,12 @@ struct ScanScale {
 
 ScanScale scan_scale(const Args& a) {
   ScanScale sc;
-  const double step = by_scale(a, 8.0, 1.0, 0.5), top = by_scale(a, 8.0, 12.0, 14.0);
-  for (double t = -top; t <= top + 1e-9; t += step) sc.offsets.push_back(t);
+  if (a.scale == Scale::CI) {
+    sc.offsets = {-8.0, 0.0, 1.0, 8.0};  // t = 1: 9_40's coil is flat and stable at t = 0 and deploys at 1
+  } else {
+    const double step = by_scale(a, 1.0, 1.0, 0.5), top = by_scale(a, 12.0, 12.0, 14.0);
+    for (double t = -top; t <= top + 1e-9; t += step) sc.offsets.push_back(t);
+  }
   sc.refinements = by_scale(a, 0, 3, 4);
   sc.symmetrized = by_scale(a, 1, 3, 5);
   return sc;
