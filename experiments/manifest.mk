@@ -34,20 +34,20 @@ figures/out/fig_saddles.png: figures/fig_saddles.py $(RESULTS)/saddles/summary.j
 figures/out/fig_transitions.png: figures/fig_transitions.py $(RESULTS)/transitions/summary.json
 
 # run time per scale [min] on 2 cores (make help-experiments)
-MINUTES_dataset := ci:4 default:34 paper:4320
-MINUTES_milnor := ci:1 default:1 paper:5
-MINUTES_planarity := ci:1 default:1 paper:5
-MINUTES_multistability := ci:2 default:5 paper:20
-MINUTES_adaptive := ci:7 default:26 paper:18600
-MINUTES_periodic_braids := ci:7 default:75 paper:240
-MINUTES_jumping_knots := ci:1 default:25 paper:450
-MINUTES_puzzles := ci:1 default:1 paper:1
-MINUTES_hausdorff := ci:1 default:6 paper:40
-MINUTES_filters := ci:1 default:1 paper:5
-MINUTES_cross_topology := ci:1 default:1 paper:30
-MINUTES_generalization := ci:1 default:2 paper:10
-MINUTES_saddles := ci:1 default:5 paper:60
-MINUTES_transitions := ci:2 default:15 paper:120
+MINUTES_dataset := ci:4 default:34 paper:4320 paper10:180
+MINUTES_milnor := ci:1 default:1 paper:5 paper10:2
+MINUTES_planarity := ci:1 default:1 paper:5 paper10:2
+MINUTES_multistability := ci:2 default:5 paper:20 paper10:5
+MINUTES_adaptive := ci:7 default:26 paper:18600 paper10:26
+MINUTES_periodic_braids := ci:7 default:75 paper:240 paper10:75
+MINUTES_jumping_knots := ci:1 default:25 paper:450 paper10:25
+MINUTES_puzzles := ci:1 default:1 paper:1 paper10:1
+MINUTES_hausdorff := ci:1 default:6 paper:40 paper10:6
+MINUTES_filters := ci:1 default:1 paper:5 paper10:2
+MINUTES_cross_topology := ci:1 default:1 paper:30 paper10:5
+MINUTES_generalization := ci:1 default:2 paper:10 paper10:3
+MINUTES_saddles := ci:1 default:5 paper:60 paper10:5
+MINUTES_transitions := ci:2 default:15 paper:120 paper10:15
 MINUTES_time_vs_error := ci:2 default:15
 MINUTES_bench_solver := default:30
 MINUTES_compare_methods := ci:8 default:60
