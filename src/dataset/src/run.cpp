@@ -239,8 +239,10 @@ DatasetRunSummary run_dataset(const DatasetRunOptions& o) {
     readers.clear();
     w.commit();
   }
-  for (const auto& part : parts) std::remove(part.c_str());
-  fs::remove(work, ec);  // only when empty (other shards may share nothing here)
+  // Every knot of this run is in the output now: nothing in the work folder
+  // is needed any more, whatever an earlier killed run left there (a part, a
+  // journal or a temporary whose writer's PID the system has reused).
+  fs::remove_all(work, ec);
   summary.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
   return summary;
 }
