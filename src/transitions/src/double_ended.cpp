@@ -215,21 +215,10 @@ SaddleRecord seed_search(const Points& seed, const VecX& tangent, const SaddleSt
   const auto t0 = Clock::now();
   const RelaxOptions model = detail::direct(o.saddle);
   KnotSystem sys(seed, rest, model);
-  Objective& f = sys.objective();
   SaddleSearchOptions so = o.saddle.search;
-  so.gradient_tolerance = sys.tolerance();
-  so.base_shift = sys.newton().shift_epsilon * sys.lambda_min();
-  so.max_energy_rise = o.saddle.max_rise_factor * std::abs(a.energy);
   so.max_iterations = o.search_iterations;
-  const SaddleSearchResult s = search_saddle(f, tangent, so);
   SaddleRecord r;
-  r.status = to_string(s.status);
-  r.energy = s.energy;
-  r.gradient_norm = s.gradient_norm;
-  r.negative_eigenvalue = s.eigenvalue;
-  r.iterations = s.iterations;
-  r.rejected = s.rejected;
-  r.saddle = sys.positions(s.x);
+  const SaddleSearchResult s = detail::search_into(sys, tangent, so, o.saddle.max_rise_factor * std::abs(a.energy), r);
   if (s.status == SaddleStatus::Converged) {
     const std::string failed = detail::descend_saddle(a.alexander, rest, o.saddle, sys, s.x, r);
     bool at_a[2] = {false, false}, at_b[2] = {false, false};

@@ -24,4 +24,11 @@ AlexanderPolynomial alexander_or_zero(const Points& x);
 std::string descend_saddle(const AlexanderPolynomial& alexander, const VecX& rest, const KnotSaddleOptions& o,
                            KnotSystem& sys, const VecX& xs, SaddleRecord& r);
 
+/// One search_saddle() from the dofs of `sys` along `direction` with the
+/// tolerances of `sys` (gradient tolerance, base shift) and the energy rise
+/// bound `max_rise` set into `search`; fills r's status, energy, gradient
+/// norm, negative eigenvalue, iterations, rejected steps and saddle positions.
+SaddleSearchResult search_into(KnotSystem& sys, const VecX& direction, SaddleSearchOptions search, double max_rise,
+                               SaddleRecord& r);
+
 }  // namespace ek::detail

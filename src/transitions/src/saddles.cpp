@@ -132,6 +132,22 @@ std::string descend_saddle(const AlexanderPolynomial& alexander, const VecX& res
   return "";
 }
 
+SaddleSearchResult search_into(KnotSystem& sys, const VecX& direction, SaddleSearchOptions search, double max_rise,
+                               SaddleRecord& r) {
+  search.gradient_tolerance = sys.tolerance();
+  search.base_shift = sys.newton().shift_epsilon * sys.lambda_min();
+  search.max_energy_rise = max_rise;
+  const SaddleSearchResult s = search_saddle(sys.objective(), direction, search);
+  r.status = to_string(s.status);
+  r.energy = s.energy;
+  r.gradient_norm = s.gradient_norm;
+  r.negative_eigenvalue = s.eigenvalue;
+  r.iterations = s.iterations;
+  r.rejected = s.rejected;
+  r.saddle = sys.positions(s.x);
+  return s;
+}
+
 }  // namespace detail
 
 namespace {
@@ -164,20 +180,8 @@ SaddleRecord search_one(const SaddleStart& start, const VecX& rest, const KnotSa
                         const VecX& direction, const CurveSimilarity& similarity) {
   const auto t0 = Clock::now();
   KnotSystem sys(start.positions, rest, direct(o));
-  Objective& f = sys.objective();
-  SaddleSearchOptions so = o.search;
-  so.gradient_tolerance = sys.tolerance();
-  so.base_shift = sys.newton().shift_epsilon * sys.lambda_min();
-  so.max_energy_rise = o.max_rise_factor * start.energy;
-  const SaddleSearchResult s = search_saddle(f, direction, so);
   SaddleRecord r;
-  r.status = to_string(s.status);
-  r.energy = s.energy;
-  r.gradient_norm = s.gradient_norm;
-  r.negative_eigenvalue = s.eigenvalue;
-  r.iterations = s.iterations;
-  r.rejected = s.rejected;
-  r.saddle = sys.positions(s.x);
+  const SaddleSearchResult s = detail::search_into(sys, direction, o.search, o.max_rise_factor * start.energy, r);
   if (s.status == SaddleStatus::Converged) check_saddle(start, rest, o, sys, s.x, similarity, r);
   r.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
   return r;
