@@ -30,7 +30,7 @@ TransitionRunOptions run_options(const Args& a) {
   r.max_states = by_scale(a, 3, 6, 0);
   r.pair_gap = by_scale(a, 1, 2, 2);
   r.max_pairs = by_scale(a, 2, 9, 40);
-  r.progress = [](const std::string& what) { std::cout << "  " << what << std::endl; };
+  r.progress = [](const std::string& what, int, int) { std::cout << "  " << what << std::endl; };
   return r;
 }
 

@@ -150,11 +150,59 @@ TEST(TransitionGraph, PairsAreNeighboursInEnergyRank) {
 }
 
 TEST(TransitionsFile, RoundTripAndBadInput) {
-  const TransitionGraph g = example();
+  TransitionGraph g = example();
+  StateSearches refused;  // a start that was not stable: one "start-refused" row
+  refused.state = 2;
+  refused.error = "not a stable equilibrium";
+  refused.seconds = 0.25;
+  StateSearches searched;
+  searched.state = 0;
+  for (int k = 0; k < 2; ++k) {
+    SaddleRecord r;
+    r.mode = k;
+    r.direction = k == 0 ? 1 : -1;
+    r.status = k == 0 ? "verified" : "left-basin";
+    r.verified = k == 0;
+    r.index = k == 0 ? 1 : -1;
+    r.iterations = 10 + k;
+    r.energy = 2.5 + k;
+    r.gradient_norm = 1e-9;
+    r.seconds = 0.5;
+    searched.records.push_back(r);
+  }
+  g.searches = {searched, refused};
   const std::string path = std::filesystem::temp_directory_path() / "ek_test_transitions.h5";
+  write_transitions(path, g, "dataset.h5", "options", false, 3);
+  TransitionsFileInfo info;
+  const TransitionGraph r = read_transitions(path, info);
+  EXPECT_EQ(info.options, "options");
+  EXPECT_EQ(info.dataset, "dataset.h5");
+  EXPECT_FALSE(info.complete);
+  EXPECT_EQ(info.states_searched, 3);
+  ASSERT_EQ(r.searches.size(), 2u);
+  EXPECT_EQ(r.searches[0].state, 0);
+  ASSERT_EQ(r.searches[0].records.size(), 2u);
+  for (int k = 0; k < 2; ++k) {
+    const SaddleRecord &a = r.searches[0].records[k], &b = searched.records[k];
+    EXPECT_EQ(a.mode, b.mode);
+    EXPECT_EQ(a.direction, b.direction);
+    EXPECT_EQ(a.status, b.status);
+    EXPECT_EQ(a.verified, b.verified);
+    EXPECT_EQ(a.index, b.index);
+    EXPECT_EQ(a.iterations, b.iterations);
+    EXPECT_EQ(a.energy, b.energy);
+    EXPECT_EQ(a.gradient_norm, b.gradient_norm);
+  }
+  EXPECT_EQ(r.searches[0].energy, g.states[0].energy);
+  EXPECT_EQ(r.searches[1].state, 2);
+  EXPECT_EQ(r.searches[1].error, "not a stable equilibrium");
+  EXPECT_TRUE(r.searches[1].records.empty());
   write_transitions(path, g, "dataset.h5", "options", true);
   std::string options;
-  const TransitionGraph r = read_transitions(path, &options);
+  EXPECT_EQ(read_transitions(path, info).searches.size(), 2u);
+  EXPECT_TRUE(info.complete);
+  EXPECT_EQ(info.states_searched, -1);  // not recorded
+  read_transitions(path, &options);
   EXPECT_EQ(options, "options");
   EXPECT_EQ(r.knot, "test");
   ASSERT_EQ(r.states.size(), g.states.size());

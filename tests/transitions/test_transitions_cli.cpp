@@ -3,14 +3,21 @@
 // an existing output kept without --overwrite, the double-ended search
 // joining two relaxed samples of 4_1 (its folder agreeing with the JSON),
 // and the graph of a small data set with a path through it or the statement
-// that none joins the states.
+// that none joins the states; a killed `knots transitions` resumes from its
+// checkpoint to the uninterrupted run's graph.
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <string>
+#include <thread>
 
 #include "cli_runner.hpp"
+#include "ek/transitions/transitions_file.hpp"
 
 using ek::clitest::run;
 using ek::clitest::temp_dir;
@@ -116,4 +123,95 @@ TEST(TransitionsCli, GraphAndPathOfASmallDataSet) {
   }
   EXPECT_EQ(run("path " + tr + " 3_1 0 1 -o " + dir + "/q.obj").status, 2);   // another knot
   EXPECT_EQ(run("path " + tr + " 4_1 0 999 -o " + dir + "/q.obj").status, 2);  // no such state
+}
+
+namespace {
+
+/// Starts `knots ARGS`, kills it (SIGKILL) once `file` exists; false when the
+/// run ended first.
+bool kill_when_written(const std::string& args, const std::string& file) {
+  const pid_t pid = fork();
+  if (pid < 0) return false;
+  if (pid == 0) {
+    execl("/bin/sh", "sh", "-c", ("exec " + std::string(EK_KNOTS_BIN) + " " + args + " >/dev/null 2>&1").c_str(),
+          static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  bool killed = false;
+  int status = 0;
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(600);
+  while (!killed && std::chrono::steady_clock::now() < deadline && waitpid(pid, &status, WNOHANG) == 0) {
+    if (fs::exists(file)) killed = kill(pid, SIGKILL) == 0;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
+  if (!killed) kill(pid, SIGKILL);
+  waitpid(pid, &status, 0);
+  return killed;
+}
+
+/// Equal graphs up to the timings.
+void expect_same_graph(const ek::TransitionGraph& a, const ek::TransitionGraph& b) {
+  ASSERT_EQ(a.states.size(), b.states.size());
+  for (size_t k = 0; k < a.states.size(); ++k) {
+    EXPECT_EQ(a.states[k].energy, b.states[k].energy) << "state " << k;
+    EXPECT_EQ(a.states[k].positions, b.states[k].positions) << "state " << k;
+  }
+  ASSERT_EQ(a.saddles.size(), b.saddles.size());
+  for (size_t k = 0; k < a.saddles.size(); ++k) {
+    EXPECT_EQ(a.saddles[k].energy, b.saddles[k].energy) << "saddle " << k;
+    EXPECT_EQ(a.saddles[k].positions, b.saddles[k].positions) << "saddle " << k;
+    EXPECT_EQ(a.saddles[k].path.size(), b.saddles[k].path.size()) << "saddle " << k;
+  }
+  ASSERT_EQ(a.edges.size(), b.edges.size());
+  for (size_t k = 0; k < a.edges.size(); ++k) {
+    EXPECT_EQ(a.edges[k].from, b.edges[k].from);
+    EXPECT_EQ(a.edges[k].to, b.edges[k].to);
+    EXPECT_EQ(a.edges[k].barrier_forward, b.edges[k].barrier_forward);
+  }
+  ASSERT_EQ(a.pairs.size(), b.pairs.size());
+  for (size_t k = 0; k < a.pairs.size(); ++k) {
+    EXPECT_EQ(a.pairs[k].status, b.pairs[k].status);
+    EXPECT_EQ(a.pairs[k].path_barrier, b.pairs[k].path_barrier);
+  }
+  ASSERT_EQ(a.searches.size(), b.searches.size());
+  for (size_t k = 0; k < a.searches.size(); ++k) {
+    ASSERT_EQ(a.searches[k].records.size(), b.searches[k].records.size());
+    for (size_t j = 0; j < a.searches[k].records.size(); ++j)
+      EXPECT_EQ(a.searches[k].records[j].status, b.searches[k].records[j].status);
+  }
+}
+
+}  // namespace
+
+// Killed after its first unit of work (the checkpoint exists), the command
+// run again resumes: its progress starts past the finished units, and the
+// graph it writes equals an uninterrupted run's (energies and positions bit
+// for bit). A checkpoint of other options is refused, one line, exit 2.
+TEST(TransitionsCli, KilledRunResumesFromItsCheckpoint) {
+  const std::string dir = temp_dir("transitions_resume");
+  const std::string ds = dir + "/ds.h5";
+  auto r = run("explore 4_1 --samples 8 -n 120 -o " + ds + " --jobs 2");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const std::string args = "transitions " + ds + " 4_1 --modes 1 --states 3 --max-pairs 2 --stages 20 -o ";
+  const auto full = run(args + dir + "/full.h5 --quiet");
+  ASSERT_EQ(full.status, 0) << full.err;
+  EXPECT_FALSE(fs::exists(dir + "/full.h5.work"));
+  const std::string out = dir + "/killed.h5", checkpoint = out + ".work/checkpoint.h5";
+  ASSERT_TRUE(kill_when_written(args + out, checkpoint)) << "the run ended before its first checkpoint";
+  EXPECT_FALSE(fs::exists(out));
+  const auto other = run("transitions " + ds + " 4_1 --modes 2 --states 3 -o " + out);
+  EXPECT_EQ(other.status, 2);
+  EXPECT_NE(other.err.find("checkpoint of a run with other options"), std::string::npos) << other.err;
+  EXPECT_EQ(std::count(other.err.begin(), other.err.end(), '\n'), 1) << other.err;
+  EXPECT_TRUE(fs::exists(checkpoint));  // the refused run kept it
+  const auto resumed = run(args + out);
+  ASSERT_EQ(resumed.status, 0) << resumed.err;
+  const auto first = resumed.err.find("progress: ");
+  ASSERT_NE(first, std::string::npos) << resumed.err;
+  const auto units = resumed.err.find(" units done", first);
+  const auto slash = resumed.err.rfind('/', units), comma = resumed.err.rfind(", ", slash);
+  EXPECT_GE(std::stoi(resumed.err.substr(comma + 2, slash - comma - 2)), 1) << resumed.err;  // resumed past unit 1
+  EXPECT_FALSE(fs::exists(out + ".work"));
+  expect_same_graph(ek::read_transitions(out), ek::read_transitions(dir + "/full.h5"));
+  fs::remove_all(dir);
 }

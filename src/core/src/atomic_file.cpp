@@ -1,12 +1,14 @@
 #include "ek/core/atomic_file.hpp"
 
 #include <fcntl.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <atomic>
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 
@@ -77,6 +79,21 @@ void AtomicFile::commit() {
   }
   atomic_replace(tmp_, path_);
   committed_ = true;
+}
+
+void remove_stale_temporaries(const std::string& folder, const std::string& prefix) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(folder, ec)) {
+    const std::string name = entry.path().filename().string();
+    const auto tmp = name.rfind(".tmp.");
+    if (name.rfind(prefix, 0) != 0 || tmp == std::string::npos) continue;
+    char* end = nullptr;
+    const long pid = std::strtol(name.c_str() + tmp + 5, &end, 10);
+    if (pid <= 0 || *end != '.' || pid == ::getpid() || ::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH)
+      continue;
+    fs::remove(entry.path(), ec);
+  }
 }
 
 }  // namespace ek

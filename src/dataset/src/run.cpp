@@ -1,9 +1,7 @@
 #include "ek/dataset/run.hpp"
 
-#include <signal.h>
 #include <unistd.h>
 
-#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -84,23 +82,6 @@ class Progress {
   double last_line_ = -1e9;
 };
 
-/// Removes the temporaries "<prefix>*.tmp.<pid>.<n>" in `folder` that a
-/// killed run left behind (their process is gone): DatasetWriter removes its
-/// own, except after SIGKILL.
-void remove_stale_temporaries(const fs::path& folder, const std::string& prefix) {
-  std::error_code ec;
-  for (const auto& entry : fs::directory_iterator(folder, ec)) {
-    const std::string name = entry.path().filename().string();
-    const auto tmp = name.rfind(".tmp.");
-    if (name.rfind(prefix, 0) != 0 || tmp == std::string::npos) continue;
-    char* end = nullptr;
-    const long pid = std::strtol(name.c_str() + tmp + 5, &end, 10);
-    if (pid <= 0 || *end != '.' || pid == ::getpid() || ::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH)
-      continue;
-    fs::remove(entry.path(), ec);
-  }
-}
-
 int table_index(const std::string& name) {
   const KnotRecord* r = KnotTable::global().find(name);
   return r ? r->row : 1 << 30;
@@ -172,7 +153,7 @@ DatasetRunSummary run_dataset(const DatasetRunOptions& o) {
   if (ec) throw InputError("cannot create work folder '" + work + "': " + ec.message());
   remove_stale_temporaries(work, "");
   const fs::path output(o.output);
-  remove_stale_temporaries(output.has_parent_path() ? output.parent_path() : fs::path("."),
+  remove_stale_temporaries(output.has_parent_path() ? output.parent_path().string() : std::string("."),
                            output.filename().string() + ".tmp.");
 
   DatasetRunSummary summary;

@@ -103,16 +103,12 @@ void pair_search(TransitionGraph& g, int a, int b, const VecX& rest, const Trans
 
 }  // namespace
 
-TransitionGraph knot_transitions(const KnotEntry& entry, const DatasetMetadata& metadata,
-                                 const TransitionRunOptions& r) {
-  TransitionRunOptions o = r;
-  o.saddles.relax = dataset_model(metadata);
-  o.pair.saddle = o.saddles;
-  o.validate();
-  const double rest_length = metadata.edge_length.value_or(1.0);
+namespace {
+
+/// The graph's states before any search: the clusters' representatives.
+TransitionGraph initial_graph(const KnotEntry& entry, const TransitionRunOptions& o, double rest_length) {
   const std::vector<StateCluster> clusters = clusters_at_cut(entry, o.cut);
   require_input(!clusters.empty(), "transitions: " + entry.name + " has no stored equilibria");
-  const CurveSimilarity sim = knot_similarity(entry.name);
   TransitionGraph g;
   g.knot = entry.name;
   g.cut = o.cut;
@@ -121,23 +117,62 @@ TransitionGraph knot_transitions(const KnotEntry& entry, const DatasetMetadata& 
     const int rep = clusters[k].representative;
     g.states.push_back({static_cast<int>(k), rep, entry.attributes(rep, energy), entry.equilibria[rep]});
   }
-  const int states = static_cast<int>(g.states.size());
-  const int searched = o.max_states > 0 ? std::min(o.max_states, states) : states;
-  std::vector<StateSearches> all;
-  for (int k = 0; k < searched; ++k) {
-    if (o.progress) o.progress("state " + std::to_string(k + 1) + "/" + std::to_string(searched));
-    const VecX rest = VecX::Constant(g.states[k].positions.rows(), rest_length);
-    all.push_back(searches_of(o.saddles, k, g.states[k].positions, rest, sim));
-    if (all.back().error.empty()) g.states[k].energy = all.back().energy;
-  }
   g.energy_scale = o.saddles.relax.material.bending_stiffness() /
                    (rest_length * static_cast<double>(entry.equilibria.front().rows()));
-  for (StateSearches& s : all) add_searches(g, std::move(s), sim, 1.0 - o.cut);
+  return g;
+}
+
+/// InputError unless `r` is a checkpoint of the run that starts from `g`.
+void check_resume(const TransitionGraph& g, const TransitionResume& r, int searched,
+                  const std::vector<std::pair<int, int>>& pairs) {
+  const TransitionGraph& c = r.graph;
+  bool ok = c.knot == g.knot && c.cut == g.cut && c.states.size() >= g.states.size() && r.states_searched >= 0 &&
+            r.states_searched <= searched && c.pairs.size() <= pairs.size() &&
+            (c.pairs.empty() || r.states_searched == searched);
+  for (size_t k = 0; ok && k < g.states.size(); ++k)
+    ok = c.states[k].cluster == g.states[k].cluster && c.states[k].equilibrium == g.states[k].equilibrium &&
+         c.states[k].positions == g.states[k].positions;
+  for (size_t k = 0; ok && k < c.pairs.size(); ++k)
+    ok = c.pairs[k].a == pairs[k].first && c.pairs[k].b == pairs[k].second;
+  require_input(ok, "transitions: the checkpoint is not of this run's states of " + g.knot);
+}
+
+}  // namespace
+
+TransitionGraph knot_transitions(const KnotEntry& entry, const DatasetMetadata& metadata,
+                                 const TransitionRunOptions& r, const TransitionResume* resume) {
+  TransitionRunOptions o = r;
+  o.saddles.relax = dataset_model(metadata);
+  o.pair.saddle = o.saddles;
+  o.validate();
+  const double rest_length = metadata.edge_length.value_or(1.0);
+  const CurveSimilarity sim = knot_similarity(entry.name);
+  TransitionGraph g = initial_graph(entry, o, rest_length);
+  const int states = static_cast<int>(g.states.size());
+  const int searched = o.max_states > 0 ? std::min(o.max_states, states) : states;
   const std::vector<std::pair<int, int>> pairs = transition_pairs(searched, o);
-  for (size_t k = 0; k < pairs.size(); ++k) {
-    if (o.progress) o.progress("pair " + std::to_string(k + 1) + "/" + std::to_string(pairs.size()));
+  int first = 0;
+  if (resume) {
+    check_resume(g, *resume, searched, pairs);
+    g = resume->graph;
+    first = resume->states_searched;
+  }
+  const int total = searched + static_cast<int>(pairs.size());
+  for (int k = first; k < searched; ++k) {
+    if (o.progress) o.progress("state " + std::to_string(k + 1) + "/" + std::to_string(searched), k, total);
+    const VecX rest = VecX::Constant(g.states[k].positions.rows(), rest_length);
+    StateSearches s = searches_of(o.saddles, k, g.states[k].positions, rest, sim);
+    if (s.error.empty()) g.states[k].energy = s.energy;
+    add_searches(g, std::move(s), sim, 1.0 - o.cut);
+    if (o.checkpoint) o.checkpoint(g, k + 1);
+  }
+  for (size_t k = g.pairs.size(); k < pairs.size(); ++k) {
+    if (o.progress)
+      o.progress("pair " + std::to_string(k + 1) + "/" + std::to_string(pairs.size()), searched + static_cast<int>(k),
+                 total);
     const VecX rest = VecX::Constant(g.states[pairs[k].first].positions.rows(), rest_length);
     pair_search(g, pairs[k].first, pairs[k].second, rest, o.pair, sim, 1.0 - o.cut);
+    if (o.checkpoint) o.checkpoint(g, searched);
   }
   return g;
 }

@@ -13,6 +13,7 @@ namespace {
 
 constexpr const char* kFormat = "elastic-knots-transitions";
 constexpr std::int64_t kFormatVersion = 1;
+constexpr const char* kRefusedRow = "start-refused: ";  ///< the searches/ status of a refused start
 
 void write_curves(hid_t g, const std::string& name, const std::vector<Points>& curves) {
   const hsize_t n = curves.empty() ? 0 : static_cast<hsize_t>(curves.front().rows());
@@ -129,7 +130,7 @@ void write_searches(hid_t file, const TransitionGraph& graph) {
       verified.push_back(0);
       index.push_back(-1);
       iterations.push_back(0);
-      status.push_back("start-refused: " + s.error);
+      status.push_back(kRefusedRow + s.error);
       energy.push_back(0.0);
       gradient.push_back(0.0);
       seconds.push_back(s.seconds);
@@ -199,7 +200,7 @@ struct Temporary {
 }  // namespace
 
 void write_transitions(const std::string& path, const TransitionGraph& graph, const std::string& dataset,
-                       const std::string& options, bool complete) {
+                       const std::string& options, bool complete, int states_searched) {
   h5::quiet();
   check_writable(path);
   Temporary tmp{temporary(path)};
@@ -213,6 +214,7 @@ void write_transitions(const std::string& path, const TransitionGraph& graph, co
     h5::set_attr(f.id(), "energy_scale", graph.energy_scale);
     h5::set_attr(f.id(), "options", options);
     h5::set_attr(f.id(), "complete", static_cast<std::int64_t>(complete ? 1 : 0));
+    if (states_searched >= 0) h5::set_attr(f.id(), "states_searched", static_cast<std::int64_t>(states_searched));
     write_states(f.id(), graph);
     write_saddles(f.id(), graph);
     write_edges(f.id(), graph);
@@ -334,9 +336,53 @@ void read_pairs(hid_t file, TransitionGraph& g) {
   }
 }
 
+/// The searches/ rows back as one StateSearches per state (in the order of
+/// their first row); the columns the file does not keep stay default.
+void read_searches(hid_t file, TransitionGraph& g) {
+  const h5::Handle s = h5::open_group(file, "searches");
+  const std::vector<std::int64_t> state = h5::read_int64(s.id(), "state"), mode = h5::read_int64(s.id(), "mode");
+  const std::vector<std::int64_t> direction = h5::read_int64(s.id(), "direction");
+  const std::vector<std::int64_t> verified = h5::read_int64(s.id(), "verified"), index = h5::read_int64(s.id(), "index");
+  const std::vector<std::int64_t> iterations = h5::read_int64(s.id(), "iterations");
+  const std::vector<std::string> status = h5::read_strings(s.id(), "status");
+  const std::vector<double> energy = h5::read_doubles(s.id(), "energy"), gradient = h5::read_doubles(s.id(), "gradient_norm");
+  const std::vector<double> seconds = h5::read_doubles(s.id(), "seconds");
+  const size_t k = state.size();
+  for (const size_t m : {mode.size(), direction.size(), verified.size(), index.size(), iterations.size(), status.size(),
+                         energy.size(), gradient.size(), seconds.size()})
+    if (m != k) throw InputError("searches: columns of different lengths");
+  for (size_t j = 0; j < k; ++j) {
+    if (state[j] < 0 || state[j] >= static_cast<std::int64_t>(g.states.size()))
+      throw InputError("searches: a state index out of range");
+    if (g.searches.empty() || g.searches.back().state != state[j]) {
+      g.searches.emplace_back();
+      g.searches.back().state = static_cast<int>(state[j]);
+      g.searches.back().energy = g.states[static_cast<size_t>(state[j])].energy;
+    }
+    StateSearches& out = g.searches.back();
+    if (mode[j] < 0 && status[j].rfind(kRefusedRow, 0) == 0) {
+      out.error = status[j].substr(std::string(kRefusedRow).size());
+      out.seconds = seconds[j];
+      continue;
+    }
+    SaddleRecord r;
+    r.mode = static_cast<int>(mode[j]);
+    r.direction = static_cast<int>(direction[j]);
+    r.verified = verified[j] != 0;
+    r.index = static_cast<int>(index[j]);
+    r.iterations = static_cast<int>(iterations[j]);
+    r.status = status[j];
+    r.energy = energy[j];
+    r.gradient_norm = gradient[j];
+    r.seconds = seconds[j];
+    out.seconds += seconds[j];
+    out.records.push_back(std::move(r));
+  }
+}
+
 }  // namespace
 
-TransitionGraph read_transitions(const std::string& path, std::string* options) {
+TransitionGraph read_transitions(const std::string& path, TransitionsFileInfo& info) {
   h5::quiet();
   const h5::Handle f = h5::open_file(path, false);
   try {
@@ -349,15 +395,27 @@ TransitionGraph read_transitions(const std::string& path, std::string* options) 
     g.knot = h5::get_attr_string(f.id(), "knot");
     g.cut = h5::get_attr_double(f.id(), "cut");
     g.energy_scale = h5::get_attr_double(f.id(), "energy_scale");
-    if (options) *options = h5::get_attr_string(f.id(), "options");
+    info.dataset = h5::get_attr_string(f.id(), "dataset");
+    info.options = h5::get_attr_string(f.id(), "options");
+    info.complete = h5::get_attr_int(f.id(), "complete") != 0;
+    info.states_searched =
+        h5::has_attr(f.id(), "states_searched") ? static_cast<int>(h5::get_attr_int(f.id(), "states_searched")) : -1;
     read_states(f.id(), g);
     read_saddles(f.id(), g);
     read_edges(f.id(), g);
+    read_searches(f.id(), g);
     read_pairs(f.id(), g);
     return g;
   } catch (const InputError& e) {
     throw InputError(path + ": " + e.what());
   }
+}
+
+TransitionGraph read_transitions(const std::string& path, std::string* options) {
+  TransitionsFileInfo info;
+  TransitionGraph g = read_transitions(path, info);
+  if (options) *options = info.options;
+  return g;
 }
 
 void write_path_h5(const std::string& path, const std::string& knot, const std::vector<Points>& images,

@@ -42,4 +42,9 @@ void check_writable(const std::string& path);
 /// Renames `from` onto `to` atomically after fsync; throws InputError on failure.
 void atomic_replace(const std::string& from, const std::string& to);
 
+/// Removes the temporaries "<prefix>*.tmp.<pid>.<n>" in `folder` that a
+/// killed run left behind (their process is gone): writers remove their own,
+/// except after SIGKILL. Errors are ignored (a leftover temporary is harmless).
+void remove_stale_temporaries(const std::string& folder, const std::string& prefix);
+
 }  // namespace ek

@@ -7,8 +7,11 @@
 /// pairs of those states whose energy ranks differ by at most `pair_gap`
 /// (i, i+1, ..., i+pair_gap: each state to its nearest states in energy),
 /// at most `max_pairs` of them, in the order (0,1), (0,2), ..., (1,2), ...;
-/// add_searches() and add_pair() join the results into the graph. Not
-/// resumable: an interrupted run starts again.
+/// add_searches() and add_pair() join the results into the graph, one unit
+/// (a state's searches, a double-ended search) at a time. Resumable: after
+/// every unit `checkpoint` receives the graph so far, and a run given that
+/// graph back (`resume`) goes on with the next unit; the result equals an
+/// uninterrupted run's (the units do not depend on each other's results).
 #include <functional>
 #include <string>
 #include <vector>
@@ -27,8 +30,12 @@ struct TransitionRunOptions {
   int max_states = 0;             ///< [1] states searched from, lowest energy first (0: every state)
   int pair_gap = 1;               ///< [1] double-ended searches between states whose ranks differ by <= this (0: none)
   int max_pairs = 8;              ///< [1] double-ended searches at most
-  /// Called before each unit of work with a line that names it.
-  std::function<void(const std::string&)> progress;
+  /// Called before each unit of work with a line that names it, the units
+  /// done (resumed ones included) and the run's units in all.
+  std::function<void(const std::string& what, int done, int total)> progress;
+  /// Called after each unit with the graph so far and the number of states
+  /// searched from (`knots transitions` writes it as a checkpoint).
+  std::function<void(const TransitionGraph& graph, int states_searched)> checkpoint;
   void validate() const;          ///< InputError for impossible values
 };
 
@@ -46,8 +53,18 @@ std::string transition_run_key(const std::string& knot, const TransitionRunOptio
 /// The double-ended pairs (a < b, state indices) of `states` states.
 std::vector<std::pair<int, int>> transition_pairs(int states, const TransitionRunOptions& options);
 
-/// The graph of `entry` (a knot of a data set with `metadata`).
+/// A run's checkpoint: the graph after `states_searched` states' searches and
+/// graph.pairs.size() double-ended searches.
+struct TransitionResume {
+  TransitionGraph graph;
+  int states_searched = 0;  ///< [1]
+};
+
+/// The graph of `entry` (a knot of a data set with `metadata`), from
+/// `resume` on when given: InputError when the checkpoint does not belong to
+/// this knot's states (its first states must be the clusters' representatives,
+/// its pairs the first of transition_pairs()).
 TransitionGraph knot_transitions(const KnotEntry& entry, const DatasetMetadata& metadata,
-                                 const TransitionRunOptions& options);
+                                 const TransitionRunOptions& options, const TransitionResume* resume = nullptr);
 
 }  // namespace ek

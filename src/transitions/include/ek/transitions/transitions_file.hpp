@@ -3,7 +3,9 @@
 ///
 ///   /   attributes: format = "elastic-knots-transitions", format_version = 1,
 ///       knot, dataset (the source file), cut, energy_scale [energy] (EI/L),
-///       options (the search options' text), complete (0/1)
+///       options (the search options' text), complete (0/1),
+///       states_searched (states whose single-ended searches are in the file;
+///       absent in files written before it)
 ///   states/      energy float64 [s], cluster int64 [s] (-1: not in the data set),
 ///                equilibrium int64 [s] (-1: new), positions float64 [s, n, 3]
 ///   saddles/     energy, negative_eigenvalue, second_eigenvalue, gradient_norm float64 [k],
@@ -18,19 +20,34 @@
 ///                status, seed_statuses string [q], path_barrier, reached_similarity,
 ///                saddle_energy, seconds float64 [q] (double-ended searches)
 ///
-/// Written to a temporary name and renamed into place.
+/// Written to a temporary name and renamed into place. A run of `knots
+/// transitions` checkpoints its graph in this format (complete = 0) after
+/// every state's searches and every double-ended search.
 #include <string>
 
 #include "ek/transitions/graph.hpp"
 
 namespace ek {
 
-/// Writes the graph; `dataset` and `options` are recorded as attributes.
+/// The attributes of a transitions file besides the graph.
+struct TransitionsFileInfo {
+  std::string dataset;       ///< the source data set, as given to the run
+  std::string options;       ///< the search options' text (transition_run_key())
+  bool complete = true;      ///< false: a checkpoint of an unfinished run
+  int states_searched = -1;  ///< [1] states whose searches the file holds (-1: not recorded)
+};
+
+/// Writes the graph; `dataset` and `options` are recorded as attributes,
+/// and `states_searched` when it is >= 0.
 void write_transitions(const std::string& path, const TransitionGraph& graph, const std::string& dataset,
-                       const std::string& options, bool complete);
-/// Reads a transitions file (InputError naming the file for any problem).
-/// `options` (optional) receives the recorded options text.
+                       const std::string& options, bool complete, int states_searched = -1);
+/// Reads a transitions file (InputError naming the file for any problem),
+/// the searches included (one StateSearches per state with rows, its records
+/// holding the columns of searches/; a "start-refused: " row becomes its
+/// error). `options` (optional) receives the recorded options text.
 TransitionGraph read_transitions(const std::string& path, std::string* options = nullptr);
+/// The same, with every attribute in `info`.
+TransitionGraph read_transitions(const std::string& path, TransitionsFileInfo& info);
 
 /// A path as HDF5: attributes format = "elastic-knots-path", knot;
 /// images float64 [p, n, 3], energies float64 [p], saddle_images int64 [s].
