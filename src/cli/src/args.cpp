@@ -1,25 +1,12 @@
 #include "args.hpp"
 
 #include <algorithm>
-#include <charconv>
-#include <cmath>
 #include <iostream>
 #include <sstream>
 
 #include "ek/core/errors.hpp"
 
 namespace ek::cli {
-
-double parse_number(const std::string& text, const std::string& what) {
-  double v = 0.0;
-  const char* b = text.c_str();
-  const char* e = b + text.size();
-  if (b != e && *b == '+') ++b;
-  auto [p, ec] = std::from_chars(b, e, v);
-  if (text.empty() || ec != std::errc() || p != e) throw InputError(what + ": '" + text + "' is not a number");
-  if (!std::isfinite(v)) throw InputError(what + ": '" + text + "' is not a finite number");
-  return v;
-}
 
 std::vector<double> parse_number_list(const std::string& text, const std::string& what) {
   std::vector<double> out;
@@ -30,16 +17,6 @@ std::vector<double> parse_number_list(const std::string& text, const std::string
     pos = end + 1;
   }
   return out;
-}
-
-long long parse_integer(const std::string& text, const std::string& what) {
-  long long v = 0;
-  const char* b = text.c_str();
-  const char* e = b + text.size();
-  if (b != e && *b == '+') ++b;
-  auto [p, ec] = std::from_chars(b, e, v);
-  if (text.empty() || ec != std::errc() || p != e) throw InputError(what + ": '" + text + "' is not an integer");
-  return v;
 }
 
 ArgParser::ArgParser(std::string command, std::string synopsis)

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "ek/core/parse.hpp"
+
 namespace ek::cli {
 
 class ArgParser {
@@ -55,9 +57,9 @@ class ArgParser {
   Opt* find(const std::string& name);
 };
 
-/// Parses a number, throwing InputError("<what>: '<text>' is not a number").
-double parse_number(const std::string& text, const std::string& what);
-long long parse_integer(const std::string& text, const std::string& what);
+/// The strict number parsers of ek/core/parse.hpp.
+using ek::parse_integer;
+using ek::parse_number;
 /// Parses comma-separated numbers ("1e-3" or "1e-2,1e-1"); an empty item is
 /// not a number. The empty text gives an empty list.
 std::vector<double> parse_number_list(const std::string& text, const std::string& what);

@@ -1,24 +1,12 @@
 #include "ek/dataset/query.hpp"
 
 #include <algorithm>
-#include <charconv>
-#include <cmath>
 
 #include "ek/core/errors.hpp"
+#include "ek/core/parse.hpp"
 
 namespace ek {
 namespace {
-
-double parse_value(const std::string& text, const std::string& what) {
-  double v = 0.0;
-  const char* b = text.c_str();
-  const char* e = b + text.size();
-  if (b != e && *b == '+') ++b;
-  auto [p, ec] = std::from_chars(b, e, v);
-  if (text.empty() || ec != std::errc() || p != e) throw InputError(what + ": '" + text + "' is not a number");
-  if (!std::isfinite(v)) throw InputError(what + ": '" + text + "' is not a finite number");
-  return v;
-}
 
 /// (attribute, descending) of "ATTR[:asc|desc]".
 std::pair<std::string, bool> parse_sort(const std::string& sort) {
@@ -47,7 +35,7 @@ QueryCondition parse_query_condition(const std::string& text) {
     QueryCondition c;
     c.attribute = text.substr(0, p);
     c.op = op;
-    c.value = parse_value(text.substr(p + std::string(op).size()), "--where '" + text + "'");
+    c.value = parse_number(text.substr(p + std::string(op).size()), "--where '" + text + "'");
     return c;
   }
   throw InputError("--where '" + text + "': expected ATTR<VALUE (operators < <= > >= = !=)");
