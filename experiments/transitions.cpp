@@ -10,7 +10,9 @@
 // summary.json (docs/results.md, "transitions"). Puzzle barriers (paper
 // Fig. 14): for the first pairs of ../puzzles/puzzles.csv, connect_states()
 // (connect.hpp) between the two states; puzzle_barriers.csv and each pair's
-// graph as puzzle_graphs/puzzle_<k>.h5.
+// graph as puzzle_graphs/puzzle_<k>.h5. And for each double-ended pair of
+// the 4_1 graph not joined by its edges, connect_states() on a copy of the
+// graph (transitions_4_1_connected.h5, graph_pairs.csv).
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -261,6 +263,45 @@ void puzzle_barriers(const Args& a, const TransitionRunOptions& r, results::Tran
   csv.commit();
 }
 
+/// For each double-ended pair (a, b) of g in order: joined by g's edges
+/// (before), and after connect_states() on a copy of g that grows over the
+/// pairs (budget ci 1, default 3, paper 6 searches per pair not joined yet).
+/// Writes graph_pairs.csv and the grown graph as transitions_4_1_connected.h5.
+void connect_graph_pairs(const Args& a, const TransitionRunOptions& r, const TransitionGraph& g,
+                         results::TransitionsSummary& sum) {
+  Csv csv(a.out + "/graph_pairs.csv", {"a", "b", "connected_before", "connected_after", "attempts", "saddles_on_chain",
+                                       "barrier_forward_scaled", "barrier_backward_scaled", "seconds",
+                                       "attempt_statuses"});
+  TransitionGraph c = g;
+  ConnectOptions o;
+  o.max_searches = by_scale(a, 1, 3, 6);
+  o.search = r.pair;
+  o.search.saddle = r.saddles;
+  const std::string input = a.results + "/multistability/multistability.h5";
+  o.search.saddle.relax = dataset_model(DatasetReader(input).metadata());
+  const VecX rest = VecX::Constant(g.states.front().positions.rows(), DatasetReader(input).metadata().edge_length.value_or(1.0));
+  const CurveSimilarity sim = knot_similarity("4_1");
+  sum.graph_pairs_connected_before = 0;
+  sum.graph_pairs_connected_after = 0;
+  for (const PairSearch& p : g.pairs) {
+    const bool before = minimax_path(g, p.a, p.b).has_value();
+    std::cout << "  connecting " << p.a << " - " << p.b << std::endl;
+    const ConnectResult x = connect_states(c, p.a, p.b, rest, o, sim, 1.0 - kClusterCut);
+    std::string statuses;
+    for (const ConnectAttempt& t : x.attempt_list)
+      statuses += (statuses.empty() ? "" : ";") + std::to_string(t.u) + "-" + std::to_string(t.v) + ":" + t.status;
+    csv.row({std::to_string(p.a), std::to_string(p.b), Csv::flag(before), Csv::flag(x.connected),
+             std::to_string(x.attempts), std::to_string(x.chain.size()),
+             x.connected ? Csv::num(x.barrier_forward_scaled) : "", x.connected ? Csv::num(x.barrier_backward_scaled) : "",
+             Csv::num(x.seconds, 4), statuses});
+    *sum.graph_pairs_connected_before += before;
+    *sum.graph_pairs_connected_after += x.connected;
+  }
+  write_transitions(a.out + "/transitions_4_1_connected.h5", c, input, "connected " + std::to_string(o.max_searches),
+                    true);
+  csv.commit();
+}
+
 void run(const Args& a) {
   const std::string input = a.results + "/multistability/multistability.h5";
   require_input(std::filesystem::exists(input),
@@ -283,6 +324,7 @@ void run(const Args& a) {
   write_edges(a, g, sum);
   write_searches(a, g, sum);
   write_pairs(a, g, sum);
+  connect_graph_pairs(a, r, g, sum);
   puzzle_barriers(a, r, sum);
   sum.seconds = elapsed_seconds();
   write_summary(a, sum);
