@@ -129,6 +129,36 @@ TEST(ConnectStates, JoinedStatesNeedNoSearch) {
   EXPECT_EQ(g.pairs.size(), 0u);
 }
 
+// States that are no stable states of a knot (translated squares: every
+// search ends "same-state" or refused, adding no edge): the loop tries each
+// pair between the two sides once, never the pair the graph records as
+// searched already (1-2), and ends "exhausted".
+TEST(ConnectStates, EveryPairOnceThenExhausted) {
+  TransitionGraph g = small_graph();
+  PairSearch searched;
+  searched.a = 2;
+  searched.b = 1;
+  searched.status = "other-minima";
+  g.pairs.push_back(searched);
+  ConnectOptions o;
+  o.max_searches = 10;
+  const ConnectResult r = connect_states(g, 0, 3, VecX::Ones(4), o, sim, 0.95);
+  EXPECT_FALSE(r.connected);
+  EXPECT_EQ(r.status, "exhausted");
+  ASSERT_EQ(r.attempts, 3);  // 0-2, 0-3, 1-3
+  std::set<std::pair<int, int>> seen;
+  for (const ConnectAttempt& a : r.attempt_list) {
+    EXPECT_NE(a.status, "verified");
+    EXPECT_EQ(a.edges_added, 0);
+    const std::pair<int, int> k{std::min(a.u, a.v), std::max(a.u, a.v)};
+    EXPECT_TRUE(seen.insert(k).second);
+    EXPECT_NE(k, std::make_pair(1, 2));
+    EXPECT_TRUE(a.u <= 1 && a.v >= 2) << a.u << "-" << a.v;  // from a's side to b's
+  }
+  EXPECT_EQ(g.pairs.size(), 4u);
+  EXPECT_FALSE(r.upper_bound.has_value());
+}
+
 TEST(ConnectStates, MisuseThrows) {
   TransitionGraph g = small_graph();
   EXPECT_THROW(connect_states(g, 2, 2, VecX::Ones(4), {}, sim, 0.95), std::invalid_argument);

@@ -162,6 +162,7 @@ ConnectResult connect_states(TransitionGraph& g, int a, int b, const VecX& rest,
   ConnectResult r;
   r.status = "budget";
   std::set<Pair> tried;
+  for (const PairSearch& p : g.pairs) tried.insert(key(p.a, p.b));  // searched before this call
   std::map<Pair, double> distances;
   std::optional<std::vector<int>> chain = minimax_path(g, a, b);
   while (!chain && r.attempts < o.max_searches) {

@@ -23,7 +23,9 @@
 ///       minima of one state and is no step), d(u, v)² for a pair not tried
 ///       before (as {u, v}: either order counts), d the aligned RMS vertex
 ///       distance of align_vertices() [length] (pairs of different vertex
-///       counts and tried pairs without an edge: no link);
+///       counts and tried pairs without an edge: no link; g.pairs, the
+///       double-ended searches recorded in g before the call, count as
+///       tried: the search is deterministic);
 ///     the least-weight path from a to b (Dijkstra); (u, v) = its first
 ///       missing link from a's side (while only a and b are known: a, b;
 ///       with the states C_a joined to a and C_b joined to b only, the
