@@ -125,9 +125,12 @@ namespace {
 /// inter-state edges, each saddle passing the checks in `model` with rest
 /// lengths `rest` (||∇E|| <= the tolerance, exactly one negative eigenvalue
 /// and none near zero, the stored energy to 1e-8 relative) with positive
-/// barriers from both sides; the reported barriers (highest saddle − E_a)
-/// / (EI/L) and (highest saddle − E_b) / (EI/L), to 1e-9 relative (the CSV
-/// keeps 12 digits of the same numbers).
+/// barriers from both sides (from the minima its descents reached); the
+/// reported barriers (highest saddle − E_a) / (EI/L) and (highest saddle −
+/// E_b) / (EI/L), to 1e-9 relative (the CSV keeps 12 digits of the same
+/// numbers). Those are not asserted positive: the chain may enter a's or
+/// b's state at a minimum of the state lower than its stored energy
+/// (connect.hpp).
 void expect_verified_chain(const ek::TransitionGraph& g, int a, int b, const ek::RelaxOptions& model,
                            const ek::VecX& rest, const std::map<std::string, std::string>& row, const std::string& at) {
   const auto chain = ek::minimax_path(g, a, b);
@@ -150,8 +153,6 @@ void expect_verified_chain(const ek::TransitionGraph& g, int a, int b, const ek:
   }
   const double forward = (top - g.states[static_cast<size_t>(a)].energy) / g.energy_scale;
   const double backward = (top - g.states[static_cast<size_t>(b)].energy) / g.energy_scale;
-  EXPECT_GT(forward, 0.0) << at;
-  EXPECT_GT(backward, 0.0) << at;
   EXPECT_NEAR(std::stod(row.at("barrier_forward_scaled")), forward, 1e-9 * std::abs(forward)) << at;
   EXPECT_NEAR(std::stod(row.at("barrier_backward_scaled")), backward, 1e-9 * std::abs(backward)) << at;
 }

@@ -40,7 +40,12 @@
 /// ("exhausted"). When a and b are joined, the chain is minimax_path(g, a, b)
 /// (the path whose highest saddle is lowest) and its barrier, seen from a, is
 ///     ΔE_a = max_{e ∈ chain} E_saddle(e) − E_a,   ΔE_b = max E_saddle − E_b,
-/// E_a, E_b the energies stored in g.states. Every saddle of g passed the
+/// E_a, E_b the energies stored in g.states. Every edge's own barriers (from
+/// the minima its descents reached) are positive, but ΔE_a or ΔE_b can be
+/// negative: a chain may enter a state at a minimum that matches it
+/// (similarity >= threshold) and lies lower than the state's stored energy
+/// (a cluster's representative, the lowest member the data set has, need
+/// not be the lowest minimum of the cluster). Every saddle of g passed the
 /// checks of saddles.hpp (index one, gradient, two converged-stable
 /// descents, the knot type kept), so the chain is a sequence of verified
 /// saddles through intermediate states, not one continuous path (see
