@@ -147,6 +147,7 @@ std::vector<PuzzleRow> read_puzzles(const std::string& path) {
     std::vector<std::string> out;
     std::stringstream s(line);
     for (std::string item; std::getline(s, item, ',');) out.push_back(item);
+    if (!line.empty() && line.back() == ',') out.emplace_back();  // getline drops a trailing empty cell
     return out;
   };
   std::string line;
