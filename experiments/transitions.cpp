@@ -191,9 +191,10 @@ std::vector<PuzzleRow> pick_puzzles(const std::vector<PuzzleRow>& rows, int coun
 /// `source` the data set (relative to the results root).
 TransitionGraph puzzle_graph(const Args& a, const PuzzleRow& z, KnotSaddleOptions& model, VecX& rest,
                              std::string& source) {
-  for (const std::string f : {"multistability/multistability.h5", "dataset/dataset.h5"})
-    if (source.empty() && std::filesystem::exists(a.results + "/" + f) && DatasetReader(a.results + "/" + f).has_knot(z.knot))
-      source = f;
+  for (const std::string f : {"multistability/multistability.h5", "dataset/dataset.h5"}) {
+    const std::string path = a.results + "/" + f;
+    if (source.empty() && std::filesystem::exists(path) && DatasetReader(path).has_knot(z.knot)) source = f;
+  }
   require_input(!source.empty(), "exp_transitions: no data set holds the puzzle knot " + z.knot);
   const DatasetMetadata m = DatasetReader(a.results + "/" + source).metadata();
   model.relax = dataset_model(m);
@@ -220,8 +221,8 @@ void puzzle_barriers(const Args& a, const TransitionRunOptions& r, results::Tran
            "barrier_forward_scaled", "barrier_backward_scaled", "upper_bound_scaled", "seconds", "attempt_statuses",
            "graph", "dataset"});
   const std::string input = a.results + "/puzzles/puzzles.csv";
-  const std::vector<PuzzleRow> rows =
-      std::filesystem::exists(input) ? pick_puzzles(read_puzzles(input), by_scale(a, 1, 4, 12)) : std::vector<PuzzleRow>{};
+  std::vector<PuzzleRow> rows;
+  if (std::filesystem::exists(input)) rows = pick_puzzles(read_puzzles(input), by_scale(a, 1, 4, 12));
   std::filesystem::create_directories(a.out + "/puzzle_graphs");
   sum.puzzle_pairs = 0;
   sum.puzzles_connected = 0;
@@ -279,8 +280,9 @@ void connect_graph_pairs(const Args& a, const TransitionRunOptions& r, const Tra
   o.search = r.pair;
   o.search.saddle = r.saddles;
   const std::string input = a.results + "/multistability/multistability.h5";
-  o.search.saddle.relax = dataset_model(DatasetReader(input).metadata());
-  const VecX rest = VecX::Constant(g.states.front().positions.rows(), DatasetReader(input).metadata().edge_length.value_or(1.0));
+  const DatasetMetadata m = DatasetReader(input).metadata();
+  o.search.saddle.relax = dataset_model(m);
+  const VecX rest = VecX::Constant(g.states.front().positions.rows(), m.edge_length.value_or(1.0));
   const CurveSimilarity sim = knot_similarity("4_1");
   sum.graph_pairs_connected_before = 0;
   sum.graph_pairs_connected_after = 0;

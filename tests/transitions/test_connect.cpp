@@ -210,7 +210,7 @@ TEST(ConnectStates, SearchesStayWithinTheBudgetAndNeverRepeatAPair) {
 TEST(ConnectStates, AChainJoinsAToBThroughVerifiedSaddles) {
   const ConnectRun& x = run41();
   const ConnectResult& r = x.result;
-  ASSERT_TRUE(r.connected) << r.status;  // measured: after 7 searches, a chain of 4 saddles through 2 other states
+  ASSERT_TRUE(r.connected) << r.status;  // measured: after 7 searches, a chain of 4 saddles through the 3 other states
   const TransitionGraph& g = x.graph;
   ASSERT_FALSE(r.chain.empty());
   int at = 0;
