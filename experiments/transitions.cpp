@@ -20,6 +20,7 @@
 #include <set>
 #include <sstream>
 
+#include "ek/core/parse.hpp"
 #include "ek/dataset/dataset_file.hpp"
 #include "ek/geometry/curve_io.hpp"
 #include "ek/transitions/connect.hpp"
@@ -139,7 +140,7 @@ struct PuzzleRow {
   double link = 0.0;
 };
 
-/// The rows of puzzles.csv (InputError when a needed column is missing).
+/// The rows of puzzles.csv (InputError when a needed column is missing or a cell is no number).
 std::vector<PuzzleRow> read_puzzles(const std::string& path) {
   std::ifstream in(path);
   require_input(static_cast<bool>(in), "exp_transitions: cannot read " + path);
@@ -164,7 +165,9 @@ std::vector<PuzzleRow> read_puzzles(const std::string& path) {
   while (std::getline(in, line)) {
     const std::vector<std::string> c = split(line);
     require_input(c.size() == header.size(), "exp_transitions: " + path + ": a row has the wrong number of cells");
-    rows.push_back({c[knot], c[ca], c[cb], std::stoi(c[sa]), std::stoi(c[sb]), std::stod(c[link])});
+    const std::string at = "exp_transitions: " + path;
+    rows.push_back({c[knot], c[ca], c[cb], static_cast<int>(parse_integer(c[sa], at + ": state_a")),
+                    static_cast<int>(parse_integer(c[sb], at + ": state_b")), parse_number(c[link], at + ": link")});
   }
   return rows;
 }
