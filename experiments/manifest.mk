@@ -14,7 +14,7 @@ $(RESULTS)/filters/summary.json: $(RESULTS)/dataset/summary.json
 $(RESULTS)/cross_topology/summary.json: $(RESULTS)/dataset/summary.json $(RESULTS)/multistability/summary.json
 $(RESULTS)/generalization/summary.json: $(RESULTS)/dataset/summary.json
 $(RESULTS)/saddles/summary.json: $(RESULTS)/multistability/summary.json
-$(RESULTS)/transitions/summary.json: $(RESULTS)/multistability/summary.json
+$(RESULTS)/transitions/summary.json: $(RESULTS)/multistability/summary.json $(RESULTS)/puzzles/summary.json
 
 # a figure is redrawn when its script or its experiment's summary.json is newer
 figures/out/fig09_milnor.png: figures/fig09_milnor.py $(RESULTS)/milnor/summary.json

@@ -7,11 +7,23 @@
 // energy rank (knot_transitions(), run.hpp). Writes transitions_4_1.h5 (the
 // graph, transitions_file.hpp), states.csv, edges.csv, searches.csv,
 // pairs.csv, profile.csv (the energy along each edge's path) and
-// summary.json (docs/results.md, "transitions").
+// summary.json (docs/results.md, "transitions"). Puzzle barriers (paper
+// Fig. 14): for the first pairs of ../puzzles/puzzles.csv, connect_states()
+// (connect.hpp) between the two states; puzzle_barriers.csv and each pair's
+// graph as puzzle_graphs/puzzle_<k>.h5. And for each double-ended pair of
+// the 4_1 graph not joined by its edges, connect_states() on a copy of the
+// graph (transitions_4_1_connected.h5, graph_pairs.csv).
+#include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
+#include <set>
+#include <sstream>
 
+#include "ek/core/parse.hpp"
 #include "ek/dataset/dataset_file.hpp"
+#include "ek/geometry/curve_io.hpp"
+#include "ek/transitions/connect.hpp"
 #include "ek/transitions/run.hpp"
 #include "ek/transitions/transitions_file.hpp"
 #include "experiment.hpp"
@@ -121,6 +133,181 @@ void write_pairs(const Args& a, const TransitionGraph& g, results::TransitionsSu
   sum.seconds_per_pair = sum.pairs > 0 ? seconds / sum.pairs : 0.0;
 }
 
+/// One row of ../puzzles/puzzles.csv.
+struct PuzzleRow {
+  std::string knot, curve_a, curve_b;
+  int state_a = -1, state_b = -1;
+  double link = 0.0;
+};
+
+/// The rows of puzzles.csv (InputError when a needed column is missing or a cell is no number).
+std::vector<PuzzleRow> read_puzzles(const std::string& path) {
+  std::ifstream in(path);
+  require_input(static_cast<bool>(in), "exp_transitions: cannot read " + path);
+  const auto split = [](const std::string& line) {
+    std::vector<std::string> out;
+    std::stringstream s(line);
+    for (std::string item; std::getline(s, item, ',');) out.push_back(item);
+    if (!line.empty() && line.back() == ',') out.emplace_back();  // getline drops a trailing empty cell
+    return out;
+  };
+  std::string line;
+  std::getline(in, line);
+  const std::vector<std::string> header = split(line);
+  const auto column = [&](const std::string& name) {
+    const auto it = std::find(header.begin(), header.end(), name);
+    require_input(it != header.end(), "exp_transitions: " + path + " has no column '" + name + "'");
+    return static_cast<size_t>(it - header.begin());
+  };
+  const size_t knot = column("knot"), sa = column("state_a"), sb = column("state_b"), link = column("link"),
+               ca = column("curve_a"), cb = column("curve_b");
+  std::vector<PuzzleRow> rows;
+  while (std::getline(in, line)) {
+    const std::vector<std::string> c = split(line);
+    require_input(c.size() == header.size(), "exp_transitions: " + path + ": a row has the wrong number of cells");
+    const std::string at = "exp_transitions: " + path;
+    rows.push_back({c[knot], c[ca], c[cb], static_cast<int>(parse_integer(c[sa], at + ": state_a")),
+                    static_cast<int>(parse_integer(c[sb], at + ": state_b")), parse_number(c[link], at + ": link")});
+  }
+  return rows;
+}
+
+/// The first `count` rows, one per knot first (in file order), then the rest in order.
+std::vector<PuzzleRow> pick_puzzles(const std::vector<PuzzleRow>& rows, int count) {
+  std::vector<PuzzleRow> out;
+  std::set<std::string> knots;
+  std::vector<char> taken(rows.size(), 0);
+  for (size_t k = 0; k < rows.size() && static_cast<int>(out.size()) < count; ++k)
+    if (knots.insert(rows[k].knot).second) {
+      out.push_back(rows[k]);
+      taken[k] = 1;
+    }
+  for (size_t k = 0; k < rows.size() && static_cast<int>(out.size()) < count; ++k)
+    if (!taken[k]) out.push_back(rows[k]);
+  return out;
+}
+
+/// The graph of one puzzle's two states, polished (prepare_start()), in the
+/// model of the data set holding the knot (exp_puzzles reads
+/// multistability.h5, then dataset.h5); energy scale EI/L as
+/// knot_transitions(). `rest` receives the data set's edge lengths,
+/// `source` the data set (relative to the results root).
+TransitionGraph puzzle_graph(const Args& a, const PuzzleRow& z, KnotSaddleOptions& model, VecX& rest,
+                             std::string& source) {
+  for (const std::string f : {"multistability/multistability.h5", "dataset/dataset.h5"}) {
+    const std::string path = a.results + "/" + f;
+    if (source.empty() && std::filesystem::exists(path) && DatasetReader(path).has_knot(z.knot)) source = f;
+  }
+  require_input(!source.empty(), "exp_transitions: no data set holds the puzzle knot " + z.knot);
+  const DatasetMetadata m = DatasetReader(a.results + "/" + source).metadata();
+  model.relax = dataset_model(m);
+  TransitionGraph g;
+  g.knot = z.knot;
+  g.cut = kClusterCut;
+  const std::string dir = a.results + "/puzzles/";
+  const Points xa = read_curve(dir + z.curve_a), xb = read_curve(dir + z.curve_b);
+  rest = VecX::Constant(xa.rows(), m.edge_length.value_or(1.0));
+  const SaddleStart sa = prepare_start(xa, rest, model), sb = prepare_start(xb, rest, model);
+  g.states.push_back({-1, z.state_a, sa.energy, sa.positions});
+  g.states.push_back({-1, z.state_b, sb.energy, sb.positions});
+  g.energy_scale = model.relax.material.bending_stiffness() / (rest(0) * static_cast<double>(xa.rows()));
+  return g;
+}
+
+/// Puzzle barriers: connect_states() between the two states of the first
+/// puzzles (ci 1, default 4, paper 12; distinct knots first), budget ci 2,
+/// default 6, paper 12 searches. Writes puzzle_barriers.csv and
+/// puzzle_graphs/puzzle_<k>.h5 (the graph of row k).
+void puzzle_barriers(const Args& a, const TransitionRunOptions& r, results::TransitionsSummary& sum) {
+  Csv csv(a.out + "/puzzle_barriers.csv",
+          {"knot", "state_a", "state_b", "link", "status", "connected", "attempts", "saddles_on_chain",
+           "barrier_forward_scaled", "barrier_backward_scaled", "upper_bound_scaled", "seconds", "attempt_statuses",
+           "graph", "dataset"});
+  const std::string input = a.results + "/puzzles/puzzles.csv";
+  std::vector<PuzzleRow> rows;
+  if (std::filesystem::exists(input)) rows = pick_puzzles(read_puzzles(input), by_scale(a, 1, 4, 12));
+  std::filesystem::create_directories(a.out + "/puzzle_graphs");
+  sum.puzzle_pairs = 0;
+  sum.puzzles_connected = 0;
+  for (size_t k = 0; k < rows.size(); ++k) {
+    const PuzzleRow& z = rows[k];
+    std::cout << "  puzzle " << k + 1 << "/" << rows.size() << ": " << z.knot << " " << z.state_a << " - "
+              << z.state_b << std::endl;
+    ConnectOptions o;
+    o.max_searches = by_scale(a, 2, 6, 12);
+    o.search = r.pair;
+    o.search.saddle = r.saddles;
+    VecX rest;
+    std::string status, source;
+    TransitionGraph g;
+    ConnectResult c;
+    try {
+      g = puzzle_graph(a, z, o.search.saddle, rest, source);
+      c = connect_states(g, 0, 1, rest, o, knot_similarity(z.knot), 1.0 - kClusterCut);
+      status = c.status;
+    } catch (const InputError& e) {
+      status = std::string("refused: ") + e.what();
+    }
+    std::string statuses;
+    for (const ConnectAttempt& t : c.attempt_list)
+      statuses += (statuses.empty() ? "" : ";") + std::to_string(t.u) + "-" + std::to_string(t.v) + ":" + t.status;
+    const std::string graph = "puzzle_graphs/puzzle_" + std::to_string(k) + ".h5";
+    if (!g.states.empty())
+      write_transitions(a.out + "/" + graph, g, a.results + "/" + source,
+                        "puzzle " + z.knot + " " + std::to_string(z.state_a) + "-" + std::to_string(z.state_b) +
+                            " max_searches=" + std::to_string(o.max_searches),
+                        true);
+    csv.row({z.knot, std::to_string(z.state_a), std::to_string(z.state_b), Csv::num(z.link), status,
+             Csv::flag(c.connected), std::to_string(c.attempts), std::to_string(c.chain.size()),
+             c.connected ? Csv::num(c.barrier_forward_scaled) : "", c.connected ? Csv::num(c.barrier_backward_scaled) : "",
+             c.upper_bound_scaled ? Csv::num(*c.upper_bound_scaled) : "", Csv::num(c.seconds, 4), statuses,
+             g.states.empty() ? "" : graph, source});
+    ++*sum.puzzle_pairs;
+    *sum.puzzles_connected += c.connected;
+  }
+  csv.commit();
+}
+
+/// For each double-ended pair (a, b) of g in order: joined by g's edges
+/// (before), and after connect_states() on a copy of g that grows over the
+/// pairs (budget ci 1, default 3, paper 6 searches per pair not joined yet).
+/// Writes graph_pairs.csv and the grown graph as transitions_4_1_connected.h5.
+void connect_graph_pairs(const Args& a, const TransitionRunOptions& r, const TransitionGraph& g,
+                         results::TransitionsSummary& sum) {
+  Csv csv(a.out + "/graph_pairs.csv", {"a", "b", "connected_before", "connected_after", "attempts", "saddles_on_chain",
+                                       "barrier_forward_scaled", "barrier_backward_scaled", "seconds",
+                                       "attempt_statuses"});
+  TransitionGraph c = g;
+  ConnectOptions o;
+  o.max_searches = by_scale(a, 1, 3, 6);
+  o.search = r.pair;
+  o.search.saddle = r.saddles;
+  const std::string input = a.results + "/multistability/multistability.h5";
+  const DatasetMetadata m = DatasetReader(input).metadata();
+  o.search.saddle.relax = dataset_model(m);
+  const VecX rest = VecX::Constant(g.states.front().positions.rows(), m.edge_length.value_or(1.0));
+  const CurveSimilarity sim = knot_similarity("4_1");
+  sum.graph_pairs_connected_before = 0;
+  sum.graph_pairs_connected_after = 0;
+  for (const PairSearch& p : g.pairs) {
+    const bool before = minimax_path(g, p.a, p.b).has_value();
+    std::cout << "  connecting " << p.a << " - " << p.b << std::endl;
+    const ConnectResult x = connect_states(c, p.a, p.b, rest, o, sim, 1.0 - kClusterCut);
+    std::string statuses;
+    for (const ConnectAttempt& t : x.attempt_list)
+      statuses += (statuses.empty() ? "" : ";") + std::to_string(t.u) + "-" + std::to_string(t.v) + ":" + t.status;
+    csv.row({std::to_string(p.a), std::to_string(p.b), Csv::flag(before), Csv::flag(x.connected),
+             std::to_string(x.attempts), std::to_string(x.chain.size()),
+             x.connected ? Csv::num(x.barrier_forward_scaled) : "", x.connected ? Csv::num(x.barrier_backward_scaled) : "",
+             Csv::num(x.seconds, 4), statuses});
+    *sum.graph_pairs_connected_before += before;
+    *sum.graph_pairs_connected_after += x.connected;
+  }
+  write_transitions(a.out + "/transitions_4_1_connected.h5", c, input, "connected " + std::to_string(o.max_searches),
+                    true);
+  csv.commit();
+}
+
 void run(const Args& a) {
   const std::string input = a.results + "/multistability/multistability.h5";
   require_input(std::filesystem::exists(input),
@@ -143,6 +330,8 @@ void run(const Args& a) {
   write_edges(a, g, sum);
   write_searches(a, g, sum);
   write_pairs(a, g, sum);
+  connect_graph_pairs(a, r, g, sum);
+  puzzle_barriers(a, r, sum);
   sum.seconds = elapsed_seconds();
   write_summary(a, sum);
   std::cout << "exp_transitions: 4_1, " << sum.states_searched << " of " << sum.states << " states searched, "

@@ -7,7 +7,12 @@ dashed lines labelled by their status, with the highest image of the
 steered chain (hollow square: an upper bound on the barrier) when it
 reached B; (b) the energy along each edge's
 path, from the state it was searched from over the saddle, E - E_from in
-units of EI/L."""
+units of EI/L; (c) the puzzle barriers (puzzle_barriers.csv, paper Fig. 14):
+per puzzle pair, the barrier of the chain of verified saddles from state_a
+when connect_states() joined them (filled), else the steered chain's upper
+bound (hollow), labelled by the outcome and the searches run."""
+import os
+
 import numpy as np
 
 from common import parse_args, plt, read_csv, read_summary, save, save_empty
@@ -26,7 +31,10 @@ scale = float(s["energy_scale"])
 e = np.array([float(r["energy"]) for r in states])
 y = (e - e.min()) / scale
 
-fig, (ax, bx) = plt.subplots(1, 2, figsize=(11, 4.2))
+puzzle_file = f"{d}/puzzle_barriers.csv"
+puzzles = read_csv(puzzle_file) if os.path.exists(puzzle_file) else []
+
+fig, (ax, bx, cx) = plt.subplots(1, 3, figsize=(15, 4.2))
 ax.scatter(np.arange(len(y)), y, s=30, color="tab:blue", zorder=3, label="state")
 for k, r in enumerate(states):
     ax.annotate(str(k), (k, y[k]), textcoords="offset points", xytext=(4, -9), fontsize=6)
@@ -62,4 +70,21 @@ bx.set_ylabel("(E - E_from) / (EI/L)")
 if edges:
     bx.legend(fontsize=5, ncol=2)
 bx.set_title("energy along each edge's path (solid: between states)", fontsize=8)
+for k, r in enumerate(puzzles):
+    if r["connected"] == "true":
+        cx.bar([k], [float(r["barrier_forward_scaled"])], color="tab:red", width=0.6)
+        text, top = f"{r['saddles_on_chain']} saddles", float(r["barrier_forward_scaled"])
+    elif r["upper_bound_scaled"]:
+        top = float(r["upper_bound_scaled"])
+        cx.plot([k], [top], "s", mfc="none", color="0.4", ms=6)
+        text = r["status"]
+    else:
+        top, text = 0.0, r["status"][:20]
+    cx.annotate(f"{text}, {r['attempts']} searches", (k, top), textcoords="offset points", xytext=(0, 4),
+                fontsize=5, ha="center")
+cx.set_xticks(range(len(puzzles)))
+cx.set_xticklabels([f"{r['knot']} {r['state_a']}-{r['state_b']}" for r in puzzles], fontsize=6, rotation=30)
+cx.set_ylabel("barrier from state_a / (EI/L)")
+cx.set_title("puzzle barriers (filled: chain of verified saddles; hollow: upper bound)" if puzzles
+             else "no puzzle pairs at this scale", fontsize=8)
 save(fig, a.out, "fig_transitions")

@@ -2,13 +2,20 @@
 // the transition graph exp_transitions writes for 4_1 is verified again from
 // its stored curves, independently of the searches that found it. Edges
 // between two different states are reported, not required (the searches may
-// find none: that is a result).
+// find none: that is a result). The puzzle barriers (connect_states()
+// between the two states of a puzzle, paper Fig. 14): every chain reported
+// connected is verified again from its stored graph; whether a puzzle
+// connects is a measurement, not a claim.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <map>
 
 #include "ek/dataset/dataset_file.hpp"
 #include "ek/knots/alexander.hpp"
+#include "ek/transitions/run.hpp"
 #include "ek/transitions/saddles.hpp"
 #include "ek/transitions/transitions_file.hpp"
 #include "results.hpp"
@@ -110,4 +117,108 @@ TEST(PaperTransitions, SummaryAgreesAndInterStateEdgesAreReported) {
   std::cout << "[ measured ] " << s.edges << " edges, " << s.inter_state_edges << " between states; "
             << s.pairs_reached << " of " << s.pairs << " double-ended searches reached B, " << s.pairs_verified
             << " verified" << std::endl;
+}
+
+namespace {
+
+/// The chain from state a to b of g (minimax_path()) checked again: `count`
+/// inter-state edges, each saddle passing the checks in `model` with rest
+/// lengths `rest` (||∇E|| <= the tolerance, exactly one negative eigenvalue
+/// and none near zero, the stored energy to 1e-8 relative) with positive
+/// barriers from both sides (from the minima its descents reached); the
+/// reported barriers (highest saddle − E_a) / (EI/L) and (highest saddle −
+/// E_b) / (EI/L), to 1e-9 relative (the CSV keeps 12 digits of the same
+/// numbers). Those are not asserted positive: the chain may enter a's or
+/// b's state at a minimum of the state lower than its stored energy
+/// (connect.hpp).
+void expect_verified_chain(const ek::TransitionGraph& g, int a, int b, const ek::RelaxOptions& model,
+                           const ek::VecX& rest, const std::map<std::string, std::string>& row, const std::string& at) {
+  const auto chain = ek::minimax_path(g, a, b);
+  ASSERT_TRUE(chain.has_value()) << at << "no chain in the stored graph";
+  EXPECT_EQ(static_cast<int>(chain->size()), std::stoi(row.at("saddles_on_chain"))) << at;
+  double top = -1e300;
+  for (const int k : *chain) {
+    const ek::TransitionEdge& e = g.edges[static_cast<size_t>(k)];
+    const ek::TransitionSaddle& x = g.saddles[static_cast<size_t>(e.saddle)];
+    EXPECT_TRUE(ek::inter_state(e)) << at;
+    EXPECT_GT(e.barrier_forward, 0.0) << at;
+    EXPECT_GT(e.barrier_backward, 0.0) << at;
+    const ek::PointCheck c = ek::check_point(x.positions, rest, model);
+    EXPECT_LE(c.gradient_norm, c.tolerance) << at << "edge " << k;
+    ASSERT_TRUE(c.index.converged) << at;
+    EXPECT_EQ(c.index.negative, 1) << at << "edge " << k << ": eigenvalues " << c.index.values.transpose();
+    EXPECT_EQ(c.index.near_zero, 0) << at << "edge " << k;
+    EXPECT_NEAR(c.energy, x.energy, kEnergyTolerance * std::abs(x.energy)) << at << "edge " << k;
+    top = std::max(top, e.energy);
+  }
+  const double forward = (top - g.states[static_cast<size_t>(a)].energy) / g.energy_scale;
+  const double backward = (top - g.states[static_cast<size_t>(b)].energy) / g.energy_scale;
+  EXPECT_NEAR(std::stod(row.at("barrier_forward_scaled")), forward, 1e-9 * std::abs(forward)) << at;
+  EXPECT_NEAR(std::stod(row.at("barrier_backward_scaled")), backward, 1e-9 * std::abs(backward)) << at;
+}
+
+}  // namespace
+
+// Each puzzle row reported connected: its stored graph (puzzle_graphs/)
+// joins state 0 (the puzzle's state_a) to state 1 by a chain of verified
+// saddles (expect_verified_chain(), in the model of the data set the puzzle
+// came from). The summary counts the rows.
+TEST(PaperTransitions, ConnectedPuzzleChainsAreVerifiedSaddles) {
+  const auto s = ek::paper::summary<ek::results::TransitionsSummary>("transitions");
+  const std::string path = ek::paper::results("transitions") + "/puzzle_barriers.csv";
+  if (!s.puzzle_pairs && !std::filesystem::exists(path)) GTEST_SKIP() << "results written before the puzzle barriers";
+  const auto rows = ek::paper::csv(path);
+  ASSERT_TRUE(s.puzzle_pairs.has_value());
+  EXPECT_EQ(*s.puzzle_pairs, static_cast<int>(rows.size()));
+  int connected = 0;
+  for (const auto& row : rows) {
+    const std::string at = row.at("knot") + " " + row.at("state_a") + "-" + row.at("state_b") + ": ";
+    std::cout << "[ measured ] puzzle " << at << row.at("status") << " after " << row.at("attempts")
+              << " searches, barrier " << row.at("barrier_forward_scaled") << " / " << row.at("barrier_backward_scaled")
+              << " EI/L, upper bound " << row.at("upper_bound_scaled") << ", " << row.at("seconds") << " s ("
+              << row.at("attempt_statuses") << ")" << std::endl;
+    EXPECT_LE(std::stoi(row.at("attempts")), 12) << at;  // the largest budget (paper scale)
+    if (!ek::paper::flag(row.at("connected"))) continue;
+    ++connected;
+    const ek::TransitionGraph g = ek::read_transitions(ek::paper::results("transitions") + "/" + row.at("graph"));
+    const ek::DatasetReader reader(ek::paper::results(row.at("dataset")));
+    ASSERT_GE(g.states.size(), 2u) << at;
+    const ek::VecX rest = ek::VecX::Constant(g.states[0].positions.rows(), reader.metadata().edge_length.value_or(1.0));
+    expect_verified_chain(g, 0, 1, ek::dataset_model(reader.metadata()), rest, row, at);
+  }
+  EXPECT_EQ(s.puzzles_connected.value_or(-1), connected);
+}
+
+// The double-ended pairs of 4_1's graph joined after connect_states()
+// (graph_pairs.csv): each chain verified again in transitions_4_1_connected.h5
+// (expect_verified_chain()); a pair joined before stays joined.
+TEST(PaperTransitions, ConnectedGraphPairsAreVerifiedChains) {
+  const auto s = ek::paper::summary<ek::results::TransitionsSummary>("transitions");
+  const std::string path = ek::paper::results("transitions") + "/graph_pairs.csv";
+  if (!s.graph_pairs_connected_after && !std::filesystem::exists(path))
+    GTEST_SKIP() << "results written before the graph pairs were connected";
+  const auto rows = ek::paper::csv(path);
+  EXPECT_EQ(static_cast<int>(rows.size()), s.pairs);
+  const ek::TransitionGraph g = ek::read_transitions(ek::paper::results("transitions") + "/transitions_4_1_connected.h5");
+  const ek::DatasetReader reader(ek::paper::results("multistability") + "/multistability.h5");
+  const ek::RelaxOptions model = ek::dataset_model(reader.metadata());
+  int before = 0, after = 0;
+  for (const auto& row : rows) {
+    const int a = std::stoi(row.at("a")), b = std::stoi(row.at("b"));
+    const std::string at = "pair " + row.at("a") + "-" + row.at("b") + ": ";
+    std::cout << "[ measured ] 4_1 " << at << (ek::paper::flag(row.at("connected_before")) ? "joined" : "apart")
+              << " before, " << (ek::paper::flag(row.at("connected_after")) ? "joined" : "apart") << " after "
+              << row.at("attempts") << " searches, barrier " << row.at("barrier_forward_scaled") << " EI/L ("
+              << row.at("attempt_statuses") << ")" << std::endl;
+    before += ek::paper::flag(row.at("connected_before"));
+    if (ek::paper::flag(row.at("connected_before"))) {
+      EXPECT_TRUE(ek::paper::flag(row.at("connected_after"))) << at;
+    }
+    if (!ek::paper::flag(row.at("connected_after"))) continue;
+    ++after;
+    const ek::VecX rest = ek::VecX::Constant(g.states[0].positions.rows(), reader.metadata().edge_length.value_or(1.0));
+    expect_verified_chain(g, a, b, model, rest, row, at);
+  }
+  EXPECT_EQ(s.graph_pairs_connected_before.value_or(-1), before);
+  EXPECT_EQ(s.graph_pairs_connected_after.value_or(-1), after);
 }

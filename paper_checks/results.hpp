@@ -51,7 +51,8 @@ std::string or_na(const std::optional<T>& v) {
   return s.str();
 }
 
-/// Rows of a CSV file with a header, as maps column -> text.
+/// Rows of a CSV file with a header, as maps column -> text (every column
+/// present: trailing empty cells as "").
 inline std::vector<std::map<std::string, std::string>> csv(const std::string& path) {
   std::ifstream in(path);
   if (!in) throw std::runtime_error("missing " + path);
@@ -66,6 +67,7 @@ inline std::vector<std::map<std::string, std::string>> csv(const std::string& pa
     std::map<std::string, std::string> row;
     size_t k = 0;
     for (std::string c; std::getline(ls, c, ',') && k < header.size(); ++k) row[header[k]] = c;
+    for (; k < header.size(); ++k) row[header[k]] = "";  // trailing empty cells (getline drops the last)
     rows.push_back(row);
   }
   return rows;

@@ -3,6 +3,7 @@
 // transition graph of 4_1's stable states (paper Section 8.5, an open
 // direction): single-ended searches from each state and double-ended
 // searches between states of neighbouring energy.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -59,10 +60,21 @@ struct TransitionsSummary {
   double energy_scale = 0.0;          ///< [energy] EI/L
   std::vector<TransitionEdgeSummary> edge_list;
   std::vector<PairSummary> pair_list;
+  /// [1] puzzle pairs (../puzzles/puzzles.csv) that connect_states() was
+  /// run on (puzzle_barriers.csv; absent before)
+  std::optional<int> puzzle_pairs;
+  std::optional<int> puzzles_connected;  ///< [1] of them, joined by a chain of verified saddles (absent before)
+  /// [1] of the double-ended pairs (pair_list), those joined by a chain of
+  /// the graph's edges (graph_pairs.csv; absent before)
+  std::optional<int> graph_pairs_connected_before;
+  /// [1] of them, joined after connect_states() on the grown graph
+  /// (transitions_4_1_connected.h5; absent before)
+  std::optional<int> graph_pairs_connected_after;
   double seconds = 0.0;               ///< [s] the whole run
 };
 EK_JSON_FIELDS(TransitionsSummary, scale, knot, cut, modes, states, states_searched, states_refused, new_states,
                searches, verified, saddles, edges, inter_state_edges, pairs, pairs_reached, pairs_verified,
-               seconds_per_search, seconds_per_pair, energy_scale, edge_list, pair_list, seconds)
+               seconds_per_search, seconds_per_pair, energy_scale, edge_list, pair_list, puzzle_pairs, puzzles_connected,
+               graph_pairs_connected_before, graph_pairs_connected_after, seconds)
 
 }  // namespace ek::results
