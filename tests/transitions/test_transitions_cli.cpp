@@ -215,3 +215,52 @@ TEST(TransitionsCli, KilledRunResumesFromItsCheckpoint) {
   expect_same_graph(ek::read_transitions(out), ek::read_transitions(dir + "/full.h5"));
   fs::remove_all(dir);
 }
+
+// `knots connect`: the searches stay within --searches, the grown graph is
+// written (the input kept), and when it reports a connection the edges it
+// names form a chain of inter-state edges from A to B in the written file;
+// `knots path` on that file then finds a chain too. Bad input: one line,
+// exit 2, nothing written.
+TEST(TransitionsCli, ConnectGrowsTheGraphWithinItsBudget) {
+  const std::string dir = temp_dir("transitions_connect");
+  const std::string ds = dir + "/ds.h5", tr = dir + "/tr.h5", grown = dir + "/grown.h5";
+  auto r = run("explore 4_1 --samples 8 -n 120 -o " + ds + " --jobs 2");
+  ASSERT_EQ(r.status, 0) << r.err;
+  r = run("transitions " + ds + " 4_1 --modes 1 --states 1 --max-pairs 0 -o " + tr + " --quiet");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const ek::TransitionGraph before = ek::read_transitions(tr);
+  ASSERT_GE(before.states.size(), 2u);
+  r = run("connect " + tr + " 4_1 0 1 --searches 6 -o " + grown + " --json");
+  ASSERT_TRUE(r.status == 0 || r.status == 1) << r.err;
+  const auto j = r.json();
+  EXPECT_EQ(j.at("connected").get<bool>(), r.status == 0);
+  EXPECT_LE(j.at("attempts").get<int>(), 6);
+  EXPECT_EQ(j.at("searches").size(), j.at("attempts").get<size_t>());
+  const ek::TransitionGraph g = ek::read_transitions(grown);
+  EXPECT_EQ(g.pairs.size(), before.pairs.size() + j.at("attempts").get<size_t>());
+  EXPECT_GE(g.states.size(), before.states.size());
+  EXPECT_EQ(ek::read_transitions(tr).pairs.size(), before.pairs.size());  // the input is unchanged
+  if (j.at("connected").get<bool>()) {
+    int at = 0;
+    for (const auto& k : j.at("edges")) {
+      const ek::TransitionEdge& e = g.edges.at(k.get<size_t>());
+      ASSERT_TRUE(e.from == at || e.to == at) << "edge " << k << " does not leave state " << at;
+      EXPECT_NE(e.from, e.to);
+      at = e.from == at ? e.to : e.from;
+    }
+    EXPECT_EQ(at, 1);
+    EXPECT_EQ(run("path " + grown + " 4_1 0 1 -o " + dir + "/p.obj").status, 0);
+  }
+  for (const std::string bad : {"connect " + tr + " 4_1 0 0 -o " + dir + "/x.h5",       // the same state
+                                "connect " + tr + " 4_1 0 999 -o " + dir + "/x.h5",     // no such state
+                                "connect " + tr + " 3_1 0 1 -o " + dir + "/x.h5",       // another knot
+                                "connect " + tr + " 4_1 0 1 --searches 0 -o " + dir + "/x.h5",
+                                "connect " + tr + " 4_1 0 1 --dataset " + dir + "/none.h5 -o " + dir + "/x.h5",
+                                "connect " + tr + " 4_1 0 1 -o " + grown}) {  // exists, no --overwrite
+    const auto b = run(bad);
+    EXPECT_EQ(b.status, 2) << bad;
+    EXPECT_EQ(std::count(b.err.begin(), b.err.end(), '\n'), 1) << bad << ": " << b.err;
+    EXPECT_FALSE(fs::exists(dir + "/x.h5")) << bad;
+  }
+  fs::remove_all(dir);
+}

@@ -25,4 +25,5 @@ int cmd_saddles(int argc, char** argv);
 int cmd_transition(int argc, char** argv);
 int cmd_transitions(int argc, char** argv);
 int cmd_path(int argc, char** argv);
+int cmd_connect(int argc, char** argv);
 }  // namespace ek::cli
