@@ -2,7 +2,7 @@
 // Section 8.5: the paper finds many stable states per knot but cannot yet
 // find the transitions between them nor their barriers). The states are the
 // clusters of ../multistability/multistability.h5 at kClusterCut (by
-// energy); from the first few, the single-ended searches (saddles.hpp), and
+// energy); from every one, the single-ended searches (saddles.hpp), and
 // double-ended searches (double_ended.hpp) between states of neighbouring
 // energy rank (knot_transitions(), run.hpp). Writes transitions_4_1.h5 (the
 // graph, transitions_file.hpp), states.csv, edges.csv, searches.csv,
@@ -38,10 +38,10 @@ namespace {
 TransitionRunOptions run_options(const Args& a) {
   TransitionRunOptions r;
   r.cut = kClusterCut;
-  r.saddles.modes = by_scale(a, 1, 2, 4);
-  r.max_states = by_scale(a, 3, 6, 0);
+  r.saddles.modes = by_scale(a, 2, 2, 4);
+  r.max_states = 0;  // every state: each must have a verified saddle (check_transitions)
   r.pair_gap = by_scale(a, 1, 2, 2);
-  r.max_pairs = by_scale(a, 2, 9, 40);
+  r.max_pairs = by_scale(a, 5, 9, 40);
   r.progress = [](const std::string& what, int, int) { std::cout << "  " << what << std::endl; };
   return r;
 }
