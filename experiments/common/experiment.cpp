@@ -110,7 +110,11 @@ void announce(const Args& a, const std::string& name, const std::string& what, d
   std::string t;
   if (expected < 120) t = std::to_string(static_cast<int>(std::ceil(expected))) + " s";
   else if (expected < 7200) t = std::to_string(static_cast<int>(std::ceil(expected / 60))) + " min";
-  else t = std::to_string(static_cast<int>(std::ceil(expected / 3600))) + " h";
+  else {
+    char hours[32];
+    std::snprintf(hours, sizeof hours, "%.1f h", std::ceil(expected / 360) / 10);  // tenths, rounded up
+    t = hours;
+  }
   std::cout << "experiment " << name << " at scale " << a.scale_name << ": " << what << "; expected run time about "
             << t << " on " << a.jobs << " jobs" << std::endl;
 }
