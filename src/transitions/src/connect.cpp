@@ -115,20 +115,12 @@ ConnectAttempt attempt(TransitionGraph& g, int u, int v, const VecX& rest, const
   at.u = u;
   at.v = v;
   const auto t0 = Clock::now();
-  TransitionSearch t;
-  try {
-    t = transition_search(g.states[static_cast<size_t>(u)].positions, g.states[static_cast<size_t>(v)].positions,
-                          rest, o.search, sim);
-  } catch (const InputError& e) {
-    t = TransitionSearch{};
-    t.status = std::string("refused: ") + e.what();
-  }
   const size_t states = g.states.size();
   const auto inter_edges = [&g] {
     return static_cast<int>(std::count_if(g.edges.begin(), g.edges.end(), inter_state));
   };
   const int edges = inter_edges();
-  add_pair(g, u, v, t, sim, threshold);
+  const TransitionSearch t = search_pair(g, u, v, rest, o.search, sim, threshold);
   at.status = t.status;
   at.reached = t.reached;
   at.path_barrier = t.reached ? t.path_barrier : 0.0;

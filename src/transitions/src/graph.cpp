@@ -144,6 +144,20 @@ void add_pair(TransitionGraph& g, int a, int b, const TransitionSearch& t, const
   g.pairs.push_back(p);
 }
 
+TransitionSearch search_pair(TransitionGraph& g, int a, int b, const VecX& rest, const TransitionSearchOptions& o,
+                             const CurveSimilarity& sim, double threshold) {
+  TransitionSearch t;
+  try {
+    t = transition_search(g.states[static_cast<size_t>(a)].positions, g.states[static_cast<size_t>(b)].positions,
+                          rest, o, sim);
+  } catch (const InputError& e) {
+    t = TransitionSearch{};
+    t.status = std::string("refused: ") + e.what();
+  }
+  add_pair(g, a, b, t, sim, threshold);
+  return t;
+}
+
 std::optional<std::vector<int>> minimax_path(const TransitionGraph& g, int a, int b) {
   const int n = static_cast<int>(g.states.size());
   require(a >= 0 && a < n && b >= 0 && b < n, "minimax_path: state out of range");

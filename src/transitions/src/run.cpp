@@ -87,24 +87,6 @@ StateSearches searches_of(const KnotSaddleOptions& o, int k, const Points& x, co
   return s;
 }
 
-/// The double-ended search between states a and b, refused ones as a status.
-void pair_search(TransitionGraph& g, int a, int b, const VecX& rest, const TransitionSearchOptions& o,
-                 const CurveSimilarity& sim, double threshold) {
-  TransitionSearch t;
-  try {
-    t = transition_search(g.states[static_cast<size_t>(a)].positions, g.states[static_cast<size_t>(b)].positions,
-                          rest, o, sim);
-  } catch (const InputError& e) {
-    t = TransitionSearch{};
-    t.status = std::string("refused: ") + e.what();
-  }
-  add_pair(g, a, b, t, sim, threshold);
-}
-
-}  // namespace
-
-namespace {
-
 /// The graph's states before any search: the clusters' representatives.
 TransitionGraph initial_graph(const KnotEntry& entry, const TransitionRunOptions& o, double rest_length) {
   const std::vector<StateCluster> clusters = clusters_at_cut(entry, o.cut);
@@ -171,7 +153,7 @@ TransitionGraph knot_transitions(const KnotEntry& entry, const DatasetMetadata& 
       o.progress("pair " + std::to_string(k + 1) + "/" + std::to_string(pairs.size()), searched + static_cast<int>(k),
                  total);
     const VecX rest = VecX::Constant(g.states[pairs[k].first].positions.rows(), rest_length);
-    pair_search(g, pairs[k].first, pairs[k].second, rest, o.pair, sim, 1.0 - o.cut);
+    search_pair(g, pairs[k].first, pairs[k].second, rest, o.pair, sim, 1.0 - o.cut);
     if (o.checkpoint) o.checkpoint(g, searched);
   }
   return g;

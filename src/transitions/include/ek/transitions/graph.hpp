@@ -109,6 +109,14 @@ void add_searches(TransitionGraph& graph, StateSearches searches, const CurveSim
 void add_pair(TransitionGraph& graph, int a, int b, const TransitionSearch& search, const CurveSimilarity& similarity,
               double threshold);
 
+/// transition_search() between states a and b of the graph (rest lengths
+/// `rest`), added by add_pair(); an InputError of the search (a or b not a
+/// stable equilibrium) becomes its status "refused: <reason>". Returns the
+/// search (its status, reached, path_barrier).
+TransitionSearch search_pair(TransitionGraph& graph, int a, int b, const VecX& rest,
+                             const TransitionSearchOptions& options, const CurveSimilarity& similarity,
+                             double threshold);
+
 /// The path from state a to state b whose highest saddle is lowest (edges
 /// in order; empty when a == b); nullopt when no chain of edges joins them.
 std::optional<std::vector<int>> minimax_path(const TransitionGraph& graph, int a, int b);
