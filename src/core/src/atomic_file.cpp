@@ -54,8 +54,7 @@ void atomic_replace(const std::string& from, const std::string& to) {
 
 AtomicFile::AtomicFile(std::string path, bool binary) : path_(std::move(path)) {
   check_writable(path_);
-  static std::atomic<unsigned> counter{0};
-  tmp_ = path_ + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(counter++);
+  tmp_ = ek::temporary_path(path_);
   out_.open(tmp_, binary ? std::ios::out | std::ios::binary | std::ios::trunc
                          : std::ios::out | std::ios::trunc);
   if (!out_) throw InputError("cannot write '" + path_ + "': " + std::strerror(errno));
@@ -79,6 +78,11 @@ void AtomicFile::commit() {
   }
   atomic_replace(tmp_, path_);
   committed_ = true;
+}
+
+std::string temporary_path(const std::string& path) {
+  static std::atomic<unsigned> counter{0};
+  return path + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(counter++);
 }
 
 void remove_stale_temporaries(const std::string& folder, const std::string& prefix) {

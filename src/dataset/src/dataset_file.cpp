@@ -114,9 +114,8 @@ struct DatasetWriter::Impl {
 
 DatasetWriter::DatasetWriter(const std::string& path, const DatasetMetadata& meta) : impl_(new Impl) {
   check_writable(path);
-  static std::atomic<unsigned> counter{0};
   impl_->path = path;
-  impl_->tmp = path + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(counter++);
+  impl_->tmp = temporary_path(path);
   impl_->file = h5::create_file(impl_->tmp);
   try {
     write_meta(impl_->file.id(), meta);

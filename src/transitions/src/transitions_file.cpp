@@ -1,7 +1,5 @@
 #include "ek/transitions/transitions_file.hpp"
 
-#include <unistd.h>
-
 #include <filesystem>
 
 #include "ek/core/atomic_file.hpp"
@@ -183,11 +181,6 @@ void write_pairs(hid_t file, const TransitionGraph& graph) {
   put(g.id(), "seconds", doubles(p, [](const P& x) { return x.seconds; }));
 }
 
-std::string temporary(const std::string& path) {
-  static int counter = 0;
-  return path + ".tmp." + std::to_string(::getpid()) + "." + std::to_string(counter++);
-}
-
 /// Removes the temporary unless committed.
 struct Temporary {
   std::string path;
@@ -203,7 +196,7 @@ void write_transitions(const std::string& path, const TransitionGraph& graph, co
                        const std::string& options, bool complete, int states_searched) {
   h5::quiet();
   check_writable(path);
-  Temporary tmp{temporary(path)};
+  Temporary tmp{temporary_path(path)};
   {
     const h5::Handle f = h5::create_file(tmp.path);
     h5::set_attr(f.id(), "format", std::string(kFormat));
@@ -423,7 +416,7 @@ void write_path_h5(const std::string& path, const std::string& knot, const std::
   require(images.size() == energies.size(), "write_path_h5: one energy per image");
   h5::quiet();
   check_writable(path);
-  Temporary tmp{temporary(path)};
+  Temporary tmp{temporary_path(path)};
   {
     const h5::Handle f = h5::create_file(tmp.path);
     h5::set_attr(f.id(), "format", std::string("elastic-knots-path"));

@@ -42,6 +42,12 @@ void check_writable(const std::string& path);
 /// Renames `from` onto `to` atomically after fsync; throws InputError on failure.
 void atomic_replace(const std::string& from, const std::string& to);
 
+/// A fresh temporary name next to `path`: "<path>.tmp.<pid>.<n>", n
+/// counting up in this process (thread-safe). The writers of this project
+/// write there and rename onto `path`; remove_stale_temporaries() knows the
+/// pattern.
+std::string temporary_path(const std::string& path);
+
 /// Removes the temporaries "<prefix>*.tmp.<pid>.<n>" in `folder` that a
 /// killed run left behind (their process is gone): writers remove their own,
 /// except after SIGKILL. Errors are ignored (a leftover temporary is harmless).
