@@ -11,6 +11,7 @@
 #include "ek/transitions/run.hpp"
 #include "ek/transitions/transitions_file.hpp"
 #include "output.hpp"
+#include "transitions_json.hpp"
 
 namespace ek::cli {
 namespace {
@@ -35,13 +36,6 @@ bool parse_connect(int argc, char** argv, ConnectCommand& c) {
   args.option("--dataset", &c.dataset, "the data set of the model (default: the one the file records)");
   args.flag("--json", &c.json, "print one JSON object");
   return args.parse(argc, argv);
-}
-
-int state_of(const std::string& text, const TransitionGraph& g, const std::string& what) {
-  const long long k = parse_integer(text, what);
-  require_input(k >= 0 && k < static_cast<long long>(g.states.size()),
-                what + " must be a state of the graph, 0.." + std::to_string(g.states.size() - 1));
-  return static_cast<int>(k);
 }
 
 Json result_json(const ConnectResult& r, int a, int b) {
@@ -79,13 +73,12 @@ int cmd_connect(int argc, char** argv) {
   ConnectCommand c;
   if (!parse_connect(argc, argv, c)) return 0;
   if (c.out.empty()) throw InputError("-o OUT.h5 is required");
-  if (std::filesystem::exists(c.out) && !c.overwrite)
-    throw InputError("output " + c.out + " exists (use --overwrite to replace it)");
+  refuse_existing_output(c.out, c.overwrite);
   check_writable(c.out);
   TransitionsFileInfo info;
   TransitionGraph g = read_transitions(c.file, info);
   require_input(g.knot == c.name, c.file + " holds the transitions of " + g.knot + ", not of " + c.name);
-  const int a = state_of(c.a_text, g, "A"), b = state_of(c.b_text, g, "B");
+  const int a = parse_state(c.a_text, g, "A"), b = parse_state(c.b_text, g, "B");
   require_input(a != b, "A and B are the same state");
   const std::string dataset = c.dataset.empty() ? info.dataset : c.dataset;
   require_input(std::filesystem::exists(dataset),

@@ -8,16 +8,10 @@
 #include "ek/transitions/graph.hpp"
 #include "ek/transitions/transitions_file.hpp"
 #include "output.hpp"
+#include "transitions_json.hpp"
 
 namespace ek::cli {
 namespace {
-
-int state_index(const std::string& text, const TransitionGraph& g, const std::string& what) {
-  const long long k = parse_integer(text, what);
-  require_input(k >= 0 && k < static_cast<long long>(g.states.size()),
-                what + " must be a state of the graph, 0.." + std::to_string(g.states.size() - 1));
-  return static_cast<int>(k);
-}
 
 /// The profile as an OBJ of images or an HDF5 path file.
 void write_profile(const std::string& out, const TransitionGraph& g, const std::vector<Points>& images,
@@ -44,7 +38,7 @@ int cmd_path(int argc, char** argv) {
   check_writable(out);
   const TransitionGraph g = read_transitions(file);
   require_input(g.knot == name, file + " holds the transitions of " + g.knot + ", not of " + name);
-  const int a = state_index(a_text, g, "A"), b = state_index(b_text, g, "B");
+  const int a = parse_state(a_text, g, "A"), b = parse_state(b_text, g, "B");
   const auto edges = minimax_path(g, a, b);
   if (!edges) {
     if (json) {

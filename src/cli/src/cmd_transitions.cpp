@@ -92,8 +92,7 @@ int cmd_transitions(int argc, char** argv) {
   TransitionsCommand c;
   if (!parse_transitions(argc, argv, c)) return 0;
   if (c.out.empty()) throw InputError("-o FILE.h5 is required");
-  if (std::filesystem::exists(c.out) && !c.overwrite)
-    throw InputError("output " + c.out + " exists (use --overwrite to replace it)");
+  refuse_existing_output(c.out, c.overwrite);
   c.run.validate();
   check_writable(c.out);
   const auto t0 = Clock::now();

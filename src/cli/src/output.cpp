@@ -2,7 +2,10 @@
 
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
+
+#include "ek/core/errors.hpp"
 
 namespace ek::cli {
 
@@ -16,6 +19,11 @@ std::string fmt(double x, int digits) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.*g", digits, x);
   return buf;
+}
+
+void refuse_existing_output(const std::string& path, bool overwrite) {
+  if (!overwrite && std::filesystem::exists(path))
+    throw InputError("output " + path + " exists (use --overwrite to replace it)");
 }
 
 }  // namespace ek::cli

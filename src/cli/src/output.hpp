@@ -19,4 +19,8 @@ inline Json number(double x) { return json_number(x); }
 /// "%.10g" formatting for human-readable output.
 std::string fmt(double x, int digits = 10);
 
+/// InputError "output <path> exists (use --overwrite to replace it)" when
+/// the output file exists and `overwrite` is false.
+void refuse_existing_output(const std::string& path, bool overwrite);
+
 }  // namespace ek::cli

@@ -4,10 +4,21 @@
 #include <iostream>
 #include <map>
 
+#include "args.hpp"
+#include "ek/core/errors.hpp"
 #include "ek/transitions/graph.hpp"
 #include "output.hpp"
 
 namespace ek::cli {
+
+/// A state of the graph given on the command line (`what`: its argument's
+/// name): an integer in 0..states−1, else InputError.
+inline int parse_state(const std::string& text, const TransitionGraph& g, const std::string& what) {
+  const long long k = parse_integer(text, what);
+  require_input(k >= 0 && k < static_cast<long long>(g.states.size()),
+                what + " must be a state of the graph, 0.." + std::to_string(g.states.size() - 1));
+  return static_cast<int>(k);
+}
 
 inline Json graph_saddles_json(const TransitionGraph& g) {
   Json a = Json::array();
