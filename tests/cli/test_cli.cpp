@@ -71,6 +71,21 @@ TEST(Cli, EmbedAndInvariants) {
   const ek::Points P = ek::read_curve(tall);
   const double zext = P.col(2).maxCoeff() - P.col(2).minCoeff(), xext = P.col(0).maxCoeff() - P.col(0).minCoeff();
   EXPECT_GT(zext, xext / 3) << zext << " vs " << xext;
+  // the paper's cylinder: strands one letter slot's arc apart along the axis,
+  // 3 strands of 8 letters (8_19's braid word): height 2·2πR/8 = 1.57 R
+  const std::string cyl = dir + "/8_19-cylinder.obj";
+  const auto c = run("embed 8_19 --style cylinder -n 300 -o " + cyl + " --json");
+  ASSERT_EQ(c.status, 0) << c.err;
+  EXPECT_EQ(c.json()["alexander"], nlohmann::json::parse("[1,-1,0,1,0,-1,1]"));
+  const ek::Points C = ek::read_curve(cyl);
+  const double R = C.leftCols(2).rowwise().norm().mean(), height = C.col(2).maxCoeff() - C.col(2).minCoeff();
+  EXPECT_NEAR(height / R, 2.0 * 2.0 * M_PI / 8.0, 0.02);
+  for (const char* bad : {"--style helix", "--style cylinder --crossing-offset 0", "--style cylinder --tilt 10"}) {
+    const auto b = run(std::string("embed 8_19 ") + bad + " -o " + dir + "/bad.obj");
+    EXPECT_EQ(b.status, 2) << bad;
+    EXPECT_EQ(std::count(b.err.begin(), b.err.end(), '\n'), 1) << b.err;
+    EXPECT_FALSE(std::filesystem::exists(dir + "/bad.obj")) << bad;
+  }
   std::filesystem::remove_all(dir);
 }
 

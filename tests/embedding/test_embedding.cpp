@@ -1,10 +1,13 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <vector>
 
 #include "ek/core/errors.hpp"
 #include "ek/embedding/embedding.hpp"
+#include "ek/geometry/curve_io.hpp"
 #include "ek/geometry/polyline.hpp"
 #include "ek/geometry/writhe.hpp"
 #include "ek/contact/contact_potential.hpp"
@@ -72,6 +75,87 @@ TEST(Embedding, TiltedBraidCoilIsAnIsotopyOfTheFlatCoil) {
   }
 }
 
+namespace {
+
+/// Radius (median distance from the axis), height along the axis and the
+/// largest radial offset from that radius of a braid on a cylinder.
+struct CylinderShape {
+  double radius = 0.0, height = 0.0, offset = 0.0;
+};
+CylinderShape cylinder_shape(const Points& P, int axis) {
+  const int a = (axis + 1) % 3, b = (axis + 2) % 3;
+  std::vector<double> r(static_cast<size_t>(P.rows()));
+  for (Eigen::Index i = 0; i < P.rows(); ++i) r[static_cast<size_t>(i)] = std::hypot(P(i, a), P(i, b));
+  std::vector<double> sorted = r;
+  std::nth_element(sorted.begin(), sorted.begin() + static_cast<long>(sorted.size() / 2), sorted.end());
+  CylinderShape c;
+  c.radius = sorted[sorted.size() / 2];
+  c.height = P.col(axis).maxCoeff() - P.col(axis).minCoeff();
+  for (double x : r) c.offset = std::max(c.offset, std::fabs(x - c.radius));
+  return c;
+}
+
+}  // namespace
+
+TEST(Embedding, BraidCylinderMatchesThePapersPublicStart) {
+  // The peer file 12n_838-braid.obj is the paper's public code's
+  // multi-covered-circle start of 12n_838 (5 strands, 12 letters): on the
+  // cylinder r = R = 10.79 about the x axis, strand positions 2πR/12 = 5.647
+  // apart along it (height 4 spacings = 22.59 = 2.09 R), crossing strands
+  // offset radially by ±0.207; 360 vertices, length 400.94. Ours with the
+  // same vertex count and length (equal edges) and the default offset of
+  // 0.21 in absolute length (the peer's wire radius is the default r = 0.2;
+  // its edges are 1.114 long): radius and height within 1%, the crossing
+  // offset within 5%.
+  const Points peer = read_curve(fixtures::peer_dir() + "/12n_838-braid.obj");
+  const CylinderShape ps = cylinder_shape(peer, 0);
+  ASSERT_NEAR(ps.radius, 10.786, 1e-3);  // what the comment above says of the file
+  ASSERT_NEAR(ps.height, 4 * 2 * M_PI * ps.radius / 12, 1e-3);
+  const auto& k = KnotTable::global().at("12n_838");
+  EmbeddingOptions o;
+  o.braid_style = BraidStyle::Cylinder;
+  o.vertices = static_cast<int>(peer.rows());
+  o.edge_length = curve_length(peer) / o.vertices;
+  o.cylinder_crossing_offset = 0.21 / o.edge_length;
+  const Embedding e = embed_knot(k, EmbeddingSource::Braid, o);
+  expect_valid(e, o.vertices, o.edge_length);
+  EXPECT_EQ(alexander(e.points), alexander(*k.pd));
+  const CylinderShape es = cylinder_shape(e.points, 2);
+  EXPECT_NEAR(es.radius / ps.radius, 1.0, 0.01);
+  EXPECT_NEAR(es.height / ps.height, 1.0, 0.01);
+  EXPECT_NEAR(es.height / es.radius, 4 * 2 * M_PI / 12, 0.01 * 4 * 2 * M_PI / 12);  // the strand spacing 2πR/L
+  EXPECT_NEAR(es.offset / ps.offset, 1.0, 0.05);
+  EXPECT_NEAR(es.offset, 0.21, 0.01);
+}
+
+TEST(Embedding, BraidCylinderIsAnIsotopyOfTheCoil) {
+  // The cylinder is the coil turned by 90° about its core circle with other
+  // proportions: from the tilted coil (strands 0.9/s R apart) the strand
+  // spacing is moved to the cylinder's 2π/L in 20 steps, each linear motion
+  // certified collision-free by the CCD, so knot type and chirality agree.
+  for (const char* name : {"4_1", "9_40"}) {
+    const auto& k = KnotTable::global().at(name);
+    const int s = k.braid->strands, L = k.braid->length();
+    EmbeddingOptions o;
+    o.braid_style = BraidStyle::Cylinder;
+    o.vertices = 600;
+    o.strand_spacing = 0.9 / s;
+    Points previous = embed_knot(k, EmbeddingSource::Braid, o).points;
+    const CurveTopology topology = CurveTopology::single(o.vertices);
+    ContactOptions co;
+    co.dhat = 0.05;
+    for (int step = 1; step <= 20; ++step) {
+      o.strand_spacing = 0.9 / s + (2 * M_PI / L - 0.9 / s) * step / 20;
+      const Embedding e = embed_knot(k, EmbeddingSource::Braid, o);
+      ASSERT_EQ(max_step(previous, e.points - previous, topology, co), 1.0) << name << " at step " << step;
+      previous = e.points;
+    }
+    o.strand_spacing = 0.0;  // the default: one letter slot's arc
+    EXPECT_LT((embed_knot(k, EmbeddingSource::Braid, o).points - previous).norm(), 1e-9) << name;
+    EXPECT_EQ(alexander(previous), alexander(*k.pd)) << name;
+  }
+}
+
 TEST(Embedding, PDDrawingOfFigureEight) {
   const auto& k = KnotTable::global().at("4_1");
   EmbeddingOptions o;
@@ -122,6 +206,14 @@ TEST(Embedding, BadOptionsAreInputErrors) {
   o.edge_length = -1;
   EXPECT_THROW(embed_knot(k, EmbeddingSource::PD, o), InputError);
   EXPECT_THROW(parse_embedding_source("dt"), InputError);
+  EXPECT_THROW(parse_braid_style("helix"), InputError);
+  o = {};
+  o.braid_style = BraidStyle::Cylinder;
+  o.cylinder_crossing_offset = 0.0;
+  EXPECT_THROW(embed_knot(k, EmbeddingSource::Braid, o), InputError);
+  o.cylinder_crossing_offset = 0.21;
+  o.braid_tilt = 0.1;  // the tilt is the coil's
+  EXPECT_THROW(embed_knot(k, EmbeddingSource::Braid, o), InputError);
   o = {};
   o.braid_tilt = std::nan("");
   EXPECT_THROW(embed_knot(k, EmbeddingSource::Braid, o), InputError);

@@ -79,6 +79,11 @@ def test_embed_equals_the_cli(knots, tmp_path):
     assert tilted.output == str(tmp_path / "t.obj")
     assert np.array_equal(tilted.points, ek.read_curve(tilted.output))
     assert tilted.alexander == [1, -1, 1]
+    cylinder = knots.json("embed", "9_40", "--style", "cylinder", "-n", "300", "-o", str(tmp_path / "c.obj"))
+    c = ek.embed("9_40", style="cylinder", vertices=300)
+    assert {k: v for k, v in c.to_dict().items() if k != "points"} == {
+        k: v for k, v in cylinder.items() if k != "output"}
+    assert np.array_equal(c.points, ek.read_curve(str(tmp_path / "c.obj")))
 
 
 def test_sample_equals_the_cli(knots, tmp_path):

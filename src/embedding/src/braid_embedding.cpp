@@ -1,33 +1,32 @@
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <vector>
 
 #include "common.hpp"
 #include "ek/core/errors.hpp"
+#include "ek/geometry/polyline.hpp"
 #include "ek/knots/alexander.hpp"
 
 namespace ek {
 
-Embedding embed_braid(const BraidWord& word, const EmbeddingOptions& o) {
-  validate(o);
-  require_input(word.length() > 0 && word.strands >= 1, "braid embedding: empty braid word");
-  require_input(closure_components(word) == 1, "braid embedding: the closure is not a knot");
+namespace {
+
+/// One dense sample of the closed braid's strand walk.
+struct StrandSample {
+  double phi = 0.0;       ///< [rad] angle about the axis
+  double position = 0.0;  ///< [1] strand position, 1..s, continuous across a letter
+  double lift = 0.0;      ///< [1] +sin πu for the over strand of a letter, -sin πu under, 0 elsewhere
+};
+
+/// Follows the strand from position 1 through the word until it returns
+/// (s turns for a knot): K samples per letter slot, the two strands of a
+/// letter exchanging positions along `step` (a smooth step [0,1] -> [0,1]).
+/// σ_i (letter +i): the strand coming from position i passes over.
+std::vector<StrandSample> strand_walk(const BraidWord& word, int K, const std::function<double(double)>& step) {
   const int s = word.strands, L = word.length();
-  const double R = 1.0;
-  const double slot = 2.0 * M_PI * R / L;
-  const double delta = o.strand_spacing > 0.0 ? o.strand_spacing : std::min(0.5 * slot, 0.6 * R / s);
-  require_input(delta * (s - 1) < 1.8 * R, "braid embedding: strand spacing too large for the coil radius");
-  const double h = o.crossing_height * delta;
-  auto offset = [&](double position) { return (position - 0.5 * (s + 1)) * delta; };
-  require_input(std::isfinite(o.braid_tilt), "braid embedding: tilt must be finite");
-  // a turned cross-section must stay off the axis (r > 0)
-  require_input(o.braid_tilt == 0.0 || std::hypot(0.5 * (s - 1) * delta, h) < R,
-                "braid embedding: strand spacing and crossing height too large for a tilted coil");
-  const double ct = std::cos(o.braid_tilt), st = std::sin(o.braid_tilt);
-  auto smoothstep = [](double u) { return u * u * (3.0 - 2.0 * u); };
-  const int K = o.samples_per_letter;
-  std::vector<Vec3> pts;
-  pts.reserve(static_cast<size_t>(s * L * K));
+  std::vector<StrandSample> out;
+  out.reserve(static_cast<size_t>(s * L * K));
   int pos = 1;
   for (int turn = 0; turn < s; ++turn) {
     for (int j = 0; j < L; ++j) {
@@ -35,26 +34,92 @@ Embedding embed_braid(const BraidWord& word, const EmbeddingOptions& o) {
       const int i = std::abs(letter);
       const bool involved = (pos == i || pos == i + 1);
       const int target = involved ? (pos == i ? i + 1 : i) : pos;
-      // σ_i: the strand from position i passes over; σ_i^{-1}: from i+1.
       const bool over = involved && ((letter > 0) == (pos == i));
       for (int k = 0; k < K; ++k) {
         const double u = static_cast<double>(k) / K;
-        const double phi = 2.0 * M_PI * (j + u) / L;
-        const double w = involved ? smoothstep(u) : 0.0;
-        // coil: (radial, height) = (position offset a, over/under lift b),
-        // turned by the tilt about the core circle
-        const double a = offset(pos + (target - pos) * w);
-        const double b = involved ? (over ? h : -h) * std::sin(M_PI * u) : 0.0;
-        const double r = R + a * ct - b * st, z = a * st + b * ct;
-        pts.emplace_back(r * std::cos(phi), r * std::sin(phi), z);
+        const double w = involved ? step(u) : 0.0;
+        const double lift = involved ? (over ? 1.0 : -1.0) * std::sin(M_PI * u) : 0.0;
+        out.push_back({2.0 * M_PI * (j + u) / L, pos + (target - pos) * w, lift});
       }
       pos = target;
     }
     if (pos == 1) break;
   }
   require(pos == 1, "braid embedding: strand did not close");
+  return out;
+}
+
+Points to_points(const std::vector<Vec3>& pts) {
   Points dense(static_cast<Eigen::Index>(pts.size()), 3);
   for (size_t k = 0; k < pts.size(); ++k) dense.row(static_cast<Eigen::Index>(k)) = pts[k].transpose();
+  return dense;
+}
+
+/// The coil (radial position offset a, lift b), turned by the tilt about the core circle r = 1.
+Points coil_layout(const BraidWord& word, const EmbeddingOptions& o) {
+  const int s = word.strands, L = word.length();
+  const double R = 1.0, slot = 2.0 * M_PI * R / L;
+  const double delta = o.strand_spacing > 0.0 ? o.strand_spacing : std::min(0.5 * slot, 0.6 * R / s);
+  require_input(delta * (s - 1) < 1.8 * R, "braid embedding: strand spacing too large for the coil radius");
+  const double h = o.crossing_height * delta;
+  require_input(std::isfinite(o.braid_tilt), "braid embedding: tilt must be finite");
+  // a turned cross-section must stay off the axis (r > 0)
+  require_input(o.braid_tilt == 0.0 || std::hypot(0.5 * (s - 1) * delta, h) < R,
+                "braid embedding: strand spacing and crossing height too large for a tilted coil");
+  const double ct = std::cos(o.braid_tilt), st = std::sin(o.braid_tilt);
+  const auto smoothstep = [](double u) { return u * u * (3.0 - 2.0 * u); };
+  std::vector<Vec3> pts;
+  for (const StrandSample& q : strand_walk(word, o.samples_per_letter, smoothstep)) {
+    const double a = (q.position - 0.5 * (s + 1)) * delta, b = h * q.lift;
+    const double r = R + a * ct - b * st, z = a * st + b * ct;
+    pts.emplace_back(r * std::cos(q.phi), r * std::sin(q.phi), z);
+  }
+  return to_points(pts);
+}
+
+/// The cylinder r = 1: heights (position - (s+1)/2)·δ, radial offsets -h·lift
+/// (h in the dense curve's units).
+Points cylinder_points(const BraidWord& word, const EmbeddingOptions& o, double h) {
+  const int s = word.strands, L = word.length();
+  const double R = 1.0;
+  const double delta = o.strand_spacing > 0.0 ? o.strand_spacing : 2.0 * M_PI * R / L;
+  const auto cosine_step = [](double u) { return 0.5 * (1.0 - std::cos(M_PI * u)); };
+  std::vector<Vec3> pts;
+  for (const StrandSample& q : strand_walk(word, o.samples_per_letter, cosine_step)) {
+    const double r = R - h * q.lift, z = (q.position - 0.5 * (s + 1)) * delta;
+    pts.emplace_back(r * std::cos(q.phi), r * std::sin(q.phi), z);
+  }
+  return to_points(pts);
+}
+
+/// The cylinder with the crossing offset given in output edge lengths: the
+/// dense curve's scale is that of the resampling (its length over n).
+Points cylinder_layout(const BraidWord& word, const EmbeddingOptions& o) {
+  require_input(o.cylinder_crossing_offset > 0.0 && std::isfinite(o.cylinder_crossing_offset),
+                "braid embedding: the cylinder's crossing offset must be positive");
+  require_input(o.braid_tilt == 0.0, "braid embedding: the tilt applies to the coil only");
+  const double unit_edge = curve_length(cylinder_points(word, o, 0.0)) / o.vertices;
+  const double h = o.cylinder_crossing_offset * unit_edge;
+  require_input(h < 0.5, "braid embedding: the cylinder's crossing offset is too large for " +
+                             std::to_string(o.vertices) + " vertices");
+  return cylinder_points(word, o, h);
+}
+
+}  // namespace
+
+std::string to_string(BraidStyle style) { return style == BraidStyle::Coil ? "coil" : "cylinder"; }
+
+BraidStyle parse_braid_style(const std::string& text) {
+  if (text == "coil") return BraidStyle::Coil;
+  if (text == "cylinder") return BraidStyle::Cylinder;
+  throw InputError("unknown braid style '" + text + "' (expected coil or cylinder)");
+}
+
+Embedding embed_braid(const BraidWord& word, const EmbeddingOptions& o) {
+  validate(o);
+  require_input(word.length() > 0 && word.strands >= 1, "braid embedding: empty braid word");
+  require_input(closure_components(word) == 1, "braid embedding: the closure is not a knot");
+  const Points dense = o.braid_style == BraidStyle::Coil ? coil_layout(word, o) : cylinder_layout(word, o);
   const AlexanderPolynomial expected = alexander(word);
   return finish_embedding(dense, o, "braid", &expected);
 }

@@ -13,14 +13,16 @@ void bind_embedding(py::module_& m) {
   m.def(
       "embed",
       [](const std::string& name, const std::string& from, int vertices, double edge_length,
-         std::optional<double> strand_spacing, double crossing_height, double tilt,
-         std::optional<std::string> output) {
+         std::optional<double> strand_spacing, double crossing_height, double tilt, const std::string& style,
+         double crossing_offset, std::optional<std::string> output) {
         EmbeddingOptions opt;
         opt.vertices = vertices;
         opt.edge_length = edge_length;
         opt.strand_spacing = strand_spacing.value_or(0.0);
         opt.crossing_height = crossing_height;
         opt.braid_tilt = tilt * M_PI / 180.0;
+        opt.braid_style = parse_braid_style(style);
+        opt.cylinder_crossing_offset = crossing_offset;
         if (output) check_writable(*output);
         const KnotRecord& knot = KnotTable::global().at(name);
         Embedding e;
@@ -36,13 +38,17 @@ void bind_embedding(py::module_& m) {
       py::arg("name"), py::kw_only(), py::arg("from_") = "braid", py::arg("vertices") = EmbeddingOptions{}.vertices,
       py::arg("edge_length") = EmbeddingOptions{}.edge_length, py::arg("strand_spacing") = py::none(),
       py::arg("crossing_height") = EmbeddingOptions{}.crossing_height, py::arg("tilt") = 0.0,
+      py::arg("style") = "coil", py::arg("crossing_offset") = EmbeddingOptions{}.cylinder_crossing_offset,
       py::arg("output") = py::none(),
       R"doc(A closed polygon of a table knot with `vertices` equal edges, as `knots embed`:
 from_="braid" the closed braid as a coil around the z axis, from_="pd" the planar
 drawing of the PD code lifted at the crossings (`from` is a Python keyword, hence
 from_). strand_spacing (braid: in coil radii; None: automatic), crossing_height
-(braid: in strand spacings), tilt (braid: degrees; 0 a flat coil, 90 stacked
-along the axis). output: also write the curve file, atomically.
+(braid coil: in strand spacings), tilt (braid coil: degrees; 0 a flat coil, 90
+stacked along the axis), style ("coil" or "cylinder": the strands stacked along the
+axis one letter slot apart, the paper's public start), crossing_offset (braid
+cylinder: radial offset at a crossing in edge lengths). output: also write the
+curve file, atomically.
 
 Fields: name, from, output (when given), vertices, edge_length, max_edge_deviation,
 clearance, alexander, and points, the (vertices, 3) array.)doc");

@@ -12,23 +12,46 @@
 
 namespace ek {
 
+/// How embed_braid() lays out a closed braid.
+enum class BraidStyle {
+  /// Strand positions side by side in the plane z = 0 around a core circle
+  /// (a flat coil; with a small strand_spacing, a multi-covered circle).
+  Coil,
+  /// Strand positions stacked along the z axis on the cylinder r = R, one
+  /// letter slot's arc 2πR/L apart: the multi-covered-circle start of the
+  /// paper's public code (its example 12n_838-braid.obj), a tall 3D start of
+  /// height (s − 1)·2πR/L.
+  Cylinder,
+};
+std::string to_string(BraidStyle style);            ///< "coil", "cylinder"
+BraidStyle parse_braid_style(const std::string& text);  ///< "coil" | "cylinder"; InputError otherwise
+
 /// Options shared by the embeddings. Lengths are in units of the output's
 /// edge length unless stated.
 struct EmbeddingOptions {
   int vertices = 400;          ///< [1] vertex count n of the output polygon (>= 4)
   double edge_length = 1.0;    ///< [length] common edge length of the output polygon
-  /// Braid closure: radial distance between neighbouring strands, in units of
-  /// the coil radius R; <= 0 picks min(0.5 · 2π/L, 0.6/s) for L letters on s
-  /// strands (a well separated coil; small values give a multi-covered circle).
+  BraidStyle braid_style = BraidStyle::Coil;  ///< braid closure: coil or cylinder
+  /// Braid closure: distance between neighbouring strand positions, in units
+  /// of the coil radius R (radial for the coil, axial for the cylinder);
+  /// <= 0 picks, for L letters on s strands, min(0.5 · 2π/L, 0.6/s) for the
+  /// coil (a well separated coil; small values give a multi-covered circle)
+  /// and 2π/L for the cylinder (one letter slot's arc).
   double strand_spacing = 0.0;  ///< [R]
-  /// Braid closure: height of the over/under offsets at a crossing, in units of
+  /// Braid coil: height of the over/under offsets at a crossing, in units of
   /// the strand spacing.
   double crossing_height = 0.5;  ///< [strand spacing]
+  /// Braid cylinder: radial offset of the two strands at a crossing (the over
+  /// strand inwards, the under strand outwards), in output edge lengths. The
+  /// default is a little more than the default wire radius r = 0.2, so the
+  /// crossing strands start just outside the contact distance d̂ = 2r, as in
+  /// the paper's public start (±0.207 at r = 0.2).
+  double cylinder_crossing_offset = 0.21;  ///< [edge length]
   /// Braid closure: turn of every cross-section about the core circle
   /// (r, z) = (R, 0); 0 is the flat coil, π/2 stacks the strands along the
   /// axis on the cylinder r = R (a tall, 3D start). Any value is an isotopy of
   /// the coil (same knot type and chirality).
-  double braid_tilt = 0.0;  ///< [rad] finite
+  double braid_tilt = 0.0;  ///< [rad] finite; coil only
   int samples_per_letter = 32;   ///< [1] dense samples per braid letter before resampling
   /// PD drawing: height of the over/under offsets at a crossing, in units of
   /// the shortest straight piece (crossing to edge midpoint) of the drawing.
@@ -71,6 +94,18 @@ struct Embedding {
 /// chirality are kept. At α = π/2 position k lies at height (k - (s+1)/2)·δ on
 /// the cylinder r = R, and the over strand of a crossing moves inwards to
 /// R - h, the under strand outwards to R + h.
+///
+/// BraidStyle::Cylinder is that tilted layout with the paper's public
+/// code's proportions: position k at height z = (k - (s+1)/2)·δ with
+/// δ = 2πR/L (one letter slot's arc), the two strands of a letter exchanging
+/// heights along the cosine step (1 - cos πu)/2 of the slot (u in [0, 1]),
+/// and the over strand at radius R - h·sin πu, the under strand at
+/// R + h·sin πu, h = cylinder_crossing_offset. Its height is (s - 1)·2πR/L
+/// (12n_838: 5 strands, 12 letters, 2.09 R). The same knot type and
+/// chirality as the coil (an isotopy of it).
+///
+/// The output has options.vertices equal edges of options.edge_length
+/// (the dense curve resampled by arc length).
 Embedding embed_braid(const BraidWord& word, const EmbeddingOptions& options = {});
 
 /// PD code realised from a planar straight-line drawing: the 4-valent plane
