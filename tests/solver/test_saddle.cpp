@@ -9,6 +9,7 @@
 #include "ek/core/sparse_assembler.hpp"
 #include "ek/geometry/polyline.hpp"
 #include "ek/solver/saddle.hpp"
+#include "ek/solver/symmetric.hpp"
 
 using namespace ek;
 
@@ -165,6 +166,33 @@ TEST(SaddleSearch, MullerBrownFindsTheKnownSaddlesFromEachMinimum) {
       }
     }
     EXPECT_GE(found, 1) << "no search from (" << c.start.transpose() << ") reached the known saddle";
+  }
+}
+
+TEST(CriticalPoint, NewtonRaphsonConvergesToTheNearestCriticalPointOfAnyIndex) {
+  // Newton–Raphson on ∇V = 0 (solve_critical_point()) from 0.05 away from
+  // each known critical point of the Müller–Brown potential reaches that
+  // point: the saddles S1, S2 (index 1) as well as the minimum C, to 1e-6.
+  const std::array<Eigen::Vector2d, 3> points{
+      {{0.21249, 0.29299}, {-0.82200, 0.62431}, {-0.05001, 0.46669}}};
+  for (const Eigen::Vector2d& x : points) {
+    MullerBrown f(x + Eigen::Vector2d(0.03, -0.04));
+    CriticalPointOptions o;
+    o.gradient_tolerance = 1e-9;
+    const CriticalPointReport r = solve_critical_point(f, o);
+    ASSERT_EQ(r.status, SolverStatus::ConvergedUnstable) << "from near (" << x.transpose() << ")";
+    EXPECT_LE(r.gradient_norm, 1e-9);
+    EXPECT_LT((f.dofs() - x).norm(), 1e-4) << f.dofs().transpose();
+    EXPECT_LE(r.iterations, 10);  // quadratic convergence
+  }
+  // A start far from any critical point either converges to one or ends
+  // with a status, never silently elsewhere.
+  MullerBrown far(Eigen::Vector2d(1.5, 2.0));
+  const CriticalPointReport r = solve_critical_point(far, {});
+  if (r.status == SolverStatus::ConvergedUnstable) {
+    EXPECT_LE(r.gradient_norm, 1e-8);
+  } else {
+    EXPECT_GT(r.gradient_norm, 1e-8);
   }
 }
 
