@@ -13,15 +13,16 @@ CONFIGURE = cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DEK_KNOT_TABLE=$(
             -DPython3_EXECUTABLE=$(PYTHON) $(CMAKE_ARGS)
 CTEST     = cd $(BUILD) && KNOT_TABLE=$(KNOT_TABLE) ctest --output-on-failure -j$(JOBS)
 
-.PHONY: help help-experiments deps configure build python test unit sanitize fuzz fuzz-build fuzz-test fuzz-seeds stress slurm-test bench figures experiments claims paper-open manifest compare-methods clean \
+.PHONY: help help-experiments deps configure build python test unit sanitize fuzz fuzz-build fuzz-test fuzz-seeds stress slurm-test bench figures experiments studies claims paper-open manifest compare-methods clean \
         explorer explorer-screenshots serve browser
 
 help:
 	@echo "make test      build, run all tests (unit, parsers, short stress, paper claims at ci scale, Python module, Slurm, sanitizers, fuzz corpus + 20 s per fuzz target)"
 	@echo "make figures   build, run every experiment at SCALE=$(SCALE), write figures/out/*.png|pdf"
-	@echo "make experiment-NAME   run one experiment (NAME: $(PAPER_EXPERIMENTS) $(BENCH_EXPERIMENTS))"
+	@echo "make experiment-NAME   run one experiment (NAME: $(PAPER_EXPERIMENTS) $(STUDY_EXPERIMENTS) $(BENCH_EXPERIMENTS))"
 	@echo "make help-experiments  each experiment's inputs and run time per scale (experiments/manifest.json)"
 	@echo "make claims    the paper checks on the results of SCALE (make figures ends with it; docs/reproducing.md)"
+	@echo "make studies   the studies beside the paper (the periodic braids' link scan) at SCALE, and their checks"
 	@echo "make paper-open  the claims not reproduced (paper_checks/open_claims.cpp), values printed"
 	@echo "make compare-methods  the default relaxation method against the previous one (hybrid) on the SCALE data sets"
 	@echo "make explorer  the data-set explorer of SCALE's data set in results/<scale>/explorer/ (docs/explorer.md)"
@@ -156,6 +157,13 @@ experiment-%: build
 experiments: build
 	@$(MAKE) --no-print-directory $(foreach e,$(PAPER_EXPERIMENTS),$(RESULTS)/$(e)/summary.json)
 
+# The studies beside the paper (group study in experiments/manifest.json: the
+# periodic braids' link scan), at SCALE, then their checks (label study).
+studies: build
+	@$(MAKE) --no-print-directory $(foreach e,$(STUDY_EXPERIMENTS),$(RESULTS)/$(e)/summary.json)
+	cd $(BUILD) && EK_PAPER_RESULTS=$(abspath $(RESULTS)) KNOT_TABLE=$(KNOT_TABLE) \
+	  ctest --output-on-failure -L '^study$$' -E '^paper_run_' -FS '.*'
+
 figures: deps experiments
 	@mkdir -p figures/out
 	@$(MAKE) --no-print-directory $(FIGURES)
@@ -202,7 +210,7 @@ compare-methods: build
 	scripts/compare_methods.sh $(BUILD) $(SCALE) $(RESULTS) $(JOBS) $(KNOT_TABLE)
 
 help-experiments:
-	@$(foreach e,$(PAPER_EXPERIMENTS) $(BENCH_EXPERIMENTS),echo "$(e): minutes $(MINUTES_$(e))";)
+	@$(foreach e,$(PAPER_EXPERIMENTS) $(STUDY_EXPERIMENTS) $(BENCH_EXPERIMENTS),echo "$(e): minutes $(MINUTES_$(e))";)
 	@echo "(inputs, outputs, figures and checks: experiments/manifest.json)"
 
 clean:

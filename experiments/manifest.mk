@@ -2,6 +2,7 @@
 # `make manifest` regenerates it. Included by the Makefile after RESULTS is set.
 
 PAPER_EXPERIMENTS := dataset milnor planarity multistability adaptive periodic_braids jumping_knots puzzles hausdorff filters cross_topology generalization saddles transitions
+STUDY_EXPERIMENTS := periodic_links
 BENCH_EXPERIMENTS := time_vs_error bench_solver
 COMPARE_EXPERIMENTS := compare_methods
 PAPER_FIGURES := fig09_milnor fig_planarity fig02_equilibria_4_1 fig06_clustering_7_7 fig08_equilibria_8_1 fig_adaptive fig16_periodic_braids fig12_jumping_knots fig14_puzzles fig05_hausdorff fig07_filters fig10_cross_topology fig15_generalization fig_saddles fig_transitions
@@ -39,7 +40,8 @@ MINUTES_milnor := ci:1 default:1 paper:5 paper10:2
 MINUTES_planarity := ci:1 default:1 paper:5 paper10:2
 MINUTES_multistability := ci:2 default:5 paper:20 paper10:5
 MINUTES_adaptive := ci:7 default:26 paper:18600 paper10:26
-MINUTES_periodic_braids := ci:3 default:75 paper:240 paper10:75
+MINUTES_periodic_braids := ci:3 default:3 paper:3 paper10:3
+MINUTES_periodic_links := ci:3 default:75 paper:240 paper10:75
 MINUTES_jumping_knots := ci:1 default:25 paper:450 paper10:25
 MINUTES_puzzles := ci:1 default:1 paper:1 paper10:1
 MINUTES_hausdorff := ci:1 default:6 paper:40 paper10:6

@@ -1,8 +1,9 @@
 // Paper Section 8.4, Fig. 16: periodic braids (σ1σ2⁻¹)^p and (σ1σ2⁻¹σ3)^p
-// relaxed from their multi-covered circles (experiments/periodic_braids.cpp):
-// twist-free, and at prescribed links under the slab and released (the
-// jumping-knot pipeline of Section 8.3, with which the paper computed Fig. 16's
-// states).
+// (experiments/periodic_braids.cpp): relaxed twist-free from our flat coil
+// and from the paper's start (the braid on a tall cylinder), and their p-fold
+// symmetric critical points (Newton within the p-fold symmetric subspace)
+// with their Morse index. The claim that every member has a stable p-fold
+// symmetric 3D state is open (open_claims.cpp).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -21,6 +22,7 @@ const std::vector<PeriodicMember>& members() {
   return s.members;
 }
 std::string label(const PeriodicMember& m) { return m.family + " p=" + std::to_string(m.p); }
+bool is_3d(double threedim) { return threedim >= ek::results::kPlanarThreedim; }
 }  // namespace
 
 // The family of paper Fig. 16: 5 members of (σ1σ2⁻¹)^p and 3 of (σ1σ2⁻¹σ3)^p,
@@ -59,7 +61,8 @@ TEST(PaperPeriodicBraids, EveryMemberIsAStableEquilibrium) {
 // Tolerance 0.1, and at most a third of the control error of a (p+1)-fold
 // rotation about the same axis (what a state without the symmetry scores).
 // Measured at n = 100·p: coils ~1e-13; 4_1 0.019 and 9_40 0.028 (the solver
-// stops next to, not on, the symmetric equilibrium: see the next test).
+// stops next to, not on, the symmetric equilibrium; the symmetric critical
+// point below is exactly symmetric).
 TEST(PaperPeriodicBraids, EveryStateHasPFoldSymmetry) {
   for (const auto& m : members()) {
     const double err = m.symmetry_error, control = m.control_error;
@@ -70,40 +73,121 @@ TEST(PaperPeriodicBraids, EveryStateHasPFoldSymmetry) {
   }
 }
 
+// "We initialized our simulation for these knots from multi-covered circle
+// embeddings": from the paper's start (its public code's braid on a tall
+// cylinder), 4_1 and 9_40, Fig. 16's first two columns, reach their 3D
+// states with both solvers (converged-stable, 3D-ness >= kPlanarThreedim,
+// 0.1), and that state is the p-fold symmetric critical point (3D, index 0,
+// the same energy to 1e-3 relative: the solver may stop in a slightly
+// asymmetric neighbour, 9_40's 3.6e-4 above it).
+TEST(PaperPeriodicBraids, FourOneAndNineFortyReachTheirSymmetric3DStatesFromTheCylinder) {
+  int found = 0;
+  for (const auto& m : members()) {
+    if (m.tabulated() != "4_1" && m.tabulated() != "9_40") continue;
+    ++found;
+    const auto& s = m.symmetric_critical_point;
+    for (const auto* e : {&m.equilibrium, &m.equilibrium_paper}) {
+      std::cout << "[ measured ] " << label(m) << " (" << m.tabulated() << ") from the cylinder, method " << e->method
+                << ": " << e->status << ", energy " << e->energy << ", 3D-ness " << e->threedim << std::endl;
+      EXPECT_TRUE(e->stable) << label(m) << " " << e->method;
+      EXPECT_TRUE(is_3d(e->threedim)) << label(m) << " " << e->method;
+      EXPECT_NEAR(e->energy, s.energy, 1e-3 * s.energy) << label(m) << " " << e->method;
+    }
+    EXPECT_TRUE(is_3d(s.threedim)) << label(m);
+    EXPECT_TRUE(s.index_complete) << label(m);
+    EXPECT_EQ(s.index, 0) << label(m);
+  }
+  EXPECT_EQ(found, 2);
+}
+
+// Symmetric criticality: every member's p-fold symmetric critical point,
+// found by Newton within the symmetric subspace from the cylinder, is a
+// critical point of the full energy: ||∇E|| (full space) <= the model's
+// tolerance, the knot type kept, exactly p-fold symmetric (rms distance from
+// the symmetry <= 1e-9 edge lengths), its Morse index computed completely
+// (some computed eigenvalue non-negative) and its eigenvectors' Fourier
+// classes summing to 1. Printed: its energy against the equilibrium's,
+// 3D-ness, index, and for each unstable mode its wavenumber (0: symmetric).
+TEST(PaperPeriodicBraids, EveryMemberHasAVerifiedSymmetricCriticalPoint) {
+  ASSERT_EQ(members().size(), 8u);
+  for (const auto& m : members()) {
+    const auto& s = m.symmetric_critical_point;
+    std::cout << "[ measured ] " << label(m) << ": symmetric critical point (" << s.solve << ") energy " << s.energy
+              << " (equilibrium from the cylinder " << m.equilibrium.energy << ", 3D-ness " << m.equilibrium.threedim
+              << "), |grad E| " << s.gradient_norm << " (tolerance " << s.tolerance << "), 3D-ness " << s.threedim
+              << ", index " << s.index << (s.index_complete ? "" : "+") << " (within the subspace "
+              << s.subspace_index << "), unstable modes' wavenumbers:";
+    for (const auto& md : s.modes)
+      if (md.eigenvalue < -s.threshold) std::cout << " " << md.dominant_class;
+    std::cout << std::endl;
+    EXPECT_TRUE(s.converged) << label(m) << ": " << s.status;
+    EXPECT_LE(s.gradient_norm, s.tolerance) << label(m);
+    EXPECT_TRUE(s.alexander_preserved) << label(m);
+    EXPECT_LE(s.residual, 1e-9) << label(m);
+    EXPECT_TRUE(s.index_complete) << label(m);
+    ASSERT_FALSE(s.modes.empty()) << label(m);
+    for (const auto& md : s.modes) {
+      double sum = 0.0;
+      for (double w : md.classes) sum += w;
+      EXPECT_NEAR(sum, 1.0, 1e-6) << label(m);
+    }
+  }
+}
+
 // "The crossing patterns form two regular p-gons, one at the top and one at
-// the bottom of each embedding. For odd p these align, while for even p they
-// are rotated relative to each other by π/p." Checked on every member whose
-// relaxed state is 3D (3D-ness >= kPlanarThreedim, 0.1; Fig. 16's first two columns, 4_1 and
-// 9_40, must be among them), at the p-fold symmetric equilibrium next to it:
-// the relaxed state's p-fold average relaxed again (experiments/
-// periodic_braids.cpp). It must be converged-stable, p-fold symmetric
-// (error <= 1e-6), within 1e-3 relative energy of the relaxed state, and its
-// braid crossings (projection crossings along the axis whose strands pass
-// within kCrossingGap = 2 d̂) must lie within 5 degrees of two regular p-gons whose relative
-// rotation is within 5 degrees of 0 (odd p) or 180/p (even p).
-TEST(PaperPeriodicBraids, SymmetricStatesHaveTwoRegularPolygons) {
-  int three_d = 0;
+// the bottom of each embedding." On every member whose p-fold symmetric
+// critical point is 3D (4_1 and 9_40 must be among them): its 2p braid
+// crossings (projection crossings along the axis whose strands pass within
+// kCrossingGap = 2 d̂) lie within 5 degrees of two regular p-gons rotated
+// against each other by the family's angle within 5 degrees: 180/p for
+// (σ1σ2⁻¹)^p, 0 for (σ1σ2⁻¹σ3)^p. (The paper ties the rotation to the parity
+// of p: "for odd p these align, while for even p they are rotated relative
+// to each other by π/p"; measured, it follows the family: docs/reproducing.md.)
+TEST(PaperPeriodicBraids, Symmetric3DCriticalPointsHaveTwoRegularPolygons) {
   bool four_one = false, nine_forty = false;
   for (const auto& m : members()) {
-    if (m.threedim < ek::results::kPlanarThreedim) continue;
-    ++three_d;
+    const auto& s = m.symmetric_critical_point;
+    if (!is_3d(s.threedim)) continue;
     four_one |= m.tabulated() == "4_1";
     nine_forty |= m.tabulated() == "9_40";
-    const auto& sy = m.symmetric;
-    const double rot = sy.relative_rotation_deg, exp = m.expected_rotation_deg;
-    std::cout << "[ measured ] " << label(m) << ": symmetric equilibrium " << sy.status << ", energy "
-              << sy.energy_above << " from the relaxed state's, symmetry error " << sy.symmetry_error << ", "
-              << sy.crossings << " braid crossings, p-gon error " << sy.polygon_error_deg << " deg, rotation " << rot
-              << " deg (expected " << exp << "); relaxed state: p-gon error " << m.polygon_error_deg
-              << " deg, rotation " << m.relative_rotation_deg << " deg" << std::endl;
-    EXPECT_EQ(sy.status, "converged-stable") << label(m);
-    EXPECT_LE(sy.symmetry_error, 1e-6) << label(m);
-    EXPECT_LE(std::fabs(sy.energy_above), 1e-3 * m.energy) << label(m);
-    EXPECT_EQ(sy.crossings, 2 * m.p) << label(m);  // one p-gon at each end
-    EXPECT_LE(sy.polygon_error_deg, 5.0) << label(m);
-    EXPECT_LE(std::fabs(rot - exp), 5.0) << label(m);
+    std::cout << "[ measured ] " << label(m) << ": " << s.crossings << " braid crossings, p-gon error "
+              << s.polygon_error_deg << " deg, rotation " << s.rotation_deg << " deg (expected "
+              << m.expected_rotation_deg << ")" << std::endl;
+    EXPECT_EQ(s.crossings, 2 * m.p) << label(m);
+    EXPECT_LE(s.polygon_error_deg, 5.0) << label(m);
+    EXPECT_LE(std::fabs(s.rotation_deg - m.expected_rotation_deg), 5.0) << label(m);
   }
-  EXPECT_TRUE(four_one && nine_forty) << three_d << " 3D members; 4_1 and 9_40 must be 3D (Fig. 16)";
+  EXPECT_TRUE(four_one && nine_forty) << "4_1 and 9_40 must have 3D symmetric critical points (Fig. 16)";
+}
+
+// Where the subspace's minimum is flat, the search for a 3D symmetric
+// critical point is consistent: the restricted descent from a cylinder as
+// tall as it is wide passed through 3D states (3D-ness >= 0.5) and its bottleneck there (the 3D
+// image of least gradient norm) is not critical (||∇E|| above the tolerance:
+// otherwise it would be the critical point), and Newton–Raphson from it did
+// not end at a 3D critical point (or the member would have one). Printed:
+// the bottleneck's gradient norm, energy and p-gons (the state Fig. 16 draws
+// for these members, labelled "not a critical point").
+TEST(PaperPeriodicBraids, FlatMembersBottleneckIsNotCritical) {
+  for (const auto& m : members()) {
+    if (is_3d(m.symmetric_critical_point.threedim)) {
+      // 3D from the subspace's minimum, or found by the search
+      if (m.three_d_search) {
+        EXPECT_TRUE(m.three_d_search->found) << label(m);
+      }
+      continue;
+    }
+    ASSERT_TRUE(m.three_d_search.has_value()) << label(m);
+    const auto& b = *m.three_d_search;
+    std::cout << "[ measured ] " << label(m) << ": restricted descent of " << b.images << " images; bottleneck image "
+              << b.image << ": |grad E| " << b.gradient_norm << ", energy " << b.energy << ", 3D-ness " << b.threedim
+              << ", " << b.crossings << " braid crossings, p-gon error " << b.polygon_error_deg << " deg, rotation "
+              << b.rotation_deg << " deg; Newton-Raphson from it: " << b.root_status << ", energy " << b.root_energy
+              << ", |grad E| " << b.root_gradient_norm << ", 3D-ness " << b.root_threedim << std::endl;
+    EXPECT_GE(b.threedim, b.search_threedim) << label(m);
+    EXPECT_GT(b.gradient_norm, m.symmetric_critical_point.tolerance) << label(m);
+    EXPECT_FALSE(b.found) << label(m);
+  }
 }
 
 // The symmetry axis recorded in summary.json (which Fig. 16 draws along) is
@@ -112,79 +196,10 @@ TEST(PaperPeriodicBraids, SymmetricStatesHaveTwoRegularPolygons) {
 // (the curve is written with 17 significant digits; tolerance 1e-9).
 TEST(PaperPeriodicBraids, RecordedAxisReproducesTheSymmetryError) {
   for (const auto& m : members()) {
-    ASSERT_TRUE(m.axis && m.center && m.curve) << label(m) << ": summary.json predates the axis: rerun the experiment";
-    const ek::Vec3 axis((*m.axis)[0], (*m.axis)[1], (*m.axis)[2]), c((*m.center)[0], (*m.center)[1], (*m.center)[2]);
+    const ek::Vec3 axis(m.axis[0], m.axis[1], m.axis[2]), c(m.center[0], m.center[1], m.center[2]);
     EXPECT_NEAR(axis.norm(), 1.0, 1e-12) << label(m);
-    const ek::Points P = ek::read_curve(ek::paper::results("periodic_braids") + "/" + *m.curve);
+    const ek::Points P = ek::read_curve(ek::paper::results("periodic_braids") + "/" + m.curve);
     EXPECT_NEAR(ek::rotational_symmetry_error(P, c, axis, m.p), m.symmetry_error, 1e-9) << label(m);
   }
 }
 
-// Fig. 16's states through the paper's pipeline (Section 8.3): the coil
-// relaxed with Θ fixed at prescribed links Lk_0 + t (Lk_0 the coil's
-// twist-free link), under the slab |z| < 2 d̂, then released. Every run holds
-// its link (|Tw + Wr - Lk| <= 1e-6 turns: the full model with Θ fixed); a run
-// is 3D exactly when converged-stable with 3D-ness >= kPlanarThreedim (0.1).
-// Printed per member: the stable interval of the flat coil, its onsets and
-// the nearest 3D states; a member that deploys at no link of the scan is
-// listed with the scan's range (open_claims.cpp asserts the paper's claim).
-TEST(PaperPeriodicBraids, LinkScanHoldsTheLinkAndFindsTheOnsets) {
-  for (const auto& m : members()) {
-    ASSERT_TRUE(m.link_scan) << label(m) << ": summary.json predates the link scan: rerun the experiment";
-    const auto& ls = *m.link_scan;
-    ASSERT_FALSE(ls.runs.empty()) << label(m);
-    for (const auto& r : ls.runs) {
-      std::cout << "[ measured ] " << label(m) << " Lk " << r.link << ": " << r.status << ", energy " << r.energy
-                << ", 3D-ness " << r.threedim << ", writhe " << r.writhe << " (flat " << r.flat_writhe
-                << "), p-fold symmetry error " << r.symmetry_error << (r.three_d ? " (3D)" : "")
-                << (r.buckled ? " (buckled)" : "") << std::endl;
-      EXPECT_LE(r.link_error, 1e-6) << label(m) << " Lk " << r.link;
-      EXPECT_EQ(r.three_d, r.status == "converged-stable" && r.threedim >= ek::results::kPlanarThreedim)
-          << label(m) << " Lk " << r.link;
-    }
-    using ek::paper::or_na;
-    std::cout << "[ measured ] " << label(m) << ": Lk_0 " << ls.center << ", flat and stable on [" << or_na(ls.flat_low)
-              << ", " << or_na(ls.flat_high) << "], buckled at " << or_na(ls.buckled_below) << " and "
-              << or_na(ls.buckled_above) << ", nearest 3D states at " << or_na(ls.three_d_below) << " and "
-              << or_na(ls.three_d_above) << std::endl;
-    if (!ls.deploys())
-      std::cout << "[ measured ] " << label(m) << ": no stable 3D state at links " << ls.grid.front() << " to "
-                << ls.grid.back() << " (" << ls.runs.size() << " links)" << std::endl;
-  }
-}
-
-// "The crossing patterns form two regular p-gons, one at the top and one at
-// the bottom of each embedding. For odd p these align, while for even p they
-// are rotated relative to each other by π/p." On every member whose link
-// scan has a p-fold symmetric 3D state (the scan's most symmetric 3D states
-// averaged over their p periods and relaxed again at their links; the best
-// one converged-stable, 3D-ness >= 0.1, p-fold symmetry error <= 1e-6); 4_1
-// and 9_40 must be among them (Fig. 16's first two columns; they deploy
-// twist-free). Its 2p braid crossings (projection crossings along the axis
-// whose strands pass within kCrossingGap = 2 d̂) lie within 5 degrees of two
-// regular p-gons whose relative rotation is within 5 degrees of 0 (odd p) or
-// 180/p (even p). Members that deploy without such a state are in
-// open_claims.cpp.
-TEST(PaperPeriodicBraids, SymmetricDeployedStatesHaveTwoRegularPolygons) {
-  bool four_one = false, nine_forty = false;
-  for (const auto& m : members()) {
-    ASSERT_TRUE(m.link_scan) << label(m) << ": summary.json predates the link scan: rerun the experiment";
-    if (!m.link_scan->symmetric) continue;
-    const auto& y = *m.link_scan->symmetric;
-    const double exp = m.expected_rotation_deg;
-    std::cout << "[ measured ] " << label(m) << ": symmetrized 3D state at Lk " << y.link << " " << y.status
-              << ", energy " << y.energy << " (" << y.energy_above << " from the scan's state), 3D-ness "
-              << y.threedim << ", writhe " << y.writhe << ", symmetry error " << y.symmetry_error << " (from "
-              << y.from_symmetry_error << "), " << y.crossings << " braid crossings, p-gon error "
-              << y.polygon_error_deg << " deg, rotation " << y.relative_rotation_deg << " deg (expected " << exp
-              << ")" << std::endl;
-    if (y.status != "converged-stable" || y.threedim < ek::results::kPlanarThreedim || y.symmetry_error > 1e-6)
-      continue;
-    four_one |= m.tabulated() == "4_1";
-    nine_forty |= m.tabulated() == "9_40";
-    EXPECT_EQ(y.crossings, 2 * m.p) << label(m);
-    EXPECT_LE(y.polygon_error_deg, 5.0) << label(m);
-    EXPECT_LE(std::fabs(y.relative_rotation_deg - exp), 5.0) << label(m);
-  }
-  EXPECT_TRUE(four_one && nine_forty) << "4_1 and 9_40 must have p-fold symmetric 3D states (Fig. 16)";
-}

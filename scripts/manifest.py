@@ -39,8 +39,8 @@ def load():
         missing = [k for k in FIELDS if k not in e]
         if missing:
             fail(f"experiment {e.get('name')}: missing {', '.join(missing)}")
-        if e["group"] not in ("paper", "bench", "compare"):
-            fail(f"experiment {e['name']}: group must be paper, bench or compare")
+        if e["group"] not in ("paper", "study", "bench", "compare"):
+            fail(f"experiment {e['name']}: group must be paper, study, bench or compare")
         if not os.path.exists(os.path.join(ROOT, "experiments", e["name"] + ".cpp")):
             fail(f"experiment {e['name']}: no experiments/{e['name']}.cpp")
         for i in e["inputs"]:
@@ -52,10 +52,10 @@ def load():
         for c in e["checks"]:
             if not os.path.exists(os.path.join(ROOT, "paper_checks", f"check_{c}.cpp")):
                 fail(f"experiment {e['name']}: no paper_checks/check_{c}.cpp")
-        if e["group"] == "paper" and "summary.json" not in e["outputs"]:
-            fail(f"experiment {e['name']}: a paper experiment writes summary.json")
-        if e["group"] == "paper" and not e["ci_timeout_seconds"] > 0:
-            fail(f"experiment {e['name']}: a paper experiment needs ci_timeout_seconds > 0")
+        if e["group"] in ("paper", "study") and "summary.json" not in e["outputs"]:
+            fail(f"experiment {e['name']}: a paper or study experiment writes summary.json")
+        if e["group"] in ("paper", "study") and not e["ci_timeout_seconds"] > 0:
+            fail(f"experiment {e['name']}: a paper or study experiment needs ci_timeout_seconds > 0")
     by_name = {e["name"]: e for e in experiments}
     state = {}
 
@@ -80,12 +80,13 @@ def makefile(experiments):
            "# `make manifest` regenerates it. Included by the Makefile after RESULTS is set.",
            "",
            "PAPER_EXPERIMENTS := " + " ".join(e["name"] for e in paper),
+           "STUDY_EXPERIMENTS := " + " ".join(e["name"] for e in experiments if e["group"] == "study"),
            "BENCH_EXPERIMENTS := " + " ".join(e["name"] for e in experiments if e["group"] == "bench"),
            "COMPARE_EXPERIMENTS := " + " ".join(e["name"] for e in experiments if e["group"] == "compare"),
            "PAPER_FIGURES := " + " ".join(f for e in paper for f in e["figures"]),
            "",
            "# an experiment reruns when its summary.json is older than its inputs' summaries"]
-    for e in paper:
+    for e in paper + [e for e in experiments if e["group"] == "study"]:
         if e["inputs"]:
             deps = " ".join(f"$(RESULTS)/{i}/summary.json" for i in e["inputs"])
             out.append(f"$(RESULTS)/{e['name']}/summary.json: {deps}")

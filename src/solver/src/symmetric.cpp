@@ -230,6 +230,7 @@ void SymmetricSearchOptions::validate() const {
   require_input(!relax.link && !relax.full_model && !relax.slab,
                 "symmetric critical point: only the twist-free model (no link, no full model, no slab)");
   require_input(max_modes >= 2, "symmetric critical point: max_modes must be at least 2");
+  require_input(max_root_iterations >= 0, "symmetric critical point: max_root_iterations must be >= 0");
   require_input(std::isfinite(index_threshold), "symmetric critical point: the index threshold must be finite");
 }
 
@@ -258,6 +259,7 @@ void morse_index(Objective& f, const CyclicSymmetry& symmetry, int max_count, do
     m.eigenvalue = modes.values(k);
     m.classes = symmetry_classes(modes.vectors.col(k), symmetry);
     m.dominant_class = static_cast<int>(std::max_element(m.classes.begin(), m.classes.end()) - m.classes.begin());
+    m.vector = modes.vectors.col(k);
     out.modes.push_back(m);
   }
 }
@@ -374,7 +376,7 @@ SymmetricCriticalPoint find_symmetric_critical_point(const Points& start, const 
   } else {
     CriticalPointOptions co;
     co.gradient_tolerance = model.newton.gradient_tolerance;
-    co.max_iterations = std::min(model.newton.max_iterations, 500);
+    co.max_iterations = std::min(model.newton.max_iterations, options.max_root_iterations);
     const CriticalPointReport report = solve_critical_point(model.reduced, co);
     out.status = report.status;
     out.iterations = report.iterations;

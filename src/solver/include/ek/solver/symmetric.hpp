@@ -149,6 +149,10 @@ struct SymmetricSearchOptions {
   /// d̂, ω, tolerance, iteration cap and Newton options as for relax().
   RelaxOptions relax;
   SymmetricSolve solve = SymmetricSolve::Minimize;  ///< see SymmetricSolve
+  /// [1] iteration cap of SymmetricSolve::Root (Newton–Raphson converges
+  /// quadratically near a non-degenerate critical point, in a few dozen
+  /// iterations; a start that needs more is far from one)
+  int max_root_iterations = 100;
   /// [1] most eigenpairs of the full Hessian computed for the Morse index
   /// (the index is complete when one computed eigenvalue is non-negative).
   int max_modes = 24;
@@ -166,6 +170,7 @@ struct SymmetricMode {
   /// wavenumber k (0: symmetric, k >= 1: breaks the p-fold symmetry)
   std::vector<double> classes;
   int dominant_class = 0;       ///< [1] the class of largest weight
+  VecX vector;                  ///< 3n, unit
 };
 
 /// A p-fold symmetric critical point: Newton restricted to the symmetric
