@@ -84,9 +84,10 @@ TEST(Summaries, MissingRequiredKeyNamesIt) {
   EXPECT_THROW(parse_summary<MilnorSummary>(j, "x"), std::runtime_error);
 }
 
-// Typed flags and null for "not tabulated"; the legacy "1"/"0"/"-" strings
-// and "" for no knot read as the same values.
-TEST(Summaries, PeriodicBraidsFlagsAndLegacyStrings) {
+// Typed flags and null for "not tabulated"; a missing required field (here
+// the symmetric critical point) is an error naming it; the optional 3D
+// search is null when absent.
+TEST(Summaries, PeriodicBraidsFlagsAndRequiredFields) {
   PeriodicBraidsSummary s;
   s.scale = "ci";
   PeriodicMember m;
@@ -94,33 +95,31 @@ TEST(Summaries, PeriodicBraidsFlagsAndLegacyStrings) {
   m.p = 2;
   m.knot = "4_1";
   m.alexander_matches_table = true;
-  m.axis = std::array<double, 3>{0.0, 0.0, 1.0};
+  m.symmetric_critical_point.index = 0;
+  m.symmetric_critical_point.modes.push_back({-1.5e-6, 1, {0.0, 1.0}});
   s.members.push_back(m);
   m.p = 7;
   m.knot.reset();
   m.alexander_matches_table.reset();
+  m.three_d_search = PeriodicThreeDSearch{};
+  m.three_d_search->gradient_norm = 3e-3;
   s.members.push_back(m);
   const ordered_json j = s;
   EXPECT_TRUE(j["members"][0]["alexander_matches_table"].is_boolean());
   EXPECT_TRUE(j["members"][1]["alexander_matches_table"].is_null());
   EXPECT_TRUE(j["members"][1]["knot"].is_null());
+  EXPECT_TRUE(j["members"][0]["three_d_search"].is_null());
   const auto r = round_trip(s);
   EXPECT_EQ(r.members[0].tabulated(), "4_1");
-  EXPECT_EQ(r.members[0].axis->at(2), 1.0);
+  EXPECT_EQ(r.members[0].symmetric_critical_point.modes.at(0).dominant_class, 1);
   EXPECT_EQ(r.members[1].tabulated(), "");
-  json old = j;
-  old["members"][0]["alexander_matches_table"] = "1";
-  old["members"][1]["alexander_matches_table"] = "-";
-  old["members"][1]["knot"] = "";
-  old["members"][0].erase("axis");
-  const auto o = parse_summary<PeriodicBraidsSummary>(old, "old");
-  EXPECT_EQ(o.members[0].alexander_matches_table, std::optional<bool>(true));
-  EXPECT_FALSE(o.members[1].alexander_matches_table.has_value());
-  EXPECT_EQ(o.members[1].tabulated(), "");
-  EXPECT_FALSE(o.members[0].axis.has_value());
-  EXPECT_FALSE(o.radius.has_value());  // not set above: null, read back as absent
-  old["members"][0]["alexander_matches_table"] = "yes";
-  EXPECT_THROW(parse_summary<PeriodicBraidsSummary>(old, "old"), std::runtime_error);
+  EXPECT_EQ(r.members[1].three_d_search->gradient_norm, 3e-3);
+  json bad = j;
+  bad["members"][0].erase("symmetric_critical_point");
+  EXPECT_THROW(parse_summary<PeriodicBraidsSummary>(bad, "bad"), std::runtime_error);
+  bad = j;
+  bad["members"][0]["alexander_matches_table"] = "yes";
+  EXPECT_THROW(parse_summary<PeriodicBraidsSummary>(bad, "bad"), std::runtime_error);
 }
 
 // The per-knot objects sit under the knot names at the top level.
