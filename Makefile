@@ -39,7 +39,7 @@ help:
 	@echo "make deps      install missing Debian packages (scripts/install-deps.sh)"
 	@echo "make manifest  regenerate experiments/manifest.mk from experiments/manifest.json"
 	@echo "make clean     remove build folders (results/ and figures/out/ are kept)"
-	@echo "Variables: KNOT_TABLE=$(KNOT_TABLE) SCALE=ci|default|paper|paper10 JOBS=$(JOBS) BUILD=$(BUILD) FUZZ_SECONDS=$(FUZZ_SECONDS)"
+	@echo "Variables: KNOT_TABLE=$(KNOT_TABLE) SCALE=ci|default|paper|paper10|sample12 JOBS=$(JOBS) BUILD=$(BUILD) FUZZ_SECONDS=$(FUZZ_SECONDS)"
 	@echo "Documentation: README.md; docs/reproducing.md (targets, scales, claims), docs/cli.md (knots),"
 	@echo "  docs/models.md, docs/performance.md, docs/dataset-format.md, docs/results.md (results files),"
 	@echo "  docs/cluster.md (Slurm), docs/explorer.md (the data-set explorer)"
@@ -138,7 +138,7 @@ bench: build
 	@$(PYTHON) scripts/bench_summary.py results/bench
 
 # ---- paper experiments and figures -------------------------------------------
-# make experiment-NAME [SCALE=ci|default|paper|paper10] runs one experiment (always);
+# make experiment-NAME [SCALE=ci|default|paper|paper10|sample12] runs one experiment (always);
 # make figures runs every experiment whose results are missing or older than
 # its program (and inputs), then draws every figure from the results files.
 # The experiments, their inputs and figures: experiments/manifest.json, from

@@ -4,6 +4,9 @@
 //   default: every knot with 3..8 crossings, 40 samples each
 //   paper:   all 2,977 knots with up to 12 crossings, adaptive sampling (50 + 10, at most 500)
 //   paper10: all 249 knots with up to 10 crossings, adaptive sampling as the paper
+//   sample12: a stratified sample of the knots with 11 and 12 crossings (10% of
+//            every stratum of crossing number, alternating, bridge index, and
+//            every BB knot: ek::stratified_sample), adaptive sampling as the paper
 // n = 400 unit edges, r = 0.2, E = 2000 (length/diameter 1000), seed 1.
 // Writes dataset.h5 (docs/dataset-format.md) and summary.json (docs/results.md).
 #include <iostream>
@@ -11,6 +14,7 @@
 #include "dataset_summary.hpp"
 #include "ek/dataset/run.hpp"
 #include "ek/dataset/sampling_cost.hpp"
+#include "ek/knots/selection.hpp"
 #include "experiment.hpp"
 #include "scales.hpp"
 
@@ -94,11 +98,14 @@ void add_sampling_cost(const std::string& path, results::DatasetSummary& sum) {
 int main(int argc, char** argv) {
   return run_experiment(argc, argv, "exp_dataset", "Builds the data set of equilibria for the scale.", [](const Args& a) {
     ExploreOptions o = base_options(a);
-    const bool paper_sampling = a.scale == Scale::Paper || a.scale == Scale::Paper10;
-    const int max_crossings = a.scale == Scale::Paper10 ? 10 : by_scale(a, 7, 8, kPaperMaxCrossings);
+    const bool paper_sampling = a.scale == Scale::Paper || a.scale == Scale::Paper10 || a.scale == Scale::Sample12;
+    const int max_crossings = a.scale == Scale::Paper10    ? 10
+                              : a.scale == Scale::Sample12 ? kPaperMaxCrossings
+                                                           : by_scale(a, 7, 8, kPaperMaxCrossings);
     o.samples = paper_sampling ? 500 : by_scale(a, 12, 40, 500);
     o.adaptive = paper_sampling;
-    const auto knots = KnotTable::global().up_to_crossings(max_crossings);
+    const auto knots = a.scale == Scale::Sample12 ? stratified_sample(KnotTable::global(), {})
+                                                  : KnotTable::global().up_to_crossings(max_crossings);
     std::vector<int> crossings;
     for (const KnotRecord* k : knots) crossings.push_back(k->crossing_number);
     const double estimate = estimated_core_seconds(o, crossings) / a.jobs;
@@ -106,7 +113,7 @@ int main(int argc, char** argv) {
              std::to_string(knots.size()) + " knots with up to " + std::to_string(max_crossings) + " crossings, " +
                  o.sampling_description() + " samples",
              estimate);
-    if (max_crossings < kPaperMaxCrossings)
+    if (max_crossings < kPaperMaxCrossings || a.scale == Scale::Sample12)
       std::cout << "exp_dataset: estimate before the run for every knot up to 12 crossings with this sampling: "
                 << estimated_core_seconds(o, crossing_numbers(kPaperMaxCrossings)) / 3600.0 << " core-hours"
                 << std::endl;

@@ -40,7 +40,8 @@ Args parse_args(int argc, char** argv, const std::string& name, const std::strin
       return argv[++i];
     };
     if (s == "--help" || s == "-h") {
-      std::cout << "usage: " << name << " --scale ci|default|paper|paper10 --out DIR [--jobs J] [--method M] [--seed S]\n"
+      std::cout << "usage: " << name
+                << " --scale ci|default|paper|paper10|sample12 --out DIR [--jobs J] [--method M] [--seed S]\n"
                 << description << "\n";
       std::exit(0);
     } else if (s == "--scale") {
@@ -49,7 +50,8 @@ Args parse_args(int argc, char** argv, const std::string& name, const std::strin
       else if (a.scale_name == "default") a.scale = Scale::Default;
       else if (a.scale_name == "paper") a.scale = Scale::Paper;
       else if (a.scale_name == "paper10") a.scale = Scale::Paper10;
-      else fail("--scale '" + a.scale_name + "': expected ci, default, paper or paper10");
+      else if (a.scale_name == "sample12") a.scale = Scale::Sample12;
+      else fail("--scale '" + a.scale_name + "': expected ci, default, paper, paper10 or sample12");
     } else if (s == "--out") {
       a.out = value();
     } else if (s == "--jobs") {

@@ -21,7 +21,11 @@ namespace ek::exp {
 ///  - paper10: the paper's data set up to 10 crossings (249 knots, adaptive
 ///             sampling up to 500); every other experiment at its default
 ///             parameters (by_scale() gives the default value)
-enum class Scale { CI, Default, Paper, Paper10 };
+///  - sample12: the paper's data set on a deterministic stratified sample of
+///             the 11- and 12-crossing knots (10% of every stratum and every
+///             BB knot, ek::stratified_sample; adaptive sampling up to 500);
+///             every other experiment at its default parameters
+enum class Scale { CI, Default, Paper, Paper10, Sample12 };
 
 struct Args {
   Scale scale = Scale::Default;
@@ -37,7 +41,7 @@ struct Args {
   std::uint64_t seed = 1;
 };
 
-/// Parses `--scale ci|default|paper|paper10 --out DIR [--jobs J] [--method M] [--seed S]` (and --help);
+/// Parses `--scale ci|default|paper|paper10|sample12 --out DIR [--jobs J] [--method M] [--seed S]` (and --help);
 /// creates DIR. Bad arguments: one line on stderr, exit status 2.
 ///
 /// Reruns: a DIR holding a finished run (DIR/summary.json, written last by
@@ -52,8 +56,8 @@ Args parse_args(int argc, char** argv, const std::string& name, const std::strin
 /// DIR.previous for an output folder DIR ("dir/" and "dir" give the same).
 std::filesystem::path previous_folder(const std::string& out);
 
-/// Pick a value by scale (paper10 takes the default value: only the data
-/// set has its own paper10 parameters).
+/// Pick a value by scale (paper10 and sample12 take the default value: only
+/// the data set has its own parameters at those scales).
 template <class T>
 T by_scale(const Args& a, T ci, T def, T paper) {
   return a.scale == Scale::CI ? ci : a.scale == Scale::Paper ? paper : def;

@@ -1,10 +1,12 @@
-// knots dataset (--max-crossings C | --names A,B,...) -o DATASET.h5 [--jobs J] [--shard I/N] [--adaptive] ...
+// knots dataset (--max-crossings C [--min-crossings C0] [--stratified F] | --names A,B,...) -o DATASET.h5
+//               [--jobs J] [--shard I/N] [--adaptive] ...
 #include <iostream>
 #include <algorithm>
 #include <sstream>
 
 #include "commands.hpp"
 #include "ek/dataset/run.hpp"
+#include "ek/knots/selection.hpp"
 #include "explore_options.hpp"
 #include "output.hpp"
 
@@ -12,11 +14,18 @@ namespace ek::cli {
 
 int cmd_dataset(int argc, char** argv) {
   std::string out, names, shard = "1/1";
-  std::optional<int> max_crossings;
+  std::optional<int> max_crossings, min_crossings;
+  std::optional<double> stratified;
   bool json = false;
   ExploreArgs a;
-  ArgParser args("dataset", "(--max-crossings C | --names A,B,...) -o DATASET.h5 [--jobs J] [--shard I/N] [--adaptive] [--json]");
+  ArgParser args("dataset",
+                 "(--max-crossings C [--min-crossings C0] [--stratified F] | --names A,B,...) -o DATASET.h5 [--jobs J] "
+                 "[--shard I/N] [--adaptive] [--json]");
   args.option("--max-crossings", &max_crossings, "every table knot with 3 .. C crossings");
+  args.option("--min-crossings", &min_crossings, "with --max-crossings: only knots with at least C0 crossings (default 3)");
+  args.option("--stratified", &stratified,
+              "with --max-crossings: a deterministic stratified sample, the share F of every stratum "
+              "(crossing number, alternating, bridge index) and every BB knot");
   args.option("--names", &names, "comma-separated knot names");
   args.option("-o,--output", &out, "data-set file (HDF5); an existing one with the same parameters is resumed/extended");
   args.option("--shard", &shard, "I/N: only the knots k with k mod N = I - 1 (table order), for clusters");
@@ -31,9 +40,22 @@ int cmd_dataset(int argc, char** argv) {
   ro.output = out;
   std::tie(ro.shard_index, ro.shard_count) = parse_shard(shard);
   const auto& table = KnotTable::global();
+  if ((min_crossings || stratified) && !max_crossings)
+    throw InputError("--min-crossings and --stratified need --max-crossings");
   if (max_crossings) {
     if (*max_crossings < 3 || *max_crossings > 12) throw InputError("--max-crossings must be between 3 and 12");
-    ro.knots = table.up_to_crossings(*max_crossings);
+    const int low = min_crossings.value_or(3);
+    if (low < 3 || low > *max_crossings) throw InputError("--min-crossings must be between 3 and --max-crossings");
+    if (stratified) {
+      StratifiedSampleOptions so;
+      so.min_crossings = low;
+      so.max_crossings = *max_crossings;
+      so.fraction = *stratified;
+      ro.knots = stratified_sample(table, so);
+    } else {
+      for (const KnotRecord* k : table.up_to_crossings(*max_crossings))
+        if (k->crossing_number >= low) ro.knots.push_back(k);
+    }
   } else {
     std::stringstream ss(names);
     std::string n;

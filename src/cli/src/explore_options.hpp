@@ -21,6 +21,9 @@ inline void add_explore_options(ArgParser& args, ExploreArgs& a) {
   args.option("--samples", &a.samples, "lattice samples per knot (default 50); not with --adaptive");
   args.flag("--adaptive", &a.adaptive, "adaptive sampling: 50, then batches of 10 while the importance score S > 0.1, at most 500");
   args.option("--max-samples", &a.options.max_samples, "adaptive sampling: at most this many samples (default 500)");
+  args.option("--novelty-distance", &a.options.novelty_distance,
+              "adaptive sampling: δ, the distance 1 - similarity at which a state counts as new (default 0.1; the "
+              "experiments use the cluster cut 0.05)");
   args.option("--burn-in", &a.options.burn_in,
               "lattice samples the walk makes and discards before sample 0 (default 0, at most 100000); sample k is "
               "then the walk's sample burn-in + k");
