@@ -24,7 +24,7 @@ help:
 	@echo "make claims    the paper checks on the results of SCALE (make figures ends with it; docs/reproducing.md)"
 	@echo "make studies   the studies beside the paper (the periodic braids' link scan) at SCALE, and their checks"
 	@echo "make paper-open  the claims not reproduced (paper_checks/open_claims.cpp), values printed"
-	@echo "make compare-methods  the default relaxation method against the previous one (hybrid) on the SCALE data sets"
+	@echo "make compare-methods  the default relaxation method against the direct one (hybrid) on the SCALE data sets"
 	@echo "make explorer  the data-set explorer of SCALE's data set in results/<scale>/explorer/ (docs/explorer.md)"
 	@echo "make serve     serve that data set's explorer on 127.0.0.1:8000"
 	@echo "make explorer-screenshots  screenshots of its views and its load time in headless Chromium"
@@ -107,8 +107,8 @@ stress: build
 	  ctest -V -j$(JOBS) -L 'stress'
 
 # Microbenchmarks pinned to one core (Google Benchmark, median of 5), then the
-# macro benchmarks (the solver's default method against the method before the
-# multilevel relaxation and the block factorisation, interleaved: the lattice
+# macro benchmarks (the solver's default method against hybrid-simplicial, the
+# direct method with CHOLMOD's simplicial factorisation, interleaved: the lattice
 # samples, the peer curves and the cost against n; the skips; time against
 # error); one summary table at the end.
 BENCH_CORE ?= 0
@@ -123,10 +123,10 @@ bench: build
 	    --benchmark_out=results/bench/$$(basename $$b).json --benchmark_out_format=json || exit 1; \
 	done
 	@if [ -x $(BUILD)/experiments/exp_bench_solver ]; then \
-	  taskset -c $(BENCH_CORE) $(BUILD)/experiments/exp_bench_solver --methods default,today --out results/bench && \
-	  taskset -c $(BENCH_CORE) $(BUILD)/experiments/exp_bench_solver --methods default,today \
+	  taskset -c $(BENCH_CORE) $(BUILD)/experiments/exp_bench_solver --methods default,hybrid-simplicial --out results/bench && \
+	  taskset -c $(BENCH_CORE) $(BUILD)/experiments/exp_bench_solver --methods default,hybrid-simplicial \
 	    --peer $(PEER_DATA) --out results/bench && \
-	  taskset -c $(BENCH_CORE) $(BUILD)/experiments/exp_bench_solver --methods default,today --scaling \
+	  taskset -c $(BENCH_CORE) $(BUILD)/experiments/exp_bench_solver --methods default,hybrid-simplicial --scaling \
 	    --out results/bench && \
 	  taskset -c $(BENCH_CORE) $(BUILD)/experiments/exp_bench_solver --skips --count 3 \
 	    --knots 4_1,8_19,12a_1019 --out results/bench; fi
@@ -203,7 +203,7 @@ explorer-screenshots: explorer
 manifest:
 	$(PYTHON) scripts/manifest.py
 
-# The default relaxation method against the method before it (hybrid): both
+# The default relaxation method (multilevel) against the direct one (hybrid): both
 # methods' data sets and their paper checks, then their comparison
 # (docs/reproducing.md). SCALE=default by default; SCALE=ci is a smoke run.
 compare-methods: build

@@ -20,7 +20,7 @@
 
 #include "ek/dataset/dataset_file.hpp"
 #include "ek/dataset/pipeline.hpp"
-#include "h5.hpp"
+#include "ek/dataset/h5.hpp"
 
 namespace {
 

@@ -16,13 +16,13 @@
 //                    [--methods M[,M...]] [--continuation F[,F...]] [--max-iter N]
 //                    [--trace] [--verbose] [--skips] [--peer DIR] [--scaling]
 //
-// Methods: default (RelaxOptions{}: multilevel), today (the method before
-// the multilevel relaxation and the block factorisation: Direct, hybrid
-// Hessian, CHOLMOD simplicial), hybrid (Direct with the block
-// factorisation), projected (hybrid without its exact region), exact (the
+// Methods: default (RelaxOptions{}: multilevel), hybrid-simplicial (Direct,
+// hybrid Hessian, CHOLMOD's simplicial LL': the direct method without the
+// multilevel relaxation and the block factorisation), hybrid (Direct with the
+// block factorisation), projected (hybrid without its exact region), exact (the
 // exact Hessian every iteration), paper (NewtonOptions::paper()), levels2
 // (the multilevel method with two coarse levels, n/4 and n/2). The
-// default is "default,today". --method M is --methods M.
+// default is "default,hybrid-simplicial". --method M is --methods M.
 //
 // --peer DIR: instead of the lattice samples, every curve file of DIR (the
 // peer implementation's curves) relaxed as `knots relax FILE` does, by each
@@ -121,7 +121,7 @@ void write_file(const std::string& path, const std::string& text) {
 }
 
 Method method_named(const std::string& name, const ek::RelaxOptions& base) {
-  if (name == "today") {  // hybrid at n with CHOLMOD's simplicial factorisation
+  if (name == "hybrid-simplicial") {  // hybrid at n with CHOLMOD's simplicial factorisation
     Method m{name, ek::with_method(base, "hybrid")};
     m.options.newton.cholesky.mode = ek::CholeskyMode::Simplicial;
     return m;
@@ -540,7 +540,7 @@ int usage(const char* msg) {
 /// Parses the arguments into `c`; an empty string when they are valid.
 std::string parse(int argc, char** argv, Config& c) {
   ek::RelaxOptions base;
-  std::vector<std::string> names = {"default", "today"};
+  std::vector<std::string> names = {"default", "hybrid-simplicial"};
   bool count_given = false;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];

@@ -4,7 +4,7 @@
 // 16's states: each member's coil (experiments/common/periodic_family.hpp,
 // n = 100·p, r = 0.2) relaxed with the full model at prescribed links
 // Lk = Tw + Wr under the slab |z| < 2 d̂ and then released (ek::scan_links(),
-// ek/dataset/deploy.hpp), on a grid of links and bisected at the two ends of
+// ek/mechanics/deploy.hpp), on a grid of links and bisected at the two ends of
 // the interval where the flat coil is stable. Each 3D state's p-fold
 // symmetry error; the p-fold symmetric 3D state (linked_symmetric():
 // candidates averaged over their p periods and relaxed again at their
@@ -27,7 +27,7 @@
 #include "ek/analysis/attributes.hpp"
 #include "ek/analysis/symmetry.hpp"
 #include "ek/core/parallel.hpp"
-#include "ek/dataset/deploy.hpp"
+#include "ek/mechanics/deploy.hpp"
 #include "ek/embedding/embedding.hpp"
 #include "ek/geometry/curve_io.hpp"
 #include "ek/geometry/polyline.hpp"

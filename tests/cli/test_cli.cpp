@@ -1,11 +1,15 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "cli_runner.hpp"
+#include "ek/core/config.hpp"
 #include "ek/geometry/curve_io.hpp"
 #include "output.hpp"
 #include "testing.hpp"
@@ -164,4 +168,37 @@ TEST(Cli, JsonOutputReplacesBytesThatAreNotUtf8) {
   EXPECT_NO_THROW(ek::cli::print_json(j));
   std::cout.rdbuf(old);
   EXPECT_EQ(captured.str(), "{\"name\xef\xbf\xbdx\":\"ok\"}\n");
+}
+
+// The front door and the reference list every command: each command that
+// `knots --help` prints appears in README.md's command table as `knots NAME`
+// and in docs/cli.md's table as [`NAME`](#knots-NAME) with its own section.
+TEST(Cli, ReadmeAndCliReferenceListEveryCommand) {
+  const auto h = run("--help");
+  ASSERT_EQ(h.status, 0) << h.err;
+  std::vector<std::string> commands;
+  std::istringstream lines(h.out);
+  bool in_list = false;
+  for (std::string line; std::getline(lines, line);) {
+    if (line == "commands:") {
+      in_list = true;
+      continue;
+    }
+    if (!in_list || line.size() < 3 || line.compare(0, 2, "  ") != 0) continue;
+    commands.push_back(line.substr(2, line.find(' ', 2) - 2));
+  }
+  ASSERT_GE(commands.size(), 24u);
+  const auto slurp = [](const std::string& path) {
+    std::ifstream in(path);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  const std::string readme = slurp(std::string(ek::config::kSourceDir) + "/README.md");
+  const std::string cli = slurp(std::string(ek::config::kSourceDir) + "/docs/cli.md");
+  ASSERT_FALSE(readme.empty());
+  ASSERT_FALSE(cli.empty());
+  for (const std::string& c : commands) {
+    EXPECT_NE(readme.find("| `knots " + c), std::string::npos) << "README.md's command table lacks knots " << c;
+    EXPECT_NE(cli.find("| [`" + c + "`](#knots-" + c + ")"), std::string::npos) << "docs/cli.md's table lacks " << c;
+    EXPECT_NE(cli.find("### `knots " + c + "`"), std::string::npos) << "docs/cli.md has no section for " << c;
+  }
 }

@@ -13,7 +13,7 @@
 #include "child_read.hpp"
 #include "ek/dataset/dataset_file.hpp"
 #include "metadata_testing.hpp"
-#include "h5.hpp"
+#include "ek/dataset/h5.hpp"
 #include "testing.hpp"
 #include "unsealed_copy.hpp"
 

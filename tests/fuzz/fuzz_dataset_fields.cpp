@@ -14,7 +14,7 @@
 #include "ek/dataset/dataset_file.hpp"
 #include "ek/dataset/metadata.hpp"
 #include "fuzz_common.hpp"
-#include "h5.hpp"
+#include "ek/dataset/h5.hpp"
 
 namespace {
 

@@ -18,7 +18,7 @@
 #include "ek/core/atomic_file.hpp"
 #include "ek/core/errors.hpp"
 #include "child_read.hpp"
-#include "h5.hpp"
+#include "ek/dataset/h5.hpp"
 
 namespace ek {
 namespace {

@@ -1,4 +1,4 @@
-#include "h5.hpp"
+#include "ek/dataset/h5.hpp"
 
 #include <fcntl.h>
 #include <sys/stat.h>

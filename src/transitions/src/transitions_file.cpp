@@ -4,7 +4,7 @@
 
 #include "ek/core/atomic_file.hpp"
 #include "ek/core/errors.hpp"
-#include "h5.hpp"
+#include "ek/dataset/h5.hpp"
 
 namespace ek {
 namespace {

@@ -1,4 +1,4 @@
-#include "ek/dataset/deploy.hpp"
+#include "ek/mechanics/deploy.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-// Deploying a flat coil at a prescribed link (ek/dataset/deploy.hpp) on a
+// Deploying a flat coil at a prescribed link (ek/mechanics/deploy.hpp) on a
 // case with a known answer: a single ring of unit edges (the unknot's flat
 // 1-covered circle) is stable at link Lk up to Michell's threshold
 // Lk_c = √3·B/C = √3·(1 + ν) (B = EI, C = GJ = EI/(1 + ν) for a circular
@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "ek/core/errors.hpp"
-#include "ek/dataset/deploy.hpp"
+#include "ek/mechanics/deploy.hpp"
 #include "testing.hpp"
 
 using namespace ek;

@@ -1,5 +1,8 @@
 #pragma once
-// Private: thin RAII helpers over the HDF5 C API for the data-set files.
+/// Thin RAII helpers over the HDF5 C API, shared by the HDF5 files of the
+/// project: data sets (dataset_file.hpp) and transition graphs
+/// (ek/transitions/transitions_file.hpp). Includes hdf5.h: a module that uses
+/// it links HDF5 itself.
 #include <hdf5.h>
 
 #include <cstdint>
