@@ -19,13 +19,12 @@
 // Writes members.csv, search.csv, curves/ (pattern_9_35.obj, P_<p>_<q>_<r>.obj,
 // hit<rank>.obj aligned onto the pattern) and summary.json (docs/results.md).
 #include <algorithm>
-#include <atomic>
 #include <filesystem>
 #include <iostream>
-#include <thread>
 #include <type_traits>
 
 #include "ek/analysis/similarity.hpp"
+#include "ek/core/parallel.hpp"
 #include "ek/dataset/construction.hpp"
 #include "ek/dataset/dataset_search.hpp"
 #include "ek/geometry/curve_io.hpp"
@@ -200,18 +199,11 @@ int main(int argc, char** argv) {
     // the family, with the chirality of the table's 9_35 (P(3,3,3) has writhe -9 in ek::pretzel_pd's convention)
     const int sign = diagram_from_pd(*KnotTable::global().at("9_35").pd).writhe() < 0 ? 1 : -1;
     sum.members.resize(family.size());
-    std::atomic<size_t> next{0};
-    auto worker = [&] {
-      for (size_t q = next++; q < family.size(); q = next++) {
-        std::vector<int> twists = family[q];
-        for (int& t : twists) t *= sign;
-        sum.members[q] = member(a, twists, pattern, o, criterion);
-      }
-    };
-    std::vector<std::thread> pool;
-    for (int t = 1; t < std::min<int>(a.jobs, static_cast<int>(family.size())); ++t) pool.emplace_back(worker);
-    worker();
-    for (auto& t : pool) t.join();
+    parallel_for(family.size(), a.jobs, [&](size_t q) {
+      std::vector<int> twists = family[q];
+      for (int& t : twists) t *= sign;
+      sum.members[q] = member(a, twists, pattern, o, criterion);
+    });
     write_members(a, sum.members);
     write_summary(a, sum);
   });

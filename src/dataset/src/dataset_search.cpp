@@ -1,11 +1,10 @@
 #include "ek/dataset/dataset_search.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <thread>
 
 #include "ek/core/errors.hpp"
+#include "ek/core/parallel.hpp"
 
 namespace ek {
 
@@ -86,20 +85,13 @@ DatasetSearchResult search_dataset(const DatasetReader& reader, const Points& qu
   }
   result.aligned = static_cast<int>(candidates.size());
   std::vector<DatasetHit> hits(candidates.size());
-  std::atomic<size_t> next{0};
-  auto worker = [&] {
-    for (size_t q = next++; q < candidates.size(); q = next++) {
-      DatasetHit& h = hits[q];
-      h.knot = candidates[q].knot;
-      h.equilibrium = candidates[q].equilibrium;
-      h.alignment = align_curves(query, *candidates[q].curve, options.alignment);
-      h.distance = h.alignment.distance;
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < std::min<int>(options.jobs, static_cast<int>(candidates.size())); ++t) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
+  parallel_for(candidates.size(), options.jobs, [&](size_t q) {
+    DatasetHit& h = hits[q];
+    h.knot = candidates[q].knot;
+    h.equilibrium = candidates[q].equilibrium;
+    h.alignment = align_curves(query, *candidates[q].curve, options.alignment);
+    h.distance = h.alignment.distance;
+  });
   std::vector<size_t> order(hits.size());
   for (size_t q = 0; q < order.size(); ++q) order[q] = q;  // candidates are in knot order, then index
   std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) { return hits[a].distance < hits[b].distance; });

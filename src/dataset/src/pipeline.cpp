@@ -1,17 +1,18 @@
 #include "ek/dataset/pipeline.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <mutex>
+#include <optional>
 #include <sstream>
-#include <thread>
 
 #include "ek/analysis/attributes.hpp"
 #include "ek/analysis/clustering.hpp"
 #include "ek/core/errors.hpp"
 #include "ek/core/hash.hpp"
+#include "ek/core/parallel.hpp"
 #include "ek/core/paths.hpp"
 #include "ek/knots/alexander.hpp"
 #include "journal.hpp"
@@ -240,13 +241,51 @@ ExploreOptions options_for_knot(const ExploreOptions& options, const KnotRecord&
   return o;
 }
 
+namespace {
+
+/// The adaptive rule (paper Section 7.4): batches of samples while the last
+/// batch's importance score is above the threshold and fewer than
+/// max_samples were taken. `batch(begin, end)` makes the samples
+/// [begin, end) available and returns their score, or nothing when they
+/// cannot be had (a replay's stored runs ended: `truncated`).
+struct AdaptiveRule {
+  int samples = 0;
+  std::vector<double> scores;
+  bool truncated = false;
+};
+AdaptiveRule run_adaptive_rule(const ExploreOptions& o, const std::function<std::optional<double>(int, int)>& batch) {
+  AdaptiveRule out;
+  out.samples = o.initial_samples;
+  const std::optional<double> first = batch(0, out.samples);
+  if (!first) {
+    out.truncated = true;
+    return out;
+  }
+  out.scores.push_back(*first);
+  while (out.scores.back() > o.score_threshold && out.samples < o.max_samples) {
+    const int count = std::min(o.batch_samples, o.max_samples - out.samples);
+    const std::optional<double> s = batch(out.samples, out.samples + count);
+    if (!s) {
+      out.truncated = true;
+      break;
+    }
+    out.scores.push_back(*s);
+    out.samples += count;
+  }
+  return out;
+}
+
+}  // namespace
+
 AdaptiveReplay replay_adaptive(const KnotEntry& fixed, const ExploreOptions& options) {
   const KnotRecord* knot = KnotTable::global().find(fixed.name);
-  const ExploreOptions o = knot ? options_for_knot(options, *knot) : options;
+  ExploreOptions o = knot ? options_for_knot(options, *knot) : options;
   const int available = static_cast<int>(fixed.runs.size());
+  o.initial_samples = std::min(o.initial_samples, available);
   const int energy_col = fixed.equilibria.empty() ? -1 : fixed.attribute_column("energy");
   AdaptiveScorer scorer(o);
-  auto score = [&](int begin, int end) {
+  const AdaptiveRule rule = run_adaptive_rule(o, [&](int begin, int end) -> std::optional<double> {
+    if (end > available) return std::nullopt;
     std::vector<std::pair<const Points*, double>> stable;
     for (int k = begin; k < end; ++k) {
       const RunRecord& r = fixed.runs[static_cast<size_t>(k)];
@@ -256,20 +295,11 @@ AdaptiveReplay replay_adaptive(const KnotEntry& fixed, const ExploreOptions& opt
                             fixed.attributes(r.equilibrium, energy_col));
     }
     return scorer.add_batch(stable);
-  };
+  });
   AdaptiveReplay out;
-  int total = std::min(o.initial_samples, available);
-  out.score_history.push_back(score(0, total));
-  while (out.score_history.back() > o.score_threshold && total < o.max_samples) {
-    const int count = std::min(o.batch_samples, o.max_samples - total);
-    if (total + count > available) {
-      out.truncated = true;
-      break;
-    }
-    out.score_history.push_back(score(total, total + count));
-    total += count;
-  }
-  out.samples_used = total;
+  out.score_history = rule.scores;
+  out.truncated = rule.truncated;
+  out.samples_used = rule.samples;
   return out;
 }
 
@@ -340,27 +370,14 @@ void relax_range(const std::vector<LatticePoints>& samples, int begin, int end, 
   std::vector<int> todo;
   for (int k = begin; k < end; ++k)
     if (!runs.done.count(k)) todo.push_back(k);
-  std::atomic<size_t> next{0};
-  auto worker = [&]() {
-    for (;;) {
-      const size_t t = next.fetch_add(1);
-      if (t >= todo.size()) return;
-      const int k = todo[t];
-      JournalRun r = run_one(to_points(samples[static_cast<size_t>(k)]), k, sample_seed(seed, o.burn_in + k), o);
-      std::lock_guard<std::mutex> lock(runs.mutex);
-      if (runs.journal) runs.journal->append(r);
-      if (*runs.on_run) (*runs.on_run)(r.record);
-      runs.done[k] = std::move(r);
-    }
-  };
-  const int threads = std::min<int>(o.jobs, static_cast<int>(todo.size()));
-  if (threads <= 1) {
-    worker();
-    return;
-  }
-  std::vector<std::thread> pool;
-  for (int t = 0; t < threads; ++t) pool.emplace_back(worker);
-  for (auto& th : pool) th.join();
+  parallel_for(todo.size(), o.jobs, [&](size_t t) {
+    const int k = todo[t];
+    JournalRun r = run_one(to_points(samples[static_cast<size_t>(k)]), k, sample_seed(seed, o.burn_in + k), o);
+    std::lock_guard<std::mutex> lock(runs.mutex);
+    if (runs.journal) runs.journal->append(r);
+    if (*runs.on_run) (*runs.on_run)(r.record);
+    runs.done[k] = std::move(r);
+  });
 }
 
 // The adaptive score of the stable equilibria of samples [begin, end).
@@ -427,18 +444,20 @@ KnotEntry explore_knot(const KnotRecord& knot, const ExploreOptions& options, co
   SampleWalk walk(start, o, seed, knot.name);
   AdaptiveScorer scorer(o);
 
-  int total = o.adaptive ? o.initial_samples : o.samples;
-  walk.generate(total);
-  relax_range(walk.samples(), 0, total, seed, o, runs);
+  const auto relax_samples = [&](int begin, int end) {
+    walk.generate(end - begin);
+    relax_range(walk.samples(), begin, end, seed, o, runs);
+  };
+  int total = o.samples;
   if (o.adaptive) {
-    entry.score_history.push_back(score_batch(scorer, runs, 0, total));
-    while (entry.score_history.back() > o.score_threshold && total < o.max_samples) {
-      const int count = std::min(o.batch_samples, o.max_samples - total);
-      walk.generate(count);
-      relax_range(walk.samples(), total, total + count, seed, o, runs);
-      entry.score_history.push_back(score_batch(scorer, runs, total, total + count));
-      total += count;
-    }
+    const AdaptiveRule rule = run_adaptive_rule(o, [&](int begin, int end) -> std::optional<double> {
+      relax_samples(begin, end);
+      return score_batch(scorer, runs, begin, end);
+    });
+    entry.score_history = rule.scores;
+    total = rule.samples;
+  } else {
+    relax_samples(0, total);
   }
   entry.samples_used = total;
   collect_runs(entry, runs, total, o);

@@ -1,13 +1,12 @@
 #include "ek/dataset/states.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <limits>
-#include <thread>
 
 #include "ek/core/errors.hpp"
 #include "ek/core/hash.hpp"
+#include "ek/core/parallel.hpp"
 #include "ek/geometry/hausdorff.hpp"
 
 namespace ek {
@@ -90,21 +89,14 @@ std::vector<StatePair> pairwise_shape_distances(const KnotEntry& e, double cut, 
   for (int a = 0; a < m; ++a)
     for (int b = a + 1; b < m; ++b)
       pairs.push_back({a, b, rank[static_cast<size_t>(a)], rank[static_cast<size_t>(b)], 1.0 - e.similarity(a, b), 0.0, 0.0});
-  std::atomic<size_t> next{0};
-  auto worker = [&] {
-    for (size_t q = next++; q < pairs.size(); q = next++) {
-      StatePair& p = pairs[q];
-      const Points& A = e.equilibria[static_cast<size_t>(p.a)];
-      const Points& B = e.equilibria[static_cast<size_t>(p.b)];
-      const Alignment al = align_curves(A, B, alignment);
-      p.icp_distance = al.distance;
-      p.hausdorff = hausdorff_distance(A, aligned_candidate(B, al)).distance;
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < std::min<int>(jobs, static_cast<int>(pairs.size())); ++t) pool.emplace_back(worker);
-  worker();
-  for (auto& t : pool) t.join();
+  parallel_for(pairs.size(), jobs, [&](size_t q) {
+    StatePair& p = pairs[q];
+    const Points& A = e.equilibria[static_cast<size_t>(p.a)];
+    const Points& B = e.equilibria[static_cast<size_t>(p.b)];
+    const Alignment al = align_curves(A, B, alignment);
+    p.icp_distance = al.distance;
+    p.hausdorff = hausdorff_distance(A, aligned_candidate(B, al)).distance;
+  });
   return pairs;
 }
 
