@@ -664,7 +664,7 @@ TEST(ContactPotential, ProjectPsdArgumentOverridesTheOption) {
     SparseAssembler A;
     A.begin(180);
     A.segment(0, cp.hessian_structure());
-    cp.add_hessian(x, A, psd);
+    cp.add_hessian(x, A, psd ? HessianKind::Projected : HessianKind::Exact);
     A.end();
     return Eigen::MatrixXd(Eigen::MatrixXd(A.matrix()).selfadjointView<Eigen::Upper>());
   };

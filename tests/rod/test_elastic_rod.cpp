@@ -381,7 +381,7 @@ Eigen::MatrixXd assembled_hessian(const ElasticRod& rod, EnergyTerm term, bool p
                                   bool* pattern_changed = nullptr) {
   A.begin(rod.num_dofs());
   A.segment(0, rod.hessian_structure());
-  rod.add_hessian(A, term, project_stretch);
+  rod.add_hessian(A, term, project_stretch ? HessianKind::Projected : HessianKind::Exact);
   const bool changed = A.end();
   if (pattern_changed) *pattern_changed = changed;
   return Eigen::MatrixXd(A.matrix()).selfadjointView<Eigen::Upper>();

@@ -41,7 +41,7 @@ class DoubleWell : public Objective {
     }
     return g;
   }
-  void assemble_hessian(SparseAssembler& A, bool) override {
+  void assemble_hessian(SparseAssembler& A, HessianKind) override {
     A.begin(num_dofs());
     for (int i = 0; i + 1 < x_.size(); i += 2) {
       A.add(i, i, 12.0 * x_(i) * x_(i) - 4.0);
@@ -199,7 +199,8 @@ class ProjectableWells : public Objective {
     }
     return g;
   }
-  void assemble_hessian(SparseAssembler& A, bool exact) override {
+  void assemble_hessian(SparseAssembler& A, HessianKind kind) override {
+    const bool exact = kind == HessianKind::Exact;
     ++(exact ? exact_hessians : projected_hessians);
     A.begin(num_dofs());
     A.segment(0, 1);
@@ -255,7 +256,8 @@ class SpringFrame : public Objective {
       }
     return g;
   }
-  void assemble_hessian(SparseAssembler& A, bool exact) override {
+  void assemble_hessian(SparseAssembler& A, HessianKind kind) override {
+    const bool exact = kind == HessianKind::Exact;
     ++(exact ? exact_hessians : projected_hessians);
     A.begin(num_dofs());
     A.segment(0, 1);

@@ -28,7 +28,7 @@ class Well : public Potential {
   void add_energy_parts(std::vector<EnergyPart>& parts) const override { parts.push_back({name_, energy()}); }
   void add_gradient(Eigen::Ref<VecX> g) const override { g += a_ * (x_ - c_); }
   std::uint64_t hessian_structure() const override { return 7; }
-  void add_hessian(SparseAssembler& A, bool) const override {
+  void add_hessian(SparseAssembler& A, HessianKind) const override {
     for (int i = 0; i < x_.size(); ++i) A.add(i, i, a_);
   }
   double max_step(const VecX& x, const VecX& dx) const override {
@@ -80,7 +80,7 @@ TEST(Objective, CompositeSumsItsTerms) {
   EXPECT_LT((g - fd).norm(), 1e-6 * g.norm());
   EXPECT_GT(g.norm(), 1.0);
   SparseAssembler A;
-  w.f.assemble_hessian(A, true);
+  w.f.assemble_hessian(A, HessianKind::Exact);
   EXPECT_DOUBLE_EQ(Eigen::MatrixXd(A.matrix())(1, 1), 8.0);
   const VecX dx = VecX::Constant(3, -1.0);
   EXPECT_DOUBLE_EQ(w.f.max_step(x, dx), 0.9 * 0.62);  // the wall of b at -0.52

@@ -38,7 +38,7 @@ class MullerBrown : public Objective {
     }
     return g;
   }
-  void assemble_hessian(SparseAssembler& A, bool) override {
+  void assemble_hessian(SparseAssembler& A, HessianKind) override {
     Eigen::Matrix2d H = Eigen::Matrix2d::Zero();
     for (int k = 0; k < 4; ++k) {
       const Eigen::Vector2d q = exponent_gradient(k);
@@ -78,7 +78,7 @@ class DoubleWell2 : public Objective {
   void set_dofs(const VecX& x) override { x_ = x; }
   double energy() override { return std::pow(x_(0) * x_(0) - 1, 2) + 2 * x_(1) * x_(1); }
   VecX gradient() override { return Eigen::Vector2d(4 * x_(0) * (x_(0) * x_(0) - 1), 4 * x_(1)); }
-  void assemble_hessian(SparseAssembler& A, bool) override {
+  void assemble_hessian(SparseAssembler& A, HessianKind) override {
     A.begin(2);
     A.segment(0, 1);
     A.add(0, 0, 12 * x_(0) * x_(0) - 4);
@@ -114,7 +114,7 @@ SaddleSearchOptions search_options(double rise) {
 TEST(MullerBrown, HessianMatchesFiniteDifferencesOfTheGradient) {
   MullerBrown f(Eigen::Vector2d(-0.3, 0.8));
   SparseAssembler A;
-  f.assemble_hessian(A, true);
+  f.assemble_hessian(A, HessianKind::Exact);
   const Eigen::Matrix2d H = Eigen::MatrixXd(Eigen::SparseMatrix<double>(A.matrix().selfadjointView<Eigen::Upper>()));
   const double h = 1e-6;
   for (int i = 0; i < 2; ++i) {
@@ -150,7 +150,7 @@ TEST(SaddleSearch, MullerBrownFindsTheKnownSaddlesFromEachMinimum) {
       for (const double sign : {1.0, -1.0}) {
         f.set_dofs(minimum);
         SparseAssembler A;
-        f.assemble_hessian(A, true);
+        f.assemble_hessian(A, HessianKind::Exact);
         const LowestModes m = lowest_modes(A.matrix(), {}, 2, -1.0, 1.0);
         ASSERT_TRUE(m.converged);
         const SaddleSearchResult r = search_saddle(f, sign * m.vectors.col(mode), search_options(200.0));

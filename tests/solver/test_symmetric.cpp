@@ -93,7 +93,7 @@ TEST(SymmetricObjective, ReducedGradientAndHessianMatchFiniteDifferences) {
   EXPECT_GT(g.norm(), 1e-3);  // not trivially zero
   f.set_dofs(y0);
   SparseAssembler A;
-  f.assemble_hessian(A, true);
+  f.assemble_hessian(A, HessianKind::Exact);
   const Eigen::MatrixXd H = Eigen::MatrixXd(Eigen::SparseMatrix<double>(A.matrix().selfadjointView<Eigen::Upper>()));
   const double h = 1e-6;
   double worst = 0.0;

@@ -242,10 +242,11 @@ void ContactPotential::add_gradient(const Points& x, Eigen::Ref<VecX> g) const {
 }
 
 void ContactPotential::add_hessian(const Points& x, SparseAssembler& A) const {
-  add_hessian(x, A, options_.project_psd);
+  add_hessian(x, A, options_.project_psd ? HessianKind::Projected : HessianKind::Exact);
 }
 
-void ContactPotential::add_hessian(const Points& x, SparseAssembler& A, bool project_psd) const {
+void ContactPotential::add_hessian(const Points& x, SparseAssembler& A, HessianKind kind) const {
+  const bool project_psd = kind == HessianKind::Projected;
   if (x.rows() != n_) require(false, "ContactPotential::add_hessian: wrong number of points");
   if (plan_structure_ != structure_ || pair_blocks_.size() != pattern_.size()) build_hessian_plan();
   if (blocks_.empty()) return;

@@ -24,14 +24,6 @@ namespace {
 /// Rest edge length of the lattice samples (unit edges).
 constexpr double kLatticeEdgeLength = 1.0;
 
-std::string model_name(TwistModel m) {
-  switch (m) {
-    case TwistModel::TwistFree: return "twist-free";
-    case TwistModel::FreeTheta: return "free-theta";
-    case TwistModel::FixedLink: return "fixed-link";
-  }
-  return "?";
-}
 
 /// The journal key: the knot and every parameter of the data set.
 std::string options_text(const std::string& knot, const ExploreOptions& o) {
@@ -109,10 +101,8 @@ DatasetMetadata dataset_metadata(const ExploreOptions& o) {
   m.tolerance = resolved.tolerance;
   m.contact_stiffness = resolved.contact_stiffness;
   m.dhat = resolved.dhat;
-  m.twist_model = model_name(resolved.model);
-  // the multilevel method applies to the twist-free model without a slab (relax.hpp, RelaxMethod)
-  const bool multilevel = o.relax.method == RelaxMethod::Multilevel && resolved.model == TwistModel::TwistFree &&
-                          !o.relax.slab;
+  m.twist_model = to_string(resolved.model);
+  const bool multilevel = multilevel_applies(o.relax);
   m.relax_method = to_string(multilevel ? RelaxMethod::Multilevel : RelaxMethod::Direct);
   if (multilevel) {
     m.coarse_levels = o.relax.coarse_levels;

@@ -187,9 +187,10 @@ VecX ElasticRod::gradient(EnergyTerm term) const {
   return g;
 }
 
-void ElasticRod::add_hessian(SparseAssembler& A, EnergyTerm term) const { add_hessian(A, term, false); }
+void ElasticRod::add_hessian(SparseAssembler& A, EnergyTerm term) const { add_hessian(A, term, HessianKind::Exact); }
 
-void ElasticRod::add_hessian(SparseAssembler& A, EnergyTerm term, bool project_stretch) const {
+void ElasticRod::add_hessian(SparseAssembler& A, EnergyTerm term, HessianKind kind) const {
+  const bool project_stretch = kind == HessianKind::Projected;
   const auto [stretch, bend, twist] = selected_terms(term);
   const double EA = material_.stretching_stiffness();
   const double EI = material_.bending_stiffness();
@@ -404,6 +405,15 @@ Vec3 ElasticRod::material_director(int j) const {
   const Vec3 d = reference_director(j);
   const Vec3 t = t_.col(j);
   return std::cos(theta_(j)) * d + std::sin(theta_(j)) * t.cross(d);
+}
+
+std::string to_string(TwistModel model) {
+  switch (model) {
+    case TwistModel::TwistFree: return "twist-free";
+    case TwistModel::FreeTheta: return "free-theta";
+    case TwistModel::FixedLink: return "fixed-link";
+  }
+  return "?";
 }
 
 }  // namespace ek

@@ -170,7 +170,7 @@ void NewtonSolver::record(Run& run) {
 // shift search. False when no rung factorises.
 bool NewtonSolver::factorize(Objective& f, Run& run, bool exact, bool converged) {
   auto t0 = Clock::now();
-  f.assemble_hessian(state_->assembler, exact);
+  f.assemble_hessian(state_->assembler, exact ? HessianKind::Exact : HessianKind::Projected);
   run.report.time_assembly += since(t0);
   t0 = Clock::now();
   const SparseAssembler& A = state_->assembler;

@@ -29,11 +29,11 @@ VecX CompositeObjective::gradient() {
   return g;
 }
 
-void CompositeObjective::assemble_hessian(SparseAssembler& A, bool exact) {
+void CompositeObjective::assemble_hessian(SparseAssembler& A, HessianKind kind) {
   A.begin(num_dofs());
   for (size_t k = 0; k < terms_.size(); ++k) {
     A.segment(static_cast<int>(k), terms_[k]->hessian_structure());
-    terms_[k]->add_hessian(A, !exact);
+    terms_[k]->add_hessian(A, kind);
   }
   A.end();
 }

@@ -18,14 +18,6 @@
 namespace ek {
 namespace {
 
-std::string model_name(TwistModel m) {
-  switch (m) {
-    case TwistModel::TwistFree: return "twist-free";
-    case TwistModel::FreeTheta: return "free-theta";
-    case TwistModel::FixedLink: return "fixed-link";
-  }
-  return "?";
-}
 
 /// The input's rest edge lengths, after checking the curve (InputError).
 VecX checked_rest_lengths(const Points& curve, const RelaxOptions& options) {
@@ -140,7 +132,7 @@ void run_phases(Relaxation& r, RelaxResult& result) {
 std::optional<double> stiffness(Relaxation& r, const NewtonOptions& no) {
   KnotObjective objective = r.objective(r.contact, !r.options.release_slab);
   SparseAssembler A;
-  objective.assemble_hessian(A, true);
+  objective.assemble_hessian(A, HessianKind::Exact);
   const int n = r.rod.num_vertices();
   const int theta_begin = r.rod.model() == TwistModel::TwistFree ? -1 : 3 * n;
   const Eigen::MatrixXd Q = rigid_modes(r.rod.positions(), r.rod.num_dofs(), theta_begin);
@@ -223,6 +215,10 @@ RelaxOptions with_method(RelaxOptions o, const std::string& name) {
   return o;
 }
 
+bool multilevel_applies(const RelaxOptions& o) {
+  return o.method == RelaxMethod::Multilevel && !o.link && !o.full_model && !o.slab;
+}
+
 std::string to_string(RelaxMethod method) {
   return method == RelaxMethod::Multilevel ? "multilevel" : "direct";
 }
@@ -283,7 +279,7 @@ void relax_level(const Points& curve, const VecX& rest, const RelaxOptions& opti
                  RelaxResult& result) {
   const int n = static_cast<int>(curve.rows());
   const ResolvedModel model = resolve_model(options, rest.mean());
-  result.model = model_name(model.model);
+  result.model = to_string(model.model);
   result.lambda_min = cached_lambda_min(n, rest.mean(), options.material, model.model);
   const NewtonOptions no = newton_options(options, model, result.lambda_min);
   const ContactOptions co = contact_options(model, options);
@@ -302,9 +298,6 @@ void relax_level(const Points& curve, const VecX& rest, const RelaxOptions& opti
   if (options.smallest_eigenvalue) result.smallest_eigenvalue = stiffness(r, no);
 }
 
-bool multilevel_applies(const RelaxOptions& o) {
-  return o.method == RelaxMethod::Multilevel && !o.link && !o.full_model && !o.slab;
-}
 
 /// The coarse level's result with its own coarse levels and phases folded
 /// into `result` (coarsest first; its trace's phases renumbered after the

@@ -95,7 +95,7 @@ double prfo_along(double lambda, double gv) {
 }
 
 /// The exact Hessian (Objective::assemble_hessian begins and ends the pass).
-void assemble(Objective& f, SparseAssembler& A) { f.assemble_hessian(A, true); }
+void assemble(Objective& f, SparseAssembler& A) { f.assemble_hessian(A, HessianKind::Exact); }
 
 }  // namespace
 
@@ -381,7 +381,7 @@ class Recorder : public Objective {
   void set_dofs(const VecX& x) override { f_.set_dofs(x); }
   double energy() override { return f_.energy(); }
   VecX gradient() override { return f_.gradient(); }
-  void assemble_hessian(SparseAssembler& A, bool exact) override { f_.assemble_hessian(A, exact); }
+  void assemble_hessian(SparseAssembler& A, HessianKind kind) override { f_.assemble_hessian(A, kind); }
   double max_step(const VecX& x, const VecX& dx) override { return f_.max_step(x, dx); }
   void accept() override {
     f_.accept();

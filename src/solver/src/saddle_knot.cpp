@@ -49,13 +49,6 @@ Points KnotSystem::positions(const VecX& dofs) const {
   return as_points(dofs.head(3 * n));
 }
 
-std::string KnotSystem::model_name() const {
-  switch (impl_->rod.model()) {
-    case TwistModel::TwistFree: return "twist-free";
-    case TwistModel::FreeTheta: return "free-theta";
-    case TwistModel::FixedLink: return "fixed-link";
-  }
-  return "?";
-}
+std::string KnotSystem::model_name() const { return to_string(impl_->rod.model()); }
 
 }  // namespace ek

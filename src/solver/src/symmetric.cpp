@@ -126,8 +126,8 @@ void SymmetricObjective::set_dofs(const VecX& y) {
   full_.set_dofs(full_dofs(y_));
 }
 
-void SymmetricObjective::assemble_hessian(SparseAssembler& A, bool exact) {
-  full_.assemble_hessian(inner_, exact);
+void SymmetricObjective::assemble_hessian(SparseAssembler& A, HessianKind kind) {
+  full_.assemble_hessian(inner_, kind);
   const Eigen::SparseMatrix<double> H = inner_.matrix().selfadjointView<Eigen::Upper>();
   const Eigen::SparseMatrix<double> Hy = S_.transpose() * H * S_;
   A.begin(3 * m_);
@@ -168,7 +168,7 @@ double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock:
 /// matrix is singular.
 VecX root_direction(Objective& f, const VecX& g) {
   SparseAssembler A;
-  f.assemble_hessian(A, true);
+  f.assemble_hessian(A, HessianKind::Exact);
   Eigen::SparseMatrix<double> H = A.matrix().selfadjointView<Eigen::Upper>();
   const Eigen::MatrixXd Q = f.rigid_modes();
   if (Q.cols() > 0) {
@@ -242,7 +242,7 @@ namespace {
 void morse_index(Objective& f, const CyclicSymmetry& symmetry, int max_count, double threshold,
                  SymmetricCriticalPoint& out) {
   SparseAssembler A;
-  f.assemble_hessian(A, true);
+  f.assemble_hessian(A, HessianKind::Exact);
   const Eigen::MatrixXd Q = f.rigid_modes();
   const int limit = std::min(max_count, max_modes(f.num_dofs(), static_cast<int>(Q.cols())));
   LowestModes modes;
@@ -268,7 +268,7 @@ void morse_index(Objective& f, const CyclicSymmetry& symmetry, int max_count, do
 /// up to `max_count` of them; -1 when the eigen-solve failed.
 int subspace_index(Objective& reduced, int max_count, double threshold) {
   SparseAssembler A;
-  reduced.assemble_hessian(A, true);
+  reduced.assemble_hessian(A, HessianKind::Exact);
   const Eigen::MatrixXd Q = reduced.rigid_modes();
   const int limit = std::min(max_count, max_modes(reduced.num_dofs(), static_cast<int>(Q.cols())));
   for (int count = std::min(8, limit);; count = std::min(2 * count, limit)) {
@@ -325,7 +325,7 @@ class Recording : public Objective {
   void set_dofs(const VecX& y) override { f_.set_dofs(y); }
   double energy() override { return f_.energy(); }
   VecX gradient() override { return f_.gradient(); }
-  void assemble_hessian(SparseAssembler& A, bool exact) override { f_.assemble_hessian(A, exact); }
+  void assemble_hessian(SparseAssembler& A, HessianKind kind) override { f_.assemble_hessian(A, kind); }
   double max_step(const VecX& y, const VecX& dy) override { return f_.max_step(y, dy); }
   void accept() override {
     f_.accept();

@@ -74,8 +74,8 @@ class SteeredObjective final : public Objective {
     g.head(target_.size()) += k_ * (x_.head(target_.size()) - target_);
     return g;
   }
-  void assemble_hessian(SparseAssembler& A, bool exact) override {
-    f_.assemble_hessian(H_, exact);
+  void assemble_hessian(SparseAssembler& A, HessianKind kind) override {
+    f_.assemble_hessian(H_, kind);
     const auto& M = H_.matrix();
     A.begin(static_cast<int>(M.rows()));
     A.segment(0, H_.pattern_version());

@@ -242,7 +242,7 @@ SaddleStart prepare_start(const Points& state, const VecX& rest, const KnotSaddl
   s.gradient_norm = f.gradient().norm();
   s.alexander = alexander(s.positions);
   SparseAssembler A;
-  f.assemble_hessian(A, true);
+  f.assemble_hessian(A, HessianKind::Exact);
   const Eigen::MatrixXd Q = f.rigid_modes();
   const int modes = std::min(o.modes, max_modes(f.num_dofs(), static_cast<int>(Q.cols())));
   const LowestModes m = lowest_modes(A.matrix(), Q, modes, -base, base, o.search.eigen_tolerance);

@@ -68,6 +68,7 @@
 #include "ek/contact/broad_phase.hpp"
 #include "ek/contact/ccd.hpp"
 #include "ek/contact/topology.hpp"
+#include "ek/core/hessian_kind.hpp"
 #include "ek/core/sparse_assembler.hpp"
 
 namespace ek {
@@ -147,8 +148,8 @@ class ContactPotential {
   /// (so A replays its pattern while hessian_structure() is unchanged). Call A.segment(id, hessian_structure()) first.
   void add_hessian(const Points& x, SparseAssembler& A) const;
   /// As above, with each pair's 12 by 12 Hessian projected to positive
-  /// semidefinite when `project_psd` (instead of options().project_psd).
-  void add_hessian(const Points& x, SparseAssembler& A, bool project_psd) const;
+  /// semidefinite for HessianKind::Projected (instead of options().project_psd).
+  void add_hessian(const Points& x, SparseAssembler& A, HessianKind kind) const;
   /// Identifies the Hessian pattern (a 64-bit hash of n and the sorted pattern
   /// pairs; with hessian_margin = 0 the active pairs): it changes iff the
   /// pattern changes (up to hash collisions, probability ~2⁻⁶⁴), for

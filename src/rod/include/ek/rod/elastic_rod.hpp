@@ -56,6 +56,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "ek/core/hessian_kind.hpp"
 #include "ek/core/sparse_assembler.hpp"
 #include "ek/geometry/types.hpp"
 #include "ek/rod/material.hpp"
@@ -74,6 +75,7 @@ enum class TwistModel {
   /// Lk = Tw + Wr is prescribed and preserved.
   FixedLink,
 };
+std::string to_string(TwistModel model);  ///< "twist-free", "free-theta", "fixed-link"
 
 /// Energy terms, each evaluable on its own.
 enum class EnergyTerm { Stretch, Bend, Twist, All };
@@ -112,12 +114,12 @@ class ElasticRod {
   /// (entries a term does not touch are added as zeros), so a SparseAssembler
   /// segment with hessian_structure() replays it.
   void add_hessian(SparseAssembler& A, EnergyTerm term = EnergyTerm::All) const;
-  /// As above; with project_stretch the stretching term of every compressed
+  /// As above; with HessianKind::Projected the stretching term of every compressed
   /// edge uses rod::stretch_hessian_projected() (its negative transverse
   /// eigenvalues EA/l̄ (1 - l̄/|e|) < 0 clamped to 0), a positive
   /// semidefinite modification for descent directions far from equilibrium;
   /// bending and twisting stay exact. Same sequence of positions.
-  void add_hessian(SparseAssembler& A, EnergyTerm term, bool project_stretch) const;
+  void add_hessian(SparseAssembler& A, EnergyTerm term, HessianKind kind) const;
   /// Convenience: the full symmetric Hessian.
   Eigen::SparseMatrix<double> hessian(EnergyTerm term = EnergyTerm::All) const;
   /// Identifier of the Hessian's sparsity pattern (depends on n and the model only).

@@ -32,9 +32,9 @@ class RodTerm : public Potential {
   void add_energy_parts(std::vector<EnergyPart>& parts) const override;
   void add_gradient(Eigen::Ref<VecX> g) const override { g += rod_.gradient(); }
   std::uint64_t hessian_structure() const override { return rod_.hessian_structure(); }
-  /// project_psd: the stretching Hessians of compressed edges projected.
-  void add_hessian(SparseAssembler& A, bool project_psd) const override {
-    rod_.add_hessian(A, EnergyTerm::All, project_psd);
+  /// HessianKind::Projected: the stretching Hessians of compressed edges projected.
+  void add_hessian(SparseAssembler& A, HessianKind kind) const override {
+    rod_.add_hessian(A, EnergyTerm::All, kind);
   }
   double max_step(const VecX& x, const VecX& dx) const override;
   void accept() override {
@@ -46,8 +46,8 @@ class RodTerm : public Potential {
   double max_rotation_;
 };
 
-/// Self-contact. Part "contact". project_psd: each pair's barrier Hessian
-/// projected to positive semidefinite. max_step: the certified collision
+/// Self-contact. Part "contact". HessianKind::Projected: each pair's barrier
+/// Hessian projected to positive semidefinite. max_step: the certified collision
 /// detection, so no accepted step lets two edges touch.
 class ContactTerm : public Potential {
  public:
@@ -58,9 +58,7 @@ class ContactTerm : public Potential {
   void add_energy_parts(std::vector<EnergyPart>& parts) const override { parts.push_back({"contact", energy()}); }
   void add_gradient(Eigen::Ref<VecX> g) const override { contact_.add_gradient(x_, g.head(x_.size())); }
   std::uint64_t hessian_structure() const override { return contact_.hessian_structure(); }
-  void add_hessian(SparseAssembler& A, bool project_psd) const override {
-    contact_.add_hessian(x_, A, project_psd);
-  }
+  void add_hessian(SparseAssembler& A, HessianKind kind) const override { contact_.add_hessian(x_, A, kind); }
   double max_step(const VecX& x, const VecX& dx) const override;
   int active_pairs() const override { return static_cast<int>(contact_.num_active()); }
 
@@ -78,7 +76,7 @@ class SlabTerm : public Potential {
   void add_energy_parts(std::vector<EnergyPart>& parts) const override { parts.push_back({"slab", energy()}); }
   void add_gradient(Eigen::Ref<VecX> g) const override { g.head(x_.size()) += slab_.gradient(x_); }
   std::uint64_t hessian_structure() const override { return 1; }
-  void add_hessian(SparseAssembler& A, bool) const override { slab_.add_hessian(x_, A); }
+  void add_hessian(SparseAssembler& A, HessianKind) const override { slab_.add_hessian(x_, A); }
   double max_step(const VecX& x, const VecX& dx) const override;
 
  private:

@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "ek/core/hessian_kind.hpp"
 #include "ek/core/sparse_assembler.hpp"
 #include "ek/geometry/types.hpp"
 
@@ -42,11 +43,11 @@ class Objective {
   virtual double energy() = 0;
   virtual VecX gradient() = 0;
   /// Fills A with the Hessian's upper triangle (A.begin() ... A.end()).
-  /// With exact = false an objective may return a modified Hessian that is
-  /// closer to positive semidefinite (for example with per-element
+  /// HessianKind::Projected lets an objective return a modified Hessian that
+  /// is closer to positive semidefinite (for example with per-element
   /// projections) to get better Newton directions; the stability test at
-  /// convergence always asks for the exact Hessian.
-  virtual void assemble_hessian(SparseAssembler& A, bool exact) = 0;
+  /// convergence always asks for the exact one.
+  virtual void assemble_hessian(SparseAssembler& A, HessianKind kind) = 0;
   /// Largest t in (0, 1] such that x + s·dx is feasible for all s <= t
   /// (continuous collision detection). Default: unconstrained.
   virtual double max_step(const VecX& x, const VecX& dx) {
@@ -84,10 +85,10 @@ class Potential {
   /// Identifies the sequence of positions add_hessian() writes (for
   /// SparseAssembler::segment): equal ids replay the same pattern.
   virtual std::uint64_t hessian_structure() const = 0;
-  /// Adds the Hessian's upper triangle to A; with project_psd a positive
-  /// semidefinite modification of the strongly indefinite parts (the same
-  /// sequence of positions either way).
-  virtual void add_hessian(SparseAssembler& A, bool project_psd) const = 0;
+  /// Adds the Hessian's upper triangle to A; HessianKind::Projected: a
+  /// positive semidefinite modification of the strongly indefinite parts
+  /// (the same sequence of positions either way).
+  virtual void add_hessian(SparseAssembler& A, HessianKind kind) const = 0;
   /// Largest certified t in (0, 1] such that x + s·dx, s <= t, keeps the term
   /// finite (collision detection). Default 1.
   virtual double max_step(const VecX& x, const VecX& dx) const {
@@ -121,7 +122,7 @@ class CompositeObjective : public Objective {
   /// The sum in the order of the terms.
   double energy() override;
   VecX gradient() override;
-  void assemble_hessian(SparseAssembler& A, bool exact) override;
+  void assemble_hessian(SparseAssembler& A, HessianKind kind) override;
   /// The smallest of the terms' bounds.
   double max_step(const VecX& x, const VecX& dx) override;
   void accept() override;

@@ -110,6 +110,11 @@ struct RelaxOptions {
   void validate() const;
 };
 
+/// Whether relax() uses the multilevel method for these options: the
+/// method is Multilevel and the model twist-free (no link, no full model)
+/// without a slab; other options relax by the direct method.
+bool multilevel_applies(const RelaxOptions& options);
+
 /// The model's parameters with every "<= 0 means default" field of
 /// RelaxOptions resolved. The only place where these defaults are computed:
 /// relax(), the data-set metadata and `knots energy` call it.

@@ -80,7 +80,7 @@ class SymmetricObjective : public Objective {
   /// Sᵀ ∇E(S y + b).
   VecX gradient() override { return S_.transpose() * full_.gradient(); }
   /// Sᵀ H S (its upper triangle), H the full objective's (exact or projected) Hessian.
-  void assemble_hessian(SparseAssembler& A, bool exact) override;
+  void assemble_hessian(SparseAssembler& A, HessianKind kind) override;
   double max_step(const VecX& y, const VecX& dy) override;
   void accept() override { full_.accept(); }
   Eigen::MatrixXd rigid_modes() override;

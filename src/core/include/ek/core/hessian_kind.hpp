@@ -1,0 +1,17 @@
+#pragma once
+/// Which Hessian an energy term assembles.
+#include <string>
+
+namespace ek {
+
+enum class HessianKind {
+  /// The exact second derivative (the stability test at convergence, eigen-analysis, saddles).
+  Exact,
+  /// A positive semidefinite modification of the strongly indefinite parts
+  /// (per-element projections: compressed edges' stretching, each contact
+  /// pair's barrier), for better Newton directions far from equilibrium.
+  Projected,
+};
+inline std::string to_string(HessianKind kind) { return kind == HessianKind::Exact ? "exact" : "projected"; }
+
+}  // namespace ek
