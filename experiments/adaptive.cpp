@@ -44,6 +44,112 @@ constexpr int kPaperInitial = 50, kPaperBatch = 10, kPaperBudget = 500;
 constexpr int kShuffles = 20;                           ///< [1] random orders per knot
 constexpr std::uint64_t kShuffleSeed = 0x5EED0ADA97ULL;  ///< fixed: the control is reproducible
 
+/// What the replays of every knot add up to (the summary's sums).
+struct Tally {
+  const ExploreOptions& scaled;  ///< the scaled rule
+  const ExploreOptions& paper;   ///< the paper's rule and budget (Section 7.4)
+  results::AdaptiveSummary& sum;
+  long missed_samples = 0, paper_total = 0, paper_optimistic = 0;
+  int stopped = 0;
+  std::vector<int> used, paper_used;  ///< samples per knot; the paper rule's exact stops only
+  double shuffled_found = 0.0, shuffled_used = 0.0;  ///< sums over the random orders
+
+  /// The paper's rule replayed on the stored runs (bounds where it would sample past them).
+  void paper_rule(const KnotEntry& e, const AdaptiveReplay& pr) {
+    paper_total += pr.truncated ? paper.max_samples : pr.samples_used;
+    // a knot the rule would sample past the stored runs uses at least one more
+    paper_optimistic += pr.truncated ? std::min<long>(paper.max_samples, static_cast<long>(e.runs.size()) + 1)
+                                     : pr.samples_used;
+    if (!pr.truncated) {
+      ++sum.paper_rule.knots_stopped_within_stored;
+      paper_used.push_back(pr.samples_used);
+    }
+  }
+
+  /// The scaled rule on kShuffles random orders of the knot's runs.
+  void shuffled(const std::string& name, const KnotEntry& e, const std::vector<StateCluster>& clusters,
+                const std::vector<int>& rank) {
+    std::uint64_t state = knot_seed(kShuffleSeed, name);  // per knot: independent of the knot set
+    for (int t = 0; t < kShuffles; ++t) {
+      const KnotEntry se = shuffled_runs(e, state);
+      const AdaptiveReplay sr = replay_adaptive(se, scaled);
+      const LowEnergyCoverage c =
+          low_energy_coverage(se, clusters, rank, clusters_seen(se, rank, sr.samples_used), kLowEnergyFactor);
+      shuffled_found += static_cast<double>(c.found) / kShuffles;
+      shuffled_used += static_cast<double>(sr.samples_used) / kShuffles;
+    }
+  }
+
+  /// One knot: both rules replayed, the low-energy clusters they find; its adaptive.csv row.
+  std::vector<std::string> add(const std::string& name, const KnotEntry& e) {
+    const AdaptiveReplay r = replay_adaptive(e, scaled);
+    const AdaptiveReplay pr = replay_adaptive(e, paper);
+    paper_rule(e, pr);
+    sum.fixed_simulations += static_cast<long>(e.runs.size());
+    sum.adaptive_simulations += r.samples_used;
+    used.push_back(r.samples_used);
+    const bool by_score = r.score_history.back() <= scaled.score_threshold;
+    stopped += by_score;
+    // the full run's low-energy clusters: found by the rules' prefixes? (a
+    // truncated paper-rule run used every stored sample, at least)
+    std::vector<int> rank;
+    const auto clusters = clusters_at_cut(e, kClusterCut, &rank);
+    const LowEnergyCoverage cov =
+        low_energy_coverage(e, clusters, rank, clusters_seen(e, rank, r.samples_used), kLowEnergyFactor);
+    const int paper_prefix = pr.truncated ? static_cast<int>(e.runs.size()) : pr.samples_used;
+    const LowEnergyCoverage pcov =
+        low_energy_coverage(e, clusters, rank, clusters_seen(e, rank, paper_prefix), kLowEnergyFactor);
+    sum.low_energy_clusters += cov.clusters;
+    sum.low_energy_clusters_found += cov.found;
+    sum.paper_rule.low_energy_clusters += pcov.clusters;
+    sum.paper_rule.low_energy_clusters_found += pcov.found;
+    missed_samples += cov.missed_samples;
+    for (const auto& m : cov.missed)
+      sum.missed.push_back({name, clusters[static_cast<size_t>(m.rank)].energy_min, clusters.front().energy_min,
+                            static_cast<long>(m.samples)});
+    shuffled(name, e, clusters, rank);
+    std::string scores;
+    for (double x : r.score_history) scores += (scores.empty() ? "" : ";") + Csv::num(x, 4);
+    return {name, std::to_string(e.runs.size()), std::to_string(r.samples_used), Csv::flag(by_score),
+            std::to_string(cov.clusters), std::to_string(cov.found), scores};
+  }
+
+  /// The shares and medians from the sums.
+  void finish(int stored_samples) {
+    std::sort(used.begin(), used.end());
+    std::sort(paper_used.begin(), paper_used.end());
+    const double fixed_total = static_cast<double>(sum.fixed_simulations);
+    const auto share_saved = [](double part, double whole) { return whole > 0 ? 1.0 - part / whole : 0.0; };
+    sum.knots = static_cast<int>(used.size());
+    sum.saved_share = share_saved(static_cast<double>(sum.adaptive_simulations), fixed_total);
+    sum.median_samples = used.empty() ? 0 : used[used.size() / 2];
+    sum.stopped_by_score_share = used.empty() ? 0.0 : static_cast<double>(stopped) / static_cast<double>(used.size());
+    sum.missed_samples = missed_samples;
+    sum.missed_sample_share = fixed_total > 0 ? static_cast<double>(missed_samples) / fixed_total : 0.0;
+    sum.shuffled = {kShuffles, shuffled_found, share_saved(shuffled_used, fixed_total)};
+    const double paper_fixed = static_cast<double>(paper.max_samples) * static_cast<double>(used.size());
+    results::AdaptivePaperRule& pr = sum.paper_rule;
+    pr.adaptive = paper.sampling_description();
+    pr.budget = paper.max_samples;
+    pr.stored_samples = stored_samples;
+    pr.simulations_upper_bound = paper_total;
+    pr.saved_share_lower_bound = share_saved(static_cast<double>(paper_total), paper_fixed);
+    pr.saved_share_upper_bound = share_saved(static_cast<double>(paper_optimistic), paper_fixed);
+    pr.median_samples_of_stopped = paper_used.empty() ? 0 : paper_used[paper_used.size() / 2];
+  }
+};
+
+void report(const results::AdaptiveSummary& sum, const Tally& t, int stored_samples) {
+  const auto& pr = sum.paper_rule;
+  std::cout << "exp_adaptive: saved " << sum.saved_share << " of simulations, median " << sum.median_samples
+            << " samples, " << sum.low_energy_clusters_found << "/" << sum.low_energy_clusters
+            << " low-energy clusters found (the missed ones hold a share " << sum.missed_sample_share
+            << " of the samples); the paper's rule " << pr.adaptive << " saves at least " << pr.saved_share_lower_bound
+            << " (" << pr.knots_stopped_within_stored << "/" << t.used.size() << " knots stop within the "
+            << stored_samples << " stored samples); in random sample orders it finds " << t.shuffled_found << "/"
+            << sum.low_energy_clusters << " and saves " << sum.shuffled.saved_share_mean << std::endl;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -51,117 +157,39 @@ int main(int argc, char** argv) {
     ExploreOptions o = base_options(a);
     o.samples = by_scale(a, 60, 150, kPaperBudget);
     o.adaptive = false;
-    ExploreOptions ad = o;
-    ad.adaptive = true;
-    ad.initial_samples = by_scale(a, 15, 30, kPaperInitial);
-    ad.batch_samples = by_scale(a, 5, 10, kPaperBatch);
-    ad.max_samples = o.samples;
-    const int max_crossings = by_scale(a, 6, 7, 12);
-    const auto knots = KnotTable::global().up_to_crossings(max_crossings);
+    ExploreOptions scaled = o;
+    scaled.adaptive = true;
+    scaled.initial_samples = by_scale(a, 15, 30, kPaperInitial);
+    scaled.batch_samples = by_scale(a, 5, 10, kPaperBatch);
+    scaled.max_samples = o.samples;
+    ExploreOptions paper = scaled;
+    paper.initial_samples = kPaperInitial;
+    paper.batch_samples = kPaperBatch;
+    paper.max_samples = kPaperBudget;
+    const auto knots = KnotTable::global().up_to_crossings(by_scale(a, 6, 7, 12));
     announce(a, "exp_adaptive",
              std::to_string(knots.size()) + " knots with a budget of " + std::to_string(o.samples) +
-                 " samples; adaptive " + ad.sampling_description(),
+                 " samples; adaptive " + scaled.sampling_description(),
              static_cast<double>(knots.size()) * o.samples * kSecondsPerRelaxation / a.jobs);
     DatasetRunOptions ro;
     ro.explore = o;
     ro.knots = knots;
     ro.output = a.out + "/fixed.h5";
     run_dataset(ro);
-    DatasetReader reader(ro.output);
-    Csv csv(a.out + "/adaptive.csv", {"knot", "fixed_samples", "adaptive_samples", "stopped_by_score", "low_clusters",
-                                      "low_clusters_found", "scores"});
     results::AdaptiveSummary sum;
     sum.scale = a.scale_name;
     sum.budget = o.samples;
-    sum.adaptive = ad.sampling_description();
-    sum.score_threshold = ad.score_threshold;
+    sum.adaptive = scaled.sampling_description();
+    sum.score_threshold = scaled.score_threshold;
     sum.low_energy_factor = kLowEnergyFactor;
-    long missed_samples = 0;
-    int stopped = 0;
-    std::vector<int> used;
-    ExploreOptions paper = ad;  // the paper's rule and budget (Section 7.4)
-    paper.initial_samples = kPaperInitial;
-    paper.batch_samples = kPaperBatch;
-    paper.max_samples = kPaperBudget;
-    long paper_total = 0, paper_optimistic = 0;
-    std::vector<int> paper_used;  // exact stops only
-    results::AdaptivePaperRule& pr_sum = sum.paper_rule;
-    double shuffled_found = 0.0, shuffled_used = 0.0;  // sums over the orders
-    for (const auto& name : reader.knot_names()) {
-      const KnotEntry e = reader.read(name);
-      const AdaptiveReplay r = replay_adaptive(e, ad);
-      const AdaptiveReplay pr = replay_adaptive(e, paper);
-      paper_total += pr.truncated ? paper.max_samples : pr.samples_used;
-      // a knot the rule would sample past the stored runs uses at least one more
-      paper_optimistic += pr.truncated ? std::min<long>(paper.max_samples, static_cast<long>(e.runs.size()) + 1)
-                                       : pr.samples_used;
-      if (!pr.truncated) {
-        ++pr_sum.knots_stopped_within_stored;
-        paper_used.push_back(pr.samples_used);
-      }
-      sum.fixed_simulations += static_cast<long>(e.runs.size());
-      sum.adaptive_simulations += r.samples_used;
-      used.push_back(r.samples_used);
-      const bool by_score = r.score_history.back() <= ad.score_threshold;
-      stopped += by_score;
-      // the full run's low-energy clusters: found by the scaled rule's prefix?
-      std::vector<int> rank;
-      const auto clusters = clusters_at_cut(e, kClusterCut, &rank);
-      const LowEnergyCoverage cov =
-          low_energy_coverage(e, clusters, rank, clusters_seen(e, rank, r.samples_used), kLowEnergyFactor);
-      // a truncated paper-rule run used every stored sample (at least)
-      const int paper_prefix = pr.truncated ? static_cast<int>(e.runs.size()) : pr.samples_used;
-      const LowEnergyCoverage pcov =
-          low_energy_coverage(e, clusters, rank, clusters_seen(e, rank, paper_prefix), kLowEnergyFactor);
-      sum.low_energy_clusters += cov.clusters;
-      sum.low_energy_clusters_found += cov.found;
-      pr_sum.low_energy_clusters += pcov.clusters;
-      pr_sum.low_energy_clusters_found += pcov.found;
-      missed_samples += cov.missed_samples;
-      for (const auto& m : cov.missed)
-        sum.missed.push_back({name, clusters[static_cast<size_t>(m.rank)].energy_min, clusters.front().energy_min,
-                              static_cast<long>(m.samples)});
-      std::uint64_t shuffle_state = knot_seed(kShuffleSeed, name);  // per knot: independent of the knot set
-      for (int t = 0; t < kShuffles; ++t) {
-        const KnotEntry se = shuffled_runs(e, shuffle_state);
-        const AdaptiveReplay sr = replay_adaptive(se, ad);
-        const LowEnergyCoverage scov =
-            low_energy_coverage(se, clusters, rank, clusters_seen(se, rank, sr.samples_used), kLowEnergyFactor);
-        shuffled_found += static_cast<double>(scov.found) / kShuffles;
-        shuffled_used += static_cast<double>(sr.samples_used) / kShuffles;
-      }
-      std::string scores;
-      for (double s : r.score_history) scores += (scores.empty() ? "" : ";") + Csv::num(s, 4);
-      csv.row({name, std::to_string(e.runs.size()), std::to_string(r.samples_used), Csv::flag(by_score),
-               std::to_string(cov.clusters), std::to_string(cov.found), scores});
-    }
+    Tally tally{scaled, paper, sum};
+    Csv csv(a.out + "/adaptive.csv", {"knot", "fixed_samples", "adaptive_samples", "stopped_by_score", "low_clusters",
+                                      "low_clusters_found", "scores"});
+    const DatasetReader reader(ro.output);
+    for (const auto& name : reader.knot_names()) csv.row(tally.add(name, reader.read(name)));
     csv.commit();
-    std::sort(used.begin(), used.end());
-    const double fixed_total = static_cast<double>(sum.fixed_simulations);
-    sum.knots = static_cast<int>(used.size());
-    sum.saved_share = fixed_total > 0 ? 1.0 - static_cast<double>(sum.adaptive_simulations) / fixed_total : 0.0;
-    sum.median_samples = used.empty() ? 0 : used[used.size() / 2];
-    sum.stopped_by_score_share = used.empty() ? 0.0 : static_cast<double>(stopped) / static_cast<double>(used.size());
-    sum.missed_samples = missed_samples;
-    sum.missed_sample_share = fixed_total > 0 ? static_cast<double>(missed_samples) / fixed_total : 0.0;
-    sum.shuffled = {kShuffles, shuffled_found, fixed_total > 0 ? 1.0 - shuffled_used / fixed_total : 0.0};
-    std::sort(paper_used.begin(), paper_used.end());
-    const double paper_fixed = static_cast<double>(paper.max_samples) * static_cast<double>(used.size());
-    pr_sum.adaptive = paper.sampling_description();
-    pr_sum.budget = paper.max_samples;
-    pr_sum.stored_samples = o.samples;
-    pr_sum.simulations_upper_bound = paper_total;
-    pr_sum.saved_share_lower_bound = paper_fixed > 0 ? 1.0 - static_cast<double>(paper_total) / paper_fixed : 0.0;
-    pr_sum.saved_share_upper_bound = paper_fixed > 0 ? 1.0 - static_cast<double>(paper_optimistic) / paper_fixed : 0.0;
-    pr_sum.median_samples_of_stopped = paper_used.empty() ? 0 : paper_used[paper_used.size() / 2];
+    tally.finish(o.samples);
     write_summary(a, sum);
-    std::cout << "exp_adaptive: saved " << sum.saved_share << " of simulations, median " << sum.median_samples
-              << " samples, " << sum.low_energy_clusters_found << "/" << sum.low_energy_clusters
-              << " low-energy clusters found (the missed ones hold a share " << *sum.missed_sample_share
-              << " of the samples); the paper's rule " << pr_sum.adaptive << " saves at least "
-              << pr_sum.saved_share_lower_bound << " (" << pr_sum.knots_stopped_within_stored << "/" << used.size()
-              << " knots stop within the " << o.samples << " stored samples); in random sample orders it finds "
-              << shuffled_found << "/" << sum.low_energy_clusters << " and saves " << sum.shuffled.saved_share_mean
-              << std::endl;
+    report(sum, tally, o.samples);
   });
 }

@@ -12,7 +12,7 @@
 // eigen-analysis); with two methods, the ratio of their medians. Pin it to
 // one core: `taskset -c 1 build/experiments/exp_bench_solver`.
 //
-//   exp_bench_solver [--quick] [--count K] [--knots A,B,...] [--seed S] [--out DIR]
+//   exp_bench_solver --out DIR [--quick] [--count K] [--knots A,B,...] [--seed S]
 //                    [--methods M[,M...]] [--continuation F[,F...]] [--max-iter N]
 //                    [--trace] [--verbose] [--skips] [--peer DIR] [--scaling]
 //
@@ -62,12 +62,14 @@
 
 #include "ek/core/atomic_file.hpp"
 #include "ek/core/errors.hpp"
+#include "ek/core/parse.hpp"
 #include "ek/geometry/curve_io.hpp"
 #include "ek/knots/table.hpp"
 #include "ek/lattice/lattice_polygon.hpp"
 #include "ek/lattice/sampling.hpp"
 #include "ek/solver/relax.hpp"
 #include "ek/solver/trace.hpp"
+#include "experiment.hpp"
 
 namespace {
 
@@ -92,21 +94,7 @@ double thread_cpu() {
   return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
-double median(std::vector<double> v) {
-  if (v.empty()) return 0.0;
-  std::sort(v.begin(), v.end());
-  const size_t m = v.size() / 2;
-  return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
-}
-
-std::vector<std::string> split(const std::string& s, char sep) {
-  std::vector<std::string> out;
-  std::stringstream ss(s);
-  std::string item;
-  while (std::getline(ss, item, sep))
-    if (!item.empty()) out.push_back(item);
-  return out;
-}
+using ek::exp::median;
 
 std::string fmt(double x, const char* f = "%.4g") {
   char buf[64];
@@ -529,69 +517,53 @@ int scaling(const Config& c) {
   return kept ? 0 : 1;
 }
 
-int usage(const char* msg) {
-  if (msg) std::cerr << "exp_bench_solver: " << msg << "\n";
-  std::cerr << "usage: exp_bench_solver [--quick] [--count K] [--knots A,B,...] [--seed S] [--out DIR] "
-               "[--methods M[,M...]] [--continuation F[,F...]] [--max-iter N] [--trace] [--verbose] [--skips] "
-               "[--peer DIR] [--scaling]\n";
-  return 2;
-}
-
-/// Parses the arguments into `c`; an empty string when they are valid.
-std::string parse(int argc, char** argv, Config& c) {
-  ek::RelaxOptions base;
-  std::vector<std::string> names = {"default", "hybrid-simplicial"};
-  bool count_given = false;
-  for (int i = 1; i < argc; ++i) {
-    const std::string a = argv[i];
-    auto value = [&]() -> std::string {
-      if (i + 1 >= argc) throw ek::InputError(a + " needs a value");
-      return argv[++i];
-    };
-    if (a == "--quick") c.count = 2, count_given = true;
-    else if (a == "--count") c.count = std::stoi(value()), count_given = true;
-    else if (a == "--knots") c.knots = split(value(), ',');
-    else if (a == "--seed") c.seed = std::stoull(value());
-    else if (a == "--out") c.out = value();
-    else if (a == "--methods" || a == "--method") names = split(value(), ',');
-    else if (a == "--max-iter") base.max_iterations = std::stoi(value());
-    else if (a == "--continuation")
-      for (const std::string& f : split(value(), ',')) base.contact_continuation.push_back(std::stod(f));
-    else if (a == "--verbose") base.newton.verbose = true;
-    else if (a == "--trace") c.trace = base.newton.record_trace = true;
-    else if (a == "--skips") c.skips = true;
-    else if (a == "--scaling") c.scaling = true;
-    else if (a == "--peer") c.peer = value();
-    else if (a == "--help" || a == "-h") return "help";
-    else return "unknown argument " + a;
-  }
-  if (c.scaling && !count_given) c.count = 5;
-  if (c.count < 1 || c.knots.empty() || names.empty()) return "need at least one knot, one sample and one method";
-  base.validate();
-  for (const std::string& n : names) c.methods.push_back(method_named(n, base));
-  return "";
+/// The options this benchmark adds to the experiments' common ones, filling `c` and `base`.
+std::vector<ek::exp::ExtraOption> options(Config& c, ek::RelaxOptions& base, std::vector<std::string>& names,
+                                          bool& count_given) {
+  using ek::exp::split_list;
+  const auto integer = [](const std::string& v) { return static_cast<int>(ek::parse_integer(v, "a count")); };
+  return {
+      {"--quick", "[--quick]", nullptr, [&] { c.count = 2, count_given = true; }},
+      {"--count", "[--count K]", [&](const std::string& v) { c.count = integer(v), count_given = true; }, nullptr},
+      {"--knots", "[--knots A,B,...]", [&](const std::string& v) { c.knots = split_list(v); }, nullptr},
+      {"--seed", "[--seed S]",
+       [&](const std::string& v) { c.seed = static_cast<std::uint64_t>(ek::parse_integer(v, "--seed")); }, nullptr},
+      {"--methods", "[--methods M[,M...]]", [&](const std::string& v) { names = split_list(v); }, nullptr},
+      {"--method", "[--method M]", [&](const std::string& v) { names = split_list(v); }, nullptr},
+      {"--max-iter", "[--max-iter N]", [&](const std::string& v) { base.max_iterations = integer(v); }, nullptr},
+      {"--continuation", "[--continuation F[,F...]]",
+       [&](const std::string& v) {
+         for (const std::string& f : split_list(v)) base.contact_continuation.push_back(ek::parse_number(f, "a factor"));
+       },
+       nullptr},
+      {"--verbose", "[--verbose]", nullptr, [&] { base.newton.verbose = true; }},
+      {"--trace", "[--trace]", nullptr, [&] { c.trace = base.newton.record_trace = true; }},
+      {"--skips", "[--skips]", nullptr, [&] { c.skips = true; }},
+      {"--scaling", "[--scaling]", nullptr, [&] { c.scaling = true; }},
+      {"--peer", "[--peer DIR]", [&](const std::string& v) { c.peer = v; }, nullptr},
+  };
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
   Config c;
-  try {
-    const std::string error = parse(argc, argv, c);
-    if (error == "help") return usage(nullptr), 0;
-    if (!error.empty()) return usage(error.c_str());
-  } catch (const std::exception& e) {
-    return usage(e.what());
-  }
-  try {
-    std::filesystem::create_directories(c.out);
-    if (c.trace) std::filesystem::create_directories(c.out + "/traces");
-    if (!c.peer.empty()) return peer(c);
-    if (c.scaling) return scaling(c);
-    if (c.skips) return skips(c);
-    return macro(c);
-  } catch (const ek::InputError& e) {
-    std::cerr << "exp_bench_solver: " << e.what() << "\n";
-    return 2;
-  }
+  ek::RelaxOptions base;
+  std::vector<std::string> names = {"default", "hybrid-simplicial"};
+  bool count_given = false;
+  int status = 0;
+  const int parsed = ek::exp::run_experiment(
+      argc, argv, "exp_bench_solver", "The solver's macro benchmark (docs/performance.md).",
+      [&](const ek::exp::Args& a) {
+        c.out = a.out;
+        if (c.scaling && !count_given) c.count = 5;
+        ek::require_input(c.count >= 1 && !c.knots.empty() && !names.empty(),
+                          "need at least one knot, one sample and one method");
+        base.validate();
+        for (const std::string& n : names) c.methods.push_back(method_named(n, base));
+        if (c.trace) std::filesystem::create_directories(c.out + "/traces");
+        status = !c.peer.empty() ? peer(c) : c.scaling ? scaling(c) : c.skips ? skips(c) : macro(c);
+      },
+      options(c, base, names, count_given));
+  return parsed != 0 ? parsed : status;
 }

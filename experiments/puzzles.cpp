@@ -37,8 +37,8 @@ int main(int argc, char** argv) {
     for (const std::string& file : {a.results + "/multistability/multistability.h5", a.results + "/dataset/dataset.h5"}) {
       if (!std::filesystem::exists(file)) continue;
       DatasetReader reader(file);
-      sum.radius = reader.metadata().radius;
-      sum.dhat = reader.metadata().dhat;
+      sum.radius = reader.metadata().radius.value();
+      sum.dhat = reader.metadata().dhat.value();
       for (const auto& name : reader.knot_names()) {
         if (!done.insert(name).second) continue;
         const KnotEntry e = reader.read(name);

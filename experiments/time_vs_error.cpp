@@ -51,6 +51,143 @@ Points covered_circle(int n, int k, double radius, double squash = 1.0) {
   return P;
 }
 
+/// 1. k-covered circles: the bending energy 2π²k²EI/L; k = 1 relaxed from an
+/// ellipse with the circle's rest lengths, k = 2, 3 evaluated on the polygon.
+void circles(const Args& a, const std::vector<int>& ns) {
+  const RodMaterial mat;
+  const double EI = mat.bending_stiffness();
+  Csv csv(a.out + "/circles.csv", {"k", "n", "energy", "exact", "relative_error", "seconds", "how"});
+  for (int k : {1, 2, 3})
+    for (int n : ns) {
+      const double L = n;
+      const double R = L / (2.0 * M_PI * k), exact = 2.0 * M_PI * M_PI * k * k * EI / L;
+      double E = 0.0, secs = 0.0;
+      const auto t0 = Clock::now();
+      if (k == 1) {
+        RelaxOptions ro;
+        ro.rest_lengths = VecX::Constant(n, L / n);
+        ro.check_topology = false;  // the unknot
+        Points start = covered_circle(n, 1, R, 1.2);
+        start *= L / curve_length(start);
+        const RelaxResult r = relax(start, ro);
+        if (!r.converged())
+          std::cout << "exp_time_vs_error: circle n = " << n << " ended " << r.status() << " after "
+                    << r.report.iterations << " iterations, |g| " << r.report.gradient_norm << std::endl;
+        E = r.energy.bend;
+      } else {
+        E = ElasticRod(covered_circle(n, k, R), mat, TwistModel::TwistFree).energy(EnergyTerm::Bend);
+      }
+      secs = seconds_since(t0);
+      csv.row({std::to_string(k), std::to_string(n), Csv::num(E), Csv::num(exact),
+               Csv::num(std::fabs(E - exact) / exact), Csv::num(secs), k == 1 ? "relax" : "evaluate"});
+    }
+  csv.commit();
+}
+
+/// Whether the twisted circle at link `lk` is stable (the stability test at convergence).
+bool twisted_circle_stable(const Points& circle, double lk) {
+  RelaxOptions ro;
+  ro.link = lk;
+  ro.check_topology = false;
+  ro.stop_at_critical_point = true;
+  ro.max_iterations = 1000;
+  const RelaxResult r = relax(circle, ro);
+  if (!r.converged())
+    std::cout << "exp_time_vs_error: Michell n = " << circle.rows() << ", Lk = " << lk << ": " << r.status()
+              << std::endl;
+  return r.stable();
+}
+
+/// 2. Michell's instability: the critical link √3(1 + ν) of a twisted ring by bisection.
+void michell(const Args& a, const std::vector<int>& ns, results::TimeVsErrorSummary& sum) {
+  const double exact = std::sqrt(3.0) * (1.0 + RodMaterial().poisson);
+  Csv csv(a.out + "/michell.csv", {"n", "critical_link", "exact", "relative_error", "seconds", "solves"});
+  for (int n : ns) {
+    const Points circle = covered_circle(n, 1, n / (2.0 * M_PI));  // unit edges
+    double lo = 0.5 * exact, hi = 1.5 * exact;
+    int solves = 2;
+    const auto t0 = Clock::now();
+    if (!twisted_circle_stable(circle, lo) || twisted_circle_stable(circle, hi)) {
+      std::cout << "exp_time_vs_error: Michell n = " << n << ": no bracket (see above); skipped" << std::endl;
+      continue;
+    }
+    for (; hi - lo > 1e-6 * exact; ++solves) {
+      const double mid = 0.5 * (lo + hi);
+      (twisted_circle_stable(circle, mid) ? lo : hi) = mid;
+    }
+    const double secs = seconds_since(t0), lc = 0.5 * (lo + hi);
+    csv.row({std::to_string(n), Csv::num(lc), Csv::num(exact), Csv::num(std::fabs(lc - exact) / exact),
+             Csv::num(secs / solves), std::to_string(solves)});
+    sum.michell.push_back({n, lc, std::fabs(lc - exact) / exact});
+    std::cout << "exp_time_vs_error: Michell n = " << n << ": Lk_c = " << lc << " (exact " << exact << ")"
+              << std::endl;
+  }
+  csv.commit();
+}
+
+/// 3a. A knot's equilibrium resampled to n = 100..800 and relaxed again:
+/// energy against n, with the Richardson reference of the last three.
+void resolution_sweep(const std::string& name, const RelaxResult& base, Csv& csv) {
+  const std::vector<int> kn = {100, 200, 400, 800};
+  std::vector<RelaxResult> runs;
+  std::vector<double> E, T;
+  for (int n : kn) {
+    RelaxOptions ro;
+    ro.rest_lengths = VecX::Constant(n, 400.0 / n);
+    const auto t0 = Clock::now();
+    runs.push_back(relax(resample_arclength(base.positions, n), ro));
+    T.push_back(seconds_since(t0));
+    E.push_back(runs.back().energy.total);
+  }
+  const size_t m = E.size();
+  const double d1 = E[m - 2] - E[m - 3], d2 = E[m - 1] - E[m - 2];
+  const double p = std::log(std::fabs(d1 / d2)) / std::log(2.0);
+  const double ref = E[m - 1] + d2 / (std::pow(2.0, p) - 1.0);
+  for (size_t q = 0; q < m; ++q)
+    csv.row({name, std::to_string(kn[q]), Csv::num(E[q]), Csv::num(ref), Csv::num(std::fabs(E[q] - ref) / ref),
+             Csv::num(T[q]), std::to_string(runs[q].report.iterations), runs[q].status(), Csv::num(p)});
+  std::cout << "exp_time_vs_error: " << name << " observed order " << p << ", reference energy " << ref << std::endl;
+}
+
+/// 3b. The lattice sample relaxed at gradient tolerances 1e-4 .. 1e-10
+/// against the result at 1e-12.
+void tolerance_sweep(const std::string& name, const Points& sample, Csv& csv) {
+  const auto solve = [&](double tol) {
+    RelaxOptions ro;
+    ro.tolerance = tol;
+    const auto t0 = Clock::now();
+    RelaxResult r = relax(sample, ro);
+    return std::make_pair(r, seconds_since(t0));
+  };
+  const double reference = solve(1e-12).first.energy.total;
+  for (double tol : {1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10}) {
+    const auto [r, secs] = solve(tol);
+    const double er = std::fabs(r.energy.total - reference) / reference;
+    csv.row({name, Csv::num(tol), Csv::num(r.energy.total), Csv::num(reference), Csv::num(er), Csv::num(secs),
+             std::to_string(r.report.iterations), r.status()});
+  }
+}
+
+/// 3. Knots: the resolution and tolerance sweeps of one lattice sample each.
+void knots(const Args& a) {
+  Csv kc(a.out + "/knots.csv", {"knot", "n", "energy", "reference", "relative_error", "seconds", "iterations",
+                                "status", "observed_order"});
+  Csv tc(a.out + "/tolerance.csv",
+         {"knot", "tolerance", "energy", "reference", "relative_error", "seconds", "iterations", "status"});
+  for (const std::string name : {"4_1", "8_19", "12a_1019"}) {
+    SampleOptions so;
+    so.vertices = 400;
+    so.seed = 7;
+    const Points sample = to_points(sample_knot(KnotTable::global().at(name), so).samples.front());
+    const RelaxResult base = relax(sample);
+    require(base.stable(), name + ": the n = 400 sample did not converge");
+    resolution_sweep(name, base, kc);
+    tolerance_sweep(name, sample, tc);
+  }
+  kc.commit();
+  tc.commit();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -59,143 +196,11 @@ int main(int argc, char** argv) {
                                                      : std::vector<int>{50, 100, 200, 400, 800, 1600, 3200};
     announce(a, "exp_time_vs_error", "circles, Michell's instability, knots at n = 100..800, tolerance sweep",
              a.scale == Scale::CI ? 120.0 : 900.0);
-    const RodMaterial mat;
-    const double EI = mat.bending_stiffness();
     results::TimeVsErrorSummary sum;
     sum.scale = a.scale_name;
-
-    // 1. k-covered circles
-    {
-      Csv csv(a.out + "/circles.csv", {"k", "n", "energy", "exact", "relative_error", "seconds", "how"});
-      for (int k : {1, 2, 3})
-        for (int n : ns) {
-          const double L = n;
-          const double R = L / (2.0 * M_PI * k), exact = 2.0 * M_PI * M_PI * k * k * EI / L;
-          double E = 0.0, secs = 0.0;
-          if (k == 1) {
-            // an ellipse with the circle's rest lengths relaxes to the circle
-            RelaxOptions ro;
-            ro.rest_lengths = VecX::Constant(n, L / n);
-            ro.check_topology = false;  // the unknot
-            Points start = covered_circle(n, 1, R, 1.2);
-            start *= L / curve_length(start);
-            const auto t0 = Clock::now();
-            const RelaxResult r = relax(start, ro);
-            secs = seconds_since(t0);
-            if (!r.converged())
-              std::cout << "exp_time_vs_error: circle n = " << n << " ended " << r.status() << " after "
-                        << r.report.iterations << " iterations, |g| " << r.report.gradient_norm << std::endl;
-            E = r.energy.bend;
-          } else {
-            const Points P = covered_circle(n, k, R);
-            const auto t0 = Clock::now();
-            const ElasticRod rod(P, mat, TwistModel::TwistFree);
-            E = rod.energy(EnergyTerm::Bend);
-            secs = seconds_since(t0);
-          }
-          csv.row({std::to_string(k), std::to_string(n), Csv::num(E), Csv::num(exact),
-                   Csv::num(std::fabs(E - exact) / exact), Csv::num(secs), k == 1 ? "relax" : "evaluate"});
-        }
-      csv.commit();
-    }
-
-    // 2. Michell's instability
-    {
-      const double exact = std::sqrt(3.0) * (1.0 + mat.poisson);
-      Csv csv(a.out + "/michell.csv", {"n", "critical_link", "exact", "relative_error", "seconds", "solves"});
-      for (int n : ns) {
-        const Points circle = covered_circle(n, 1, n / (2.0 * M_PI));  // unit edges
-        auto stable = [&](double lk) {
-          RelaxOptions ro;
-          ro.link = lk;
-          ro.check_topology = false;
-          ro.stop_at_critical_point = true;
-          ro.max_iterations = 1000;
-          const RelaxResult r = relax(circle, ro);
-          if (!r.converged())
-            std::cout << "exp_time_vs_error: Michell n = " << n << ", Lk = " << lk << ": " << r.status() << std::endl;
-          return r.stable();
-        };
-        double lo = 0.5 * exact, hi = 1.5 * exact;
-        int solves = 0;
-        const auto t0 = Clock::now();
-        solves += 2;
-        if (!stable(lo) || stable(hi)) {
-          std::cout << "exp_time_vs_error: Michell n = " << n << ": no bracket (see above); skipped" << std::endl;
-          continue;
-        }
-        while (hi - lo > 1e-6 * exact) {
-          const double mid = 0.5 * (lo + hi);
-          (stable(mid) ? lo : hi) = mid;
-          ++solves;
-        }
-        const double secs = seconds_since(t0), lc = 0.5 * (lo + hi);
-        csv.row({std::to_string(n), Csv::num(lc), Csv::num(exact), Csv::num(std::fabs(lc - exact) / exact),
-                 Csv::num(secs / solves), std::to_string(solves)});
-        sum.michell.push_back({n, lc, std::fabs(lc - exact) / exact});
-        std::cout << "exp_time_vs_error: Michell n = " << n << ": Lk_c = " << lc << " (exact " << exact << ")"
-                  << std::endl;
-      }
-      csv.commit();
-    }
-
-    // 3. knots: resolution sweep and tolerance sweep
-    {
-      Csv kc(a.out + "/knots.csv", {"knot", "n", "energy", "reference", "relative_error", "seconds", "iterations",
-                                    "status", "observed_order"});
-      Csv tc(a.out + "/tolerance.csv",
-             {"knot", "tolerance", "energy", "reference", "relative_error", "seconds", "iterations", "status"});
-      const std::vector<int> kn = {100, 200, 400, 800};
-      for (const std::string name : {"4_1", "8_19", "12a_1019"}) {
-        SampleOptions so;
-        so.vertices = 400;
-        so.seed = 7;
-        const Points sample = to_points(sample_knot(KnotTable::global().at(name), so).samples.front());
-        const RelaxResult base = relax(sample);
-        require(base.stable(), name + ": the n = 400 sample did not converge");
-        std::vector<double> E, T;
-        std::vector<int> it;
-        std::vector<std::string> st;
-        for (int n : kn) {
-          const Points P = resample_arclength(base.positions, n);
-          RelaxOptions ro;
-          ro.rest_lengths = VecX::Constant(n, 400.0 / n);
-          const auto t0 = Clock::now();
-          const RelaxResult r = relax(P, ro);
-          T.push_back(seconds_since(t0));
-          E.push_back(r.energy.total);
-          it.push_back(r.report.iterations);
-          st.push_back(r.status());
-        }
-        const size_t m = E.size();
-        const double d1 = E[m - 2] - E[m - 3], d2 = E[m - 1] - E[m - 2];
-        const double p = std::log(std::fabs(d1 / d2)) / std::log(2.0);
-        const double ref = E[m - 1] + d2 / (std::pow(2.0, p) - 1.0);
-        for (size_t q = 0; q < m; ++q)
-          kc.row({name, std::to_string(kn[q]), Csv::num(E[q]), Csv::num(ref), Csv::num(std::fabs(E[q] - ref) / ref),
-                  Csv::num(T[q]), std::to_string(it[q]), st[q], Csv::num(p)});
-        std::cout << "exp_time_vs_error: " << name << " observed order " << p << ", reference energy " << ref
-                  << std::endl;
-        // tolerance sweep at n = 400 from the lattice sample
-        auto solve = [&](double tol) {
-          RelaxOptions ro;
-          ro.tolerance = tol;
-          ro.max_iterations = 5000;
-          const auto t0 = Clock::now();
-          RelaxResult r = relax(sample, ro);
-          return std::make_pair(r, seconds_since(t0));
-        };
-        const auto reference = solve(1e-12);
-        for (double tol : {1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10}) {
-          const auto [r, secs] = solve(tol);
-          const double er = std::fabs(r.energy.total - reference.first.energy.total) / reference.first.energy.total;
-          tc.row({name, Csv::num(tol), Csv::num(r.energy.total), Csv::num(reference.first.energy.total), Csv::num(er),
-                  Csv::num(secs), std::to_string(r.report.iterations), r.status()});
-        }
-      }
-      kc.commit();
-      tc.commit();
-    }
+    circles(a, ns);
+    michell(a, ns, sum);
+    knots(a);
     write_summary(a, sum);
   });
 }

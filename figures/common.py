@@ -62,13 +62,12 @@ def read_summary(results, experiment):
 
 
 def flag(cell):
-    """A CSV flag cell: "true"/"false" ("1"/"0" in files written before typed
-    results); an empty cell (or the old "-") is None."""
-    if cell in ("true", "1"):
+    """A CSV flag cell: "true"/"false"; an empty cell is None."""
+    if cell == "true":
         return True
-    if cell in ("false", "0"):
+    if cell == "false":
         return False
-    if cell in ("", "-", None):
+    if cell in ("", None):
         return None
     raise ValueError(f"CSV flag {cell!r}: expected true, false or empty")
 
@@ -148,12 +147,8 @@ def dataset_material(h5_path):
 
 
 def summary_radius(summary, experiment):
-    """The wire radius a summary records (the experiments write it since the tube figures)."""
-    r = summary.get("radius")
-    if r is None:
-        sys.exit(f"{os.path.basename(sys.argv[0])}: {experiment}/summary.json has no wire radius (written before "
-                 f"it was recorded): rerun make experiment-{experiment}")
-    return float(r)
+    """The wire radius a summary records (its key "radius")."""
+    return float(summary["radius"])
 
 
 def load_equilibria(h5_path, knot):

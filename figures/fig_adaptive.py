@@ -10,7 +10,7 @@ from common import parse_args, plt, read_csv, read_summary, save
 a = parse_args(__doc__)
 rows = read_csv(f"{a.results}/adaptive/adaptive.csv")
 s = read_summary(a.results, "adaptive")
-threshold = s.get("score_threshold")  # absent in files written before the key
+threshold = s["score_threshold"]
 names = [r["knot"] for r in rows]
 used = np.array([int(r["adaptive_samples"]) for r in rows])
 fixed = np.array([int(r["fixed_samples"]) for r in rows])
@@ -23,17 +23,14 @@ ax0.set_ylabel("samples (simulations)")
 ax0.set_title(f"saved {100 * s['saved_share']:.0f}% of the simulations, median {s['median_samples']} samples",
               fontsize=9)
 ax0.legend(fontsize=8)
-factor = s.get("low_energy_factor")
-within = f" (within {factor} x the minimum energy)" if factor is not None else ""
-coverage = f"low-energy clusters{within} found: {s['low_energy_clusters_found']} of {s['low_energy_clusters']}"
-if s.get("missed_sample_share") is not None:
-    coverage += f"; the missed ones hold {100 * s['missed_sample_share']:.1f}% of the full budget's samples"
+coverage = (f"low-energy clusters (within {s['low_energy_factor']} x the minimum energy) found: "
+            f"{s['low_energy_clusters_found']} of {s['low_energy_clusters']}; the missed ones hold "
+            f"{100 * s['missed_sample_share']:.1f}% of the full budget's samples")
 fig.text(0.01, -0.08, coverage, fontsize=8)
 for r in rows:
     scores = [float(v) for v in r["scores"].split(";") if v]
     ax1.plot(range(len(scores)), scores, marker=".", lw=0.8, alpha=0.6)
-if threshold is not None:
-    ax1.axhline(threshold, color="k", ls="--", lw=0.8, label=f"stop when S <= {threshold}")
+ax1.axhline(threshold, color="k", ls="--", lw=0.8, label=f"stop when S <= {threshold}")
 ax1.set_xlabel("batch (0: initial samples)")
 ax1.set_ylabel("importance score S")
 ax1.legend(fontsize=8)

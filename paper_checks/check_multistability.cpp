@@ -55,7 +55,7 @@ TEST(PaperMultistability, EightOneHasAtLeastEightEquilibria) {
   const KnotStates& k = knot(s, "8_1");
   std::cout << "[ measured ] 8_1: " << k.distinct << " distinct equilibria from " << k.samples << " samples at cut "
             << s.cut << "; " << k.distinctly_3d << " distinctly 3D (3D-ness >= " << s.planar_threshold
-            << "), share " << ek::paper::or_na(k.distinctly_3d_share) << std::endl;
+            << "), share " << k.distinctly_3d_share << std::endl;
   if (k.samples < kEightOneSamples)
     GTEST_SKIP() << "8_1 sampled " << k.samples << " times (scale " << s.scale << "): the count is reported, "
                  << "asserted from " << kEightOneSamples << " samples on";

@@ -34,11 +34,10 @@ Summary summary(const std::string& experiment) {
   return ek::results::parse_summary<Summary>(nlohmann::json::parse(in), path);
 }
 
-/// A CSV flag cell: "true" or "false" ("1" and "0" in files written before
-/// typed results). Anything else throws.
+/// A CSV flag cell: "true" or "false". Anything else throws.
 inline bool flag(const std::string& cell) {
-  if (cell == "true" || cell == "1") return true;
-  if (cell == "false" || cell == "0") return false;
+  if (cell == "true") return true;
+  if (cell == "false") return false;
   throw std::runtime_error("CSV flag '" + cell + "': expected true or false");
 }
 

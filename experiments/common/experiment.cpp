@@ -1,5 +1,6 @@
 #include "experiment.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -7,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <sstream>
 
 #include "ek/core/atomic_file.hpp"
 #include "ek/core/errors.hpp"
@@ -26,7 +28,8 @@ fs::path previous_folder(const std::string& out) {
   return p.string() + ".previous";
 }
 
-Args parse_args(int argc, char** argv, const std::string& name, const std::string& description) {
+Args parse_args(int argc, char** argv, const std::string& name, const std::string& description,
+                const std::vector<ExtraOption>& extra) {
   elapsed_seconds();
   Args a;
   auto fail = [&](const std::string& why) {
@@ -39,10 +42,21 @@ Args parse_args(int argc, char** argv, const std::string& name, const std::strin
       if (i + 1 >= argc) fail("option " + s + " needs a value");
       return argv[++i];
     };
+    const auto own = std::find_if(extra.begin(), extra.end(), [&](const ExtraOption& o) { return o.name == s; });
+    if (own != extra.end()) {
+      try {
+        if (own->value) own->value(value());
+        else own->flag();
+      } catch (const InputError& e) {
+        fail(s + ": " + e.what());
+      }
+      continue;
+    }
     if (s == "--help" || s == "-h") {
       std::cout << "usage: " << name
-                << " --scale ci|default|paper|paper10|sample12 --out DIR [--jobs J] [--method M] [--seed S]\n"
-                << description << "\n";
+                << " --scale ci|default|paper|paper10|sample12 --out DIR [--jobs J] [--method M] [--seed S]";
+      for (const ExtraOption& o : extra) std::cout << " " << o.usage;
+      std::cout << "\n" << description << "\n";
       std::exit(0);
     } else if (s == "--scale") {
       a.scale_name = value();
@@ -95,8 +109,8 @@ Args parse_args(int argc, char** argv, const std::string& name, const std::strin
 }
 
 int run_experiment(int argc, char** argv, const std::string& name, const std::string& description,
-                   const std::function<void(const Args&)>& body) {
-  const Args a = parse_args(argc, argv, name, description);
+                   const std::function<void(const Args&)>& body, const std::vector<ExtraOption>& extra) {
+  const Args a = parse_args(argc, argv, name, description, extra);
   try {
     body(a);
   } catch (const InputError& e) {
@@ -106,6 +120,21 @@ int run_experiment(int argc, char** argv, const std::string& name, const std::st
   std::error_code ec;
   fs::remove_all(previous_folder(a.out), ec);  // the run finished: its predecessor is replaced
   return 0;
+}
+
+std::vector<std::string> split_list(const std::string& text, char separator) {
+  std::vector<std::string> out;
+  std::string item;
+  for (std::istringstream in(text); std::getline(in, item, separator);)
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  std::sort(v.begin(), v.end());
+  const size_t m = v.size() / 2;
+  return v.size() % 2 ? v[m] : 0.5 * (v[m - 1] + v[m]);
 }
 
 void announce(const Args& a, const std::string& name, const std::string& what, double expected) {

@@ -41,7 +41,19 @@ struct Args {
   std::uint64_t seed = 1;
 };
 
-/// Parses `--scale ci|default|paper|paper10|sample12 --out DIR [--jobs J] [--method M] [--seed S]` (and --help);
+/// An option an experiment adds to the common ones (`--name VALUE` when
+/// `value` is set, a flag `--name` otherwise). It takes precedence over a
+/// common option of the same name. A handler throws InputError for a bad
+/// value: one line on stderr, exit status 2.
+struct ExtraOption {
+  std::string name;   ///< "--count"
+  std::string usage;  ///< "[--count K]", shown by --help
+  std::function<void(const std::string&)> value;
+  std::function<void()> flag;
+};
+
+/// Parses `--scale ci|default|paper|paper10|sample12 --out DIR [--jobs J] [--method M] [--seed S]`, the
+/// experiment's `extra` options (and --help);
 /// creates DIR. Bad arguments: one line on stderr, exit status 2.
 ///
 /// Reruns: a DIR holding a finished run (DIR/summary.json, written last by
@@ -51,7 +63,8 @@ struct Args {
 /// DIR.previous is removed when the new run finishes (run_experiment); a
 /// failed or interrupted run leaves it, and its own unfinished DIR, which the
 /// next run resumes (data-set journals, docs/dataset-format.md).
-Args parse_args(int argc, char** argv, const std::string& name, const std::string& description);
+Args parse_args(int argc, char** argv, const std::string& name, const std::string& description,
+                const std::vector<ExtraOption>& extra = {});
 
 /// DIR.previous for an output folder DIR ("dir/" and "dir" give the same).
 std::filesystem::path previous_folder(const std::string& out);
@@ -100,6 +113,11 @@ double elapsed_seconds();
 /// The main of an experiment: parses the arguments, runs `body`, and turns
 /// bad input (InputError) into one line on stderr and exit status 2.
 int run_experiment(int argc, char** argv, const std::string& name, const std::string& description,
-                   const std::function<void(const Args&)>& body);
+                   const std::function<void(const Args&)>& body, const std::vector<ExtraOption>& extra = {});
+
+/// The items of a separated list, empty items dropped ("a,,b" gives a, b).
+std::vector<std::string> split_list(const std::string& text, char separator = ',');
+/// The median (the mean of the two middle values for an even count; 0 for none).
+double median(std::vector<double> values);
 
 }  // namespace ek::exp

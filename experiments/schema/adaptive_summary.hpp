@@ -1,6 +1,5 @@
 #pragma once
-// summary.json of exp_adaptive (docs/results.md, "adaptive"). Fields marked
-// "absent before" are std::optional: files written before them still read.
+// summary.json of exp_adaptive (docs/results.md, "adaptive").
 #include <optional>
 #include <string>
 #include <vector>
@@ -14,7 +13,7 @@ struct AdaptiveMissedCluster {
   std::string knot;
   double cluster_energy = 0.0;   ///< [energy] its lowest energy
   double knot_min_energy = 0.0;  ///< [energy] the knot's lowest
-  std::optional<long> samples;   ///< [1] full-budget samples that ended in it (absent before)
+  long samples = 0;   ///< [1] full-budget samples that ended in it
 };
 EK_JSON_FIELDS(AdaptiveMissedCluster, knot, cluster_energy, knot_min_energy, samples)
 
@@ -48,7 +47,7 @@ struct AdaptiveSummary {
   int knots = 0;                            ///< [1]
   int budget = 0;                           ///< [samples] fixed budget per knot
   std::string adaptive;                     ///< the scaled rule's sampling description
-  std::optional<double> score_threshold;    ///< [1] sampling continues while S > this (absent before)
+  double score_threshold = 0.0;    ///< [1] sampling continues while S > this
   long fixed_simulations = 0;               ///< [1]
   long adaptive_simulations = 0;            ///< [1] of the scaled rule
   double saved_share = 0.0;                 ///< [1] 1 - adaptive / fixed
@@ -58,11 +57,11 @@ struct AdaptiveSummary {
   // clusters of the full budget within low_energy_factor of the knot's
   // lowest energy, how many the rule found, and the share of the full
   // budget's samples that ended in the clusters it missed.
-  std::optional<double> low_energy_factor;  ///< [1] kLowEnergyFactor (absent before)
+  double low_energy_factor = 0.0;  ///< [1] kLowEnergyFactor
   int low_energy_clusters = 0;              ///< [1]
   int low_energy_clusters_found = 0;        ///< [1]
-  std::optional<long> missed_samples;       ///< [1] full-budget samples in missed clusters (absent before)
-  std::optional<double> missed_sample_share;  ///< [1] missed_samples / fixed_simulations (absent before)
+  long missed_samples = 0;       ///< [1] full-budget samples in missed clusters
+  double missed_sample_share = 0.0;  ///< [1] missed_samples / fixed_simulations
   std::vector<AdaptiveMissedCluster> missed;  ///< one per missed low-energy cluster
   AdaptiveShuffled shuffled;
   AdaptivePaperRule paper_rule;

@@ -39,12 +39,10 @@ struct DatasetSummary {
   int jobs = 0;                        ///< [1] parallel relaxations
   double equilibria_per_second = 0.0;  ///< [1/s]
   std::string sampling;                ///< ExploreOptions::sampling_description()
-  /// The relaxation method (--method: default, hybrid, exact, paper); null
-  /// in summaries written before it was recorded (they relaxed by hybrid).
-  std::optional<std::string> method;
-  // The sampling cost (absent in summaries written before it was recorded).
-  std::optional<double> estimated_seconds;  ///< [s] the estimate printed before the run (wall, on `jobs`)
-  std::optional<int> budget;                ///< [1] the most samples per knot (500 when adaptive)
+  std::string method;  ///< the relaxation method (--method: default, hybrid, exact, paper)
+  double estimated_seconds = 0.0;  ///< [s] the estimate printed before the run (wall, on `jobs`)
+  int budget = 0;                  ///< [1] the most samples per knot (500 when adaptive)
+  // The sampling cost: null when the data set holds no knot.
   std::optional<double> median_samples;     ///< [1] runs per knot (the paper: 90)
   std::optional<int> max_samples;           ///< [1] runs of the knot that took most
   /// [1] 1 - runs / (knots · 500): relaxations saved against 500 samples per

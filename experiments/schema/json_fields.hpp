@@ -7,10 +7,9 @@
 // experiments write ordered_json: keys in declaration order).
 //
 // Types: numbers, strings, booleans, vectors, nested structs; std::optional<T>
-// is null when empty. Reading: a missing key is an error naming the key,
-// except for std::optional fields (empty), so that a field added later as
-// optional still reads files written before it. Flags of summaries written
-// before typed results ("1", "0", "-") read as true, false and null.
+// (a value that may be absent, e.g. a table knot's name) is null when empty.
+// Reading: a missing key is an error naming the key, except for
+// std::optional fields (empty).
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <stdexcept>
@@ -26,21 +25,8 @@ struct adl_serializer<std::optional<T>> {
   }
   template <class BasicJsonType>
   static void from_json(const BasicJsonType& j, std::optional<T>& v) {
-    if (j.is_null()) {
-      v.reset();
-    } else if constexpr (std::is_same_v<T, bool>) {
-      if (j.is_string()) {  // legacy flag strings
-        const std::string s = j.template get<std::string>();
-        if (s == "1") v = true;
-        else if (s == "0") v = false;
-        else if (s == "-" || s.empty()) v.reset();
-        else throw std::runtime_error("flag '" + s + "': expected true, false or null");
-      } else {
-        v = j.template get<bool>();
-      }
-    } else {
-      v = j.template get<T>();
-    }
+    if (j.is_null()) v.reset();
+    else v = j.template get<T>();
   }
 };
 }  // namespace nlohmann

@@ -11,10 +11,10 @@ namespace ek::results {
 struct JumpingKnotsSummary {
   std::string scale;
   double threedim_threshold = 0.0;         ///< [1] kJumpThreedim: the released state is 3D at or above it
-  std::optional<double> planar_threshold;  ///< [1] kPlanarThreedim: the flat stage is below it (absent before)
+  double planar_threshold = 0.0;  ///< [1] kPlanarThreedim: the flat stage is below it
   int tested = 0;                          ///< [1] knots whose flat and released stages ran
   std::vector<std::string> jumping;        ///< the knots that jump, in table order
-  std::optional<double> radius;            ///< [length] wire radius r of the curves (absent before)
+  double radius = 0.0;            ///< [length] wire radius r of the curves
 };
 EK_JSON_FIELDS(JumpingKnotsSummary, scale, threedim_threshold, planar_threshold, tested, jumping, radius)
 

@@ -16,7 +16,7 @@ struct KnotStates {
   long equilibria = 0;                       ///< [1] stable equilibria stored
   int distinct = 0;                          ///< [1] clusters at the cut
   int distinctly_3d = 0;                     ///< [1] clusters whose representative has 3D-ness >= planar_threshold
-  std::optional<double> distinctly_3d_share; ///< [1] distinctly_3d / distinct (absent in files written before it)
+  double distinctly_3d_share = 0.0; ///< [1] distinctly_3d / distinct
 };
 EK_JSON_FIELDS(KnotStates, samples, equilibria, distinct, distinctly_3d, distinctly_3d_share)
 

@@ -21,8 +21,8 @@ struct PuzzlesSummary {
   int puzzles = 0;                ///< [1] pairs listed in puzzles.csv
   int knots_with_puzzles = 0;     ///< [1]
   std::vector<PuzzleLink> links;  ///< one per pair, in puzzles.csv's order
-  std::optional<double> radius;   ///< [length] wire radius r of the data sets' curves (absent before)
-  std::optional<double> dhat;     ///< [length] their contact distance d̂ (absent before)
+  double radius = 0.0;   ///< [length] wire radius r of the data sets' curves
+  double dhat = 0.0;     ///< [length] their contact distance d̂
 };
 EK_JSON_FIELDS(PuzzlesSummary, scale, writhe_tolerance, cut, puzzles, knots_with_puzzles, links, radius, dhat)
 

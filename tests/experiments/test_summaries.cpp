@@ -1,8 +1,7 @@
 // The summaries of the paper experiments (experiments/schema): every struct
 // survives a round trip through the JSON that the experiments write, keys are
 // the field names in declaration order, a missing required key is an error
-// naming it, optional keys may be absent (files written before them), and
-// the flags of files written before typed results read as booleans.
+// naming it, and optional keys (values that may be absent) may be null or missing.
 #include <gtest/gtest.h>
 
 #include "adaptive_summary.hpp"
@@ -60,13 +59,15 @@ TEST(Summaries, AdaptiveRoundTrip) {
   EXPECT_EQ(j.back().size(), ordered_json(s.paper_rule).size());
 }
 
-// A file written before the coverage keys: the optional fields are empty.
-TEST(Summaries, OptionalKeysMayBeAbsent) {
-  json j = ordered_json(AdaptiveSummary{});
-  for (const char* k : {"score_threshold", "low_energy_factor", "missed_samples", "missed_sample_share"}) j.erase(k);
-  const AdaptiveSummary r = parse_summary<AdaptiveSummary>(j, "old");
-  EXPECT_FALSE(r.missed_samples.has_value());
-  EXPECT_FALSE(r.score_threshold.has_value());
+// An optional field (a value that may be absent) reads as empty when its
+// key is null or missing; every other key is required.
+TEST(Summaries, OptionalKeysMayBeAbsentRequiredOnesMayNot) {
+  json j = ordered_json(DatasetSummary{});
+  j.erase("full_table_estimate");
+  EXPECT_FALSE(parse_summary<DatasetSummary>(j, "x").full_table_estimate.has_value());
+  j = ordered_json(AdaptiveSummary{});
+  j.erase("missed_sample_share");
+  EXPECT_THROW(parse_summary<AdaptiveSummary>(j, "x"), std::runtime_error);
 }
 
 TEST(Summaries, MissingRequiredKeyNamesIt) {
@@ -135,7 +136,7 @@ TEST(Summaries, MultistabilityKnotsByName) {
   const auto r = round_trip(s);
   ASSERT_EQ(r.knots.size(), 2u);
   EXPECT_EQ(r.knots.at("4_1").equilibria, 149);
-  EXPECT_DOUBLE_EQ(*r.knots.at("8_1").distinctly_3d_share, 5.0 / 9);
+  EXPECT_DOUBLE_EQ(r.knots.at("8_1").distinctly_3d_share, 5.0 / 9);
   EXPECT_DOUBLE_EQ(r.cut, kClusterCut);
 }
 
@@ -155,18 +156,13 @@ TEST(Summaries, OtherSummariesRoundTrip) {
   k.planar_threshold = kPlanarThreedim;
   k.radius = 0.2;
   EXPECT_EQ(round_trip(k).jumping.at(1), "12a_1019");
-  EXPECT_EQ(round_trip(k).radius, std::optional<double>(0.2));
+  EXPECT_EQ(round_trip(k).radius, 0.2);
   PuzzlesSummary z;
   z.links = {{"7_7", -3.0}};
   z.radius = 0.2;
   z.dhat = 0.4;
   EXPECT_DOUBLE_EQ(round_trip(z).links.at(0).link, -3.0);
-  EXPECT_EQ(round_trip(z).dhat, std::optional<double>(0.4));
-  // the wire radius, added later, is optional: older summaries read without it
-  ordered_json old = z;
-  old.erase("radius");
-  old.erase("dhat");
-  EXPECT_FALSE(parse_summary<PuzzlesSummary>(old, "old").radius.has_value());
+  EXPECT_EQ(round_trip(z).dhat, 0.4);
   SaddlesSummary sd;
   sd.knot = "4_1";
   sd.verified_saddles = {{1, 3, 0.8, 2e-6, 0.79, 3e-4, -4e-6, 1.0, 0.9998, 0.05, "state1_search3"}};

@@ -1,7 +1,7 @@
 #pragma once
 /// Error types shared by all modules.
 ///
-/// Conventions (DEVELOPERS.md, "Architecture"):
+/// Conventions (docs/cli.md, "Common behaviour"):
 ///  - InputError: bad user input (malformed code, unreadable or degenerate
 ///    file, unknown knot, impossible parameter, unwritable output). The command
 ///    line prints its message on one line and exits with status 2.
