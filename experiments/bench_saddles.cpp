@@ -132,11 +132,11 @@ int run(const Config& c) {
         ++searches;
         verified += rec.verified;
         seconds += rec.seconds;
-        runs << knot << "," << s << "," << rec.mode << "," << rec.direction << "," << rec.status << ","
+        runs << knot << "," << s << "," << rec.mode << "," << rec.direction << "," << ek::to_string(rec.status) << ","
              << (rec.verified ? "true" : "false") << "," << rec.seconds << "," << rec.iterations << ","
              << rec.energy << "," << (rec.verified ? rec.energy - start.energy : 0.0) << "\n";
         std::printf("  %-6s sample %d mode %d %+d: %-20s %7.2f s %4d iterations\n", knot.c_str(), s, rec.mode,
-                    rec.direction, rec.status.c_str(), rec.seconds, rec.iterations);
+                    rec.direction, ek::to_string(rec.status).c_str(), rec.seconds, rec.iterations);
       }
     }
   }
@@ -192,13 +192,14 @@ void run_double_ended(const Config& c) {
       connected += r.connected;
       for (const ek::ConnectAttempt& t : r.attempt_list) {
         ++searches;
-        verified += t.status == "verified";
+        verified += t.status.verified();
         seconds += t.seconds;
-        runs << a << "," << b << "," << t.u << "," << t.v << "," << t.status << ","
-             << (t.status == "verified" ? "true" : "false") << "," << (t.reached ? "true" : "false") << ","
+        runs << a << "," << b << "," << t.u << "," << t.v << "," << ek::to_string(t.status) << ","
+             << (t.status.verified() ? "true" : "false") << "," << (t.reached ? "true" : "false") << ","
              << t.seconds << "\n";
       }
-      std::printf("  %d -> %d: %-10s %d searches %7.2f s%s\n", a, b, r.status.c_str(), r.attempts, r.seconds,
+      const std::string status = ek::to_string(r.status);
+      std::printf("  %d -> %d: %-10s %d searches %7.2f s%s\n", a, b, status.c_str(), r.attempts, r.seconds,
                   r.connected ? (", barrier " + std::to_string(r.barrier_forward_scaled) + " EI/L").c_str() : "");
     }
   std::ofstream sum(c.out + "/double_ended.csv");

@@ -75,7 +75,7 @@ void search_state(const Args& a, const Points& x, const VecX& rest, const KnotSa
     const SaddleRecord& r = records[j];
     const bool descended = !r.minima[0].images.empty();
     t.searches.row({std::to_string(state), std::to_string(j), std::to_string(r.mode), std::to_string(r.direction),
-                    r.status, Csv::flag(r.verified), std::to_string(r.duplicate_of), Csv::num(r.energy),
+                    to_string(r.status), Csv::flag(r.verified), std::to_string(r.duplicate_of), Csv::num(r.energy),
                     descended ? Csv::num(r.energy - s.energy) : "", descended ? Csv::num(r.minima[1].energy) : "",
                     descended ? Csv::num(r.minima[0].start_similarity) : "",
                     descended ? Csv::num(r.minima[1].start_similarity) : "", std::to_string(r.index),

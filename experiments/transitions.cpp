@@ -102,7 +102,7 @@ void write_searches(const Args& a, const TransitionGraph& g, results::Transition
     ++sum.states_searched;
     sum.states_refused += !s.error.empty();
     for (const SaddleRecord& r : s.records) {
-      csv.row({std::to_string(s.state), std::to_string(r.mode), std::to_string(r.direction), r.status,
+      csv.row({std::to_string(s.state), std::to_string(r.mode), std::to_string(r.direction), to_string(r.status),
                Csv::flag(r.verified), Csv::num(r.energy), Csv::num(r.gradient_norm), std::to_string(r.index),
                std::to_string(r.iterations), Csv::num(r.seconds, 4)});
       ++sum.searches;
@@ -120,10 +120,11 @@ void write_pairs(const Args& a, const TransitionGraph& g, results::TransitionsSu
   double seconds = 0.0;
   for (const PairSearch& p : g.pairs) {
     const double barrier = p.reached ? p.path_barrier / g.energy_scale : 0.0;
-    csv.row({std::to_string(p.a), std::to_string(p.b), p.status, p.seed_statuses, Csv::flag(p.reached), Csv::flag(p.verified),
+    const std::string status = to_string(p.status), seeds = to_string(p.seed_statuses);
+    csv.row({std::to_string(p.a), std::to_string(p.b), status, seeds, Csv::flag(p.reached), Csv::flag(p.verified),
              std::to_string(p.stages), p.reached ? Csv::num(barrier) : "", Csv::num(p.reached_similarity),
              std::to_string(p.saddle), Csv::num(p.seconds, 4)});
-    sum.pair_list.push_back({p.a, p.b, p.status, p.seed_statuses, p.reached, p.verified, p.stages, barrier, p.seconds});
+    sum.pair_list.push_back({p.a, p.b, status, seeds, p.reached, p.verified, p.stages, barrier, p.seconds});
     ++sum.pairs;
     sum.pairs_reached += p.reached;
     sum.pairs_verified += p.verified;
@@ -214,6 +215,14 @@ TransitionGraph puzzle_graph(const Args& a, const PuzzleRow& z, KnotSaddleOption
   return g;
 }
 
+/// The attempt_statuses cell: "u-v:<status>" of every search, ";" between them.
+std::string attempt_statuses(const ConnectResult& c) {
+  std::string out;
+  for (const ConnectAttempt& t : c.attempt_list)
+    out += (out.empty() ? "" : ";") + std::to_string(t.u) + "-" + std::to_string(t.v) + ":" + to_string(t.status);
+  return out;
+}
+
 /// Puzzle barriers: connect_states() between the two states of the first
 /// puzzles (ci 1, default 4, paper 12; distinct knots first), budget ci 2,
 /// default 6, paper 12 searches. Writes puzzle_barriers.csv and
@@ -244,13 +253,11 @@ void puzzle_barriers(const Args& a, const TransitionRunOptions& r, results::Tran
     try {
       g = puzzle_graph(a, z, o.search.saddle, rest, source);
       c = connect_states(g, 0, 1, rest, o, knot_similarity(z.knot), 1.0 - kClusterCut);
-      status = c.status;
+      status = to_string(c.status);
     } catch (const InputError& e) {
-      status = std::string("refused: ") + e.what();
+      status = to_string(SearchStatus::refused(e.what()));
     }
-    std::string statuses;
-    for (const ConnectAttempt& t : c.attempt_list)
-      statuses += (statuses.empty() ? "" : ";") + std::to_string(t.u) + "-" + std::to_string(t.v) + ":" + t.status;
+    const std::string statuses = attempt_statuses(c);
     const std::string graph = "puzzle_graphs/puzzle_" + std::to_string(k) + ".h5";
     if (!g.states.empty())
       write_transitions(a.out + "/" + graph, g, a.results + "/" + source,
@@ -293,9 +300,7 @@ void connect_graph_pairs(const Args& a, const TransitionRunOptions& r, const Tra
     const bool before = minimax_path(g, p.a, p.b).has_value();
     std::cout << "  connecting " << p.a << " - " << p.b << std::endl;
     const ConnectResult x = connect_states(c, p.a, p.b, rest, o, sim, 1.0 - kClusterCut);
-    std::string statuses;
-    for (const ConnectAttempt& t : x.attempt_list)
-      statuses += (statuses.empty() ? "" : ";") + std::to_string(t.u) + "-" + std::to_string(t.v) + ":" + t.status;
+    const std::string statuses = attempt_statuses(x);
     csv.row({std::to_string(p.a), std::to_string(p.b), Csv::flag(before), Csv::flag(x.connected),
              std::to_string(x.attempts), std::to_string(x.chain.size()),
              x.connected ? Csv::num(x.barrier_forward_scaled) : "", x.connected ? Csv::num(x.barrier_backward_scaled) : "",

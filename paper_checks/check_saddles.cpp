@@ -96,7 +96,7 @@ TEST(PaperSaddles, SummaryAgreesWithTheSearches) {
     if (ok) {
       EXPECT_EQ(r.at("index"), "1");
     }
-    EXPECT_EQ(ok, r.at("status") == "verified");
+    EXPECT_EQ(ok, ek::from_string<ek::SearchStatus>(r.at("status")).verified());
   }
   EXPECT_EQ(verified, s.verified);
   EXPECT_EQ(distinct, s.saddles);

@@ -101,11 +101,11 @@ TEST(PaperTransitions, SummaryAgreesAndInterStateEdgesAreReported) {
   for (const ek::TransitionEdge& e : g.edges) inter += ek::inter_state(e);
   EXPECT_EQ(inter, s.inter_state_edges);
   for (const ek::PairSearch& p : g.pairs) {
-    EXPECT_EQ(p.verified, p.saddle >= 0 && p.status == "verified");
+    EXPECT_EQ(p.verified, p.saddle >= 0 && p.status.verified());
     if (p.verified) {
       EXPECT_TRUE(p.reached);
     }
-    std::cout << "[ measured ] double-ended " << p.a << " -> " << p.b << ": " << p.status << ", "
+    std::cout << "[ measured ] double-ended " << p.a << " -> " << p.b << ": " << ek::to_string(p.status) << ", "
               << (p.reached ? "reached" : "not reached") << ", " << p.stages << " stages, " << p.seconds << " s"
               << std::endl;
   }

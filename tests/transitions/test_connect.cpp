@@ -89,11 +89,12 @@ const ConnectRun& run41() {
     ConnectOptions o;
     o.max_searches = x.budget;
     x.result = connect_states(x.graph, 0, 2, VecX::Ones(kVertices), o, sim, 0.95);
-    std::cout << "[ measured ] 4_1 samples 0 -> 2: " << x.result.status << " after " << x.result.attempts
+    std::cout << "[ measured ] 4_1 samples 0 -> 2: " << to_string(x.result.status) << " after " << x.result.attempts
               << " searches, " << x.graph.states.size() << " states, " << x.graph.edges.size() << " edges, "
               << x.result.seconds << " s" << std::endl;
     for (const ConnectAttempt& a : x.result.attempt_list)
-      std::cout << "[ measured ]   " << a.u << " -> " << a.v << " (d = " << a.distance << "): " << a.status << ", +"
+      std::cout << "[ measured ]   " << a.u << " -> " << a.v << " (d = " << a.distance
+                << "): " << to_string(a.status) << ", +"
                 << a.edges_added << " inter-state edges, +" << a.states_added << " states, " << a.seconds << " s"
                 << std::endl;
     if (x.result.connected)
@@ -119,7 +120,7 @@ TEST(ConnectStates, JoinedStatesNeedNoSearch) {
   TransitionGraph g = small_graph();
   const ConnectResult r = connect_states(g, 1, 0, VecX::Ones(4), {}, sim, 0.95);
   EXPECT_TRUE(r.connected);
-  EXPECT_EQ(r.status, "connected");
+  EXPECT_EQ(r.status, ConnectStatus::Connected);
   EXPECT_EQ(r.attempts, 0);
   EXPECT_EQ(r.chain, (std::vector<int>{0}));
   EXPECT_DOUBLE_EQ(r.barrier_forward, 5.0 - 1.1);
@@ -138,17 +139,17 @@ TEST(ConnectStates, EveryPairOnceThenExhausted) {
   PairSearch searched;
   searched.a = 2;
   searched.b = 1;
-  searched.status = "other-minima";
+  searched.status = SearchOutcome::OtherMinima;
   g.pairs.push_back(searched);
   ConnectOptions o;
   o.max_searches = 10;
   const ConnectResult r = connect_states(g, 0, 3, VecX::Ones(4), o, sim, 0.95);
   EXPECT_FALSE(r.connected);
-  EXPECT_EQ(r.status, "exhausted");
+  EXPECT_EQ(r.status, ConnectStatus::Exhausted);
   ASSERT_EQ(r.attempts, 3);  // 0-2, 0-3, 1-3
   std::set<std::pair<int, int>> seen;
   for (const ConnectAttempt& a : r.attempt_list) {
-    EXPECT_NE(a.status, "verified");
+    EXPECT_FALSE(a.status.verified());
     EXPECT_EQ(a.edges_added, 0);
     const std::pair<int, int> k{std::min(a.u, a.v), std::max(a.u, a.v)};
     EXPECT_TRUE(seen.insert(k).second);
@@ -195,9 +196,10 @@ TEST(ConnectStates, SearchesStayWithinTheBudgetAndNeverRepeatAPair) {
   }
   EXPECT_EQ(r.connected, minimax_path(x.graph, 0, 2).has_value());
   if (r.connected) {
-    EXPECT_EQ(r.status, "connected");
+    EXPECT_EQ(r.status, ConnectStatus::Connected);
   } else {
-    EXPECT_TRUE(r.status == "budget" ? r.attempts == x.budget : r.status == "exhausted") << r.status;
+    EXPECT_TRUE(r.status == ConnectStatus::Budget ? r.attempts == x.budget : r.status == ConnectStatus::Exhausted)
+        << to_string(r.status);
     EXPECT_TRUE(r.chain.empty());
   }
 }
@@ -210,7 +212,8 @@ TEST(ConnectStates, SearchesStayWithinTheBudgetAndNeverRepeatAPair) {
 TEST(ConnectStates, AChainJoinsAToBThroughVerifiedSaddles) {
   const ConnectRun& x = run41();
   const ConnectResult& r = x.result;
-  ASSERT_TRUE(r.connected) << r.status;  // measured: after 7 searches, a chain of 4 saddles through the 3 other states
+  // measured: after 7 searches, a chain of 4 saddles through the 3 other states
+  ASSERT_TRUE(r.connected) << to_string(r.status);
   const TransitionGraph& g = x.graph;
   ASSERT_FALSE(r.chain.empty());
   int at = 0;

@@ -78,7 +78,7 @@ TEST(TransitionSearch, AlignmentRecoversAMovedCopy) {
 TEST(TransitionSearch, ACopyOfTheStartIsTheSameState) {
   const Points& a = states41()[0];
   const TransitionSearch t = transition_search(a, moved_copy(a, 33), unit_rest(), {}, sim);
-  EXPECT_EQ(t.status, "same-state");
+  EXPECT_EQ(t.status.outcome, SearchOutcome::SameState);
   EXPECT_FALSE(t.verified);
   EXPECT_EQ(t.seeds_tried, 0);
   EXPECT_LT(t.alignment_distance, 1e-6);
@@ -95,7 +95,7 @@ TEST(TransitionSearch, AStrandPassageIsNeverTaken) {
   b.col(0) = -b.col(0);  // the mirror image: a stable state of the other trefoil
   TransitionSearchOptions o;
   const TransitionSearch t = transition_search(a, b, unit_rest(), o, sim);
-  EXPECT_EQ(t.status, "not-reached");
+  EXPECT_EQ(t.status.outcome, SearchOutcome::NotReached);
   EXPECT_FALSE(t.reached);
   EXPECT_FALSE(t.verified);
   EXPECT_EQ(t.stages, o.max_stages);
@@ -119,17 +119,18 @@ TEST(TransitionSearch, VerifiedSaddlesJoinAAndB) {
   const Points& a = states41()[1];
   const Points& b = states41()[2];
   const TransitionSearch t = transition_search(a, b, unit_rest(), {}, sim);
-  std::cout << "[ measured ] 4_1 states 1 -> 2: " << t.status << ", " << t.stages << " stages, chain barrier "
-            << t.path_barrier / t.energy_scale << " EI/L, " << t.seconds << " s" << std::endl;
-  EXPECT_TRUE(t.reached) << t.status;
+  std::cout << "[ measured ] 4_1 states 1 -> 2: " << to_string(t.status) << ", " << t.stages
+            << " stages, chain barrier " << t.path_barrier / t.energy_scale << " EI/L, " << t.seconds << " s"
+            << std::endl;
+  EXPECT_TRUE(t.reached) << to_string(t.status);
   ASSERT_FALSE(t.chain.empty());
   EXPECT_EQ(t.chain.front(), t.a);
   EXPECT_GE(sim(t.chain.back(), t.b), 0.99);
   EXPECT_EQ(t.chain.size(), t.chain_energies.size());
   const AlexanderPolynomial p = alexander(a);
   for (const Points& x : t.chain) EXPECT_EQ(alexander(x), p);
-  EXPECT_EQ(t.verified, t.status == "verified");
-  ASSERT_TRUE(t.verified) << t.status;  // measured: verified after 3 stages
+  EXPECT_EQ(t.verified, t.status.verified());
+  ASSERT_TRUE(t.verified) << to_string(t.status);  // measured: verified after 3 stages
   const SaddleRecord& s = t.saddle;
   const PointCheck c = check_point(s.saddle, unit_rest(), RelaxOptions{});
   EXPECT_LE(c.gradient_norm, c.tolerance);

@@ -1,15 +1,18 @@
 // The transition graph: the minimax path on a hand-made graph with a known
 // answer, the chain profile (each edge's whole path, in the direction
-// travelled), and the transitions file round trip.
+// travelled), and the transitions file round trip (an unknown status in it
+// refused).
 #include <gtest/gtest.h>
 
 #include <cstdio>
 #include <filesystem>
 
 #include "ek/core/errors.hpp"
+#include "ek/dataset/h5.hpp"
 #include "ek/transitions/graph.hpp"
 #include "ek/transitions/run.hpp"
 #include "ek/transitions/transitions_file.hpp"
+#include "testing.hpp"
 
 using namespace ek;
 
@@ -54,8 +57,8 @@ TransitionGraph example() {
   PairSearch p;
   p.a = 1;
   p.b = 2;
-  p.status = "verified";
-  p.seed_statuses = "other-minima;verified";
+  p.status = SearchOutcome::Verified;
+  p.seed_statuses = {SearchOutcome::OtherMinima, SearchOutcome::Verified};
   p.reached = p.verified = true;
   p.stages = 7;
   p.path_barrier = 2.5;
@@ -64,7 +67,7 @@ TransitionGraph example() {
   p.saddle = 1;
   p.seconds = 1.5;
   g.pairs.push_back(p);
-  g.pairs.push_back({0, 3, "not-reached", "", false, false, 40, 0.0, 0.4, 0.0, -1, 2.0});
+  g.pairs.push_back({0, 3, SearchOutcome::NotReached, {}, false, false, 40, 0.0, 0.4, 0.0, -1, 2.0});
   return g;
 }
 
@@ -101,11 +104,11 @@ TEST(TransitionGraph, PairAddsItsOtherSaddlesBetweenMatchedStates) {
   TransitionGraph g = example();
   const CurveSimilarity same = [](const Points& x, const Points& y) { return x.isApprox(y) ? 1.0 : 0.0; };
   TransitionSearch t;
-  t.status = "other-minima";
+  t.status = SearchOutcome::OtherMinima;
   t.reached = true;
-  t.seed_statuses = {"other-minima"};
+  t.seed_statuses = {SearchOutcome::OtherMinima};
   SaddleRecord r;
-  r.status = "other-minima";
+  r.status = SearchOutcome::OtherMinima;
   r.energy = 7.0;
   r.index = 1;
   r.saddle = curve(20);
@@ -121,7 +124,7 @@ TEST(TransitionGraph, PairAddsItsOtherSaddlesBetweenMatchedStates) {
   const size_t states = g.states.size(), edges = g.edges.size();
   add_pair(g, 0, 3, t, same, 0.95);
   ASSERT_EQ(g.pairs.size(), 3u);
-  EXPECT_EQ(g.pairs.back().seed_statuses, "other-minima");
+  EXPECT_EQ(g.pairs.back().seed_statuses, std::vector<SearchStatus>{SearchOutcome::OtherMinima});
   EXPECT_EQ(g.pairs.back().saddle, -1);
   ASSERT_EQ(g.states.size(), states + 1);
   ASSERT_EQ(g.edges.size(), edges + 1);
@@ -161,7 +164,7 @@ TEST(TransitionsFile, RoundTripAndBadInput) {
     SaddleRecord r;
     r.mode = k;
     r.direction = k == 0 ? 1 : -1;
-    r.status = k == 0 ? "verified" : "left-basin";
+    r.status = k == 0 ? SearchOutcome::Verified : SearchOutcome::LeftBasin;
     r.verified = k == 0;
     r.index = k == 0 ? 1 : -1;
     r.iterations = 10 + k;
@@ -220,14 +223,26 @@ TEST(TransitionsFile, RoundTripAndBadInput) {
     EXPECT_EQ(r.saddles[k].double_ended, g.saddles[k].double_ended);
   }
   ASSERT_EQ(r.pairs.size(), 2u);
-  EXPECT_EQ(r.pairs[0].status, "verified");
+  EXPECT_EQ(r.pairs[0].status, g.pairs[0].status);
   EXPECT_EQ(r.pairs[0].saddle, 1);
   EXPECT_EQ(r.pairs[0].stages, 7);
-  EXPECT_EQ(r.pairs[0].seed_statuses, "other-minima;verified");
-  EXPECT_EQ(r.pairs[1].status, "not-reached");
+  EXPECT_EQ(r.pairs[0].seed_statuses, g.pairs[0].seed_statuses);
+  EXPECT_EQ(r.pairs[1].status.outcome, SearchOutcome::NotReached);
+  EXPECT_TRUE(r.pairs[1].seed_statuses.empty());
   EXPECT_EQ(r.pairs[1].saddle, -1);
   EXPECT_FALSE(r.pairs[1].reached);
   EXPECT_EQ(*minimax_path(r, 0, 3), (std::vector<int>{0, 1, 3}));
+  for (const char* column : {"searches", "pairs"}) {  // a status the reader does not know
+    write_transitions(path, g, "dataset.h5", "options", true);
+    {
+      const h5::Handle f = h5::open_file(path, true);
+      const h5::Handle table = h5::open_group(f.id(), column);
+      const size_t rows = h5::read_strings(table.id(), "status").size();
+      H5Ldelete(table.id(), "status", H5P_DEFAULT);
+      h5::write_strings(table.id(), "status", std::vector<std::string>(rows, "half-verified"));
+    }
+    fixtures::expect_input_error([&] { read_transitions(path); }, path + ": unknown search status 'half-verified'");
+  }
   std::remove(path.c_str());
   const std::string bad = std::filesystem::temp_directory_path() / "ek_test_transitions_bad.h5";
   { std::FILE* f = std::fopen(bad.c_str(), "w"); std::fputs("not hdf5", f); std::fclose(f); }

@@ -74,8 +74,7 @@ TEST(KnotSaddles, VerifiedSaddlesOf41PassTheChecksAgain) {
   const AlexanderPolynomial a41 = alexander(states()[1]);
   int verified = 0;
   for (const SaddleRecord& s : r.records) {
-    EXPECT_FALSE(s.status.empty());
-    EXPECT_EQ(s.verified, s.status == "verified");
+    EXPECT_EQ(s.verified, s.status.verified());
     if (!s.verified) continue;
     ++verified;
     const PointCheck c = check_point(s.saddle, unit_rest(), RelaxOptions{});
@@ -87,7 +86,7 @@ TEST(KnotSaddles, VerifiedSaddlesOf41PassTheChecksAgain) {
     EXPECT_GT(s.energy, s.minima[1].energy);
     for (int k = 0; k < 2; ++k) {
       const SaddleMinimum& m = s.minima[k];
-      EXPECT_EQ(m.status, "converged-stable");
+      EXPECT_EQ(m.status, DescentStatus::ConvergedStable);
       const PointCheck e = check_point(m.positions, unit_rest(), RelaxOptions{});
       EXPECT_LE(e.gradient_norm, e.tolerance);
       EXPECT_GT(e.index.values(0), e.threshold) << "minimum " << k << " is not stable";
@@ -126,16 +125,19 @@ TEST(KnotSaddles, StatusesFollowFromTheDescents) {
              std::abs(m.energy - r.start.energy) <= 1e-8 * std::abs(r.start.energy);
     };
     for (const SaddleRecord& s : r.records) {
-      ++seen[s.status];
+      const std::string text = to_string(s.status);
+      ++seen[text];
       const bool descended = !s.minima[0].images.empty();
-      const bool stopped = s.status == "max-iterations" || s.status == "stalled" || s.status == "left-basin";
-      EXPECT_FALSE(stopped && descended) << s.status;
+      const SearchOutcome o = s.status.outcome;
+      const bool stopped =
+          o == SearchOutcome::MaxIterations || o == SearchOutcome::Stalled || o == SearchOutcome::LeftBasin;
+      EXPECT_FALSE(stopped && descended) << text;
       if (!descended) continue;
-      EXPECT_EQ(s.index, 1) << s.status;
+      EXPECT_EQ(s.index, 1) << text;
       const bool a = is_start(s.minima[0]), b = is_start(s.minima[1]);
-      EXPECT_EQ(s.status == "verified", a && !b) << s.status;
-      EXPECT_EQ(s.status == "start-not-reached", !a && !b) << s.status;
-      EXPECT_EQ(s.status == "returns-to-start", a && b) << s.status;
+      EXPECT_EQ(o == SearchOutcome::Verified, a && !b) << text;
+      EXPECT_EQ(o == SearchOutcome::StartNotReached, !a && !b) << text;
+      EXPECT_EQ(o == SearchOutcome::ReturnsToStart, a && b) << text;
     }
   }
   for (const auto& [status, count] : seen) std::cout << "[ measured ] " << status << ": " << count << std::endl;

@@ -251,7 +251,7 @@ TEST(TransitionsCli, ConnectGrowsTheGraphWithinItsBudget) {
     EXPECT_EQ(at, 1);
     EXPECT_EQ(run("path " + grown + " 4_1 0 1 -o " + dir + "/p.obj").status, 0);
   }
-  for (const std::string bad : {"connect " + tr + " 4_1 0 0 -o " + dir + "/x.h5",       // the same state
+  for (const std::string& bad : {"connect " + tr + " 4_1 0 0 -o " + dir + "/x.h5",       // the same state
                                 "connect " + tr + " 4_1 0 999 -o " + dir + "/x.h5",     // no such state
                                 "connect " + tr + " 3_1 0 1 -o " + dir + "/x.h5",       // another knot
                                 "connect " + tr + " 4_1 0 1 --searches 0 -o " + dir + "/x.h5",

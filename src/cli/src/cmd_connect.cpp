@@ -43,7 +43,7 @@ Json result_json(const ConnectResult& r, int a, int b) {
   j["from"] = a;
   j["to"] = b;
   j["connected"] = r.connected;
-  j["status"] = r.status;
+  j["status"] = to_string(r.status);
   j["attempts"] = r.attempts;
   j["edges"] = r.chain;
   j["barrier_forward"] = r.connected ? number(r.barrier_forward) : Json(nullptr);
@@ -56,7 +56,7 @@ Json result_json(const ConnectResult& r, int a, int b) {
     Json t;
     t["u"] = x.u;
     t["v"] = x.v;
-    t["status"] = x.status;
+    t["status"] = to_string(x.status);
     t["reached"] = x.reached;
     t["edges_added"] = x.edges_added;
     t["states_added"] = x.states_added;
@@ -98,7 +98,8 @@ int cmd_connect(int argc, char** argv) {
     j["seconds"] = number(r.seconds);
     print_json(j);
   } else {
-    std::cout << "connect " << a << " -> " << b << ": " << r.status << " after " << r.attempts << " searches";
+    std::cout << "connect " << a << " -> " << b << ": " << to_string(r.status) << " after " << r.attempts
+              << " searches";
     if (r.connected)
       std::cout << ", " << r.chain.size() << " saddles, barrier " << fmt(r.barrier_forward_scaled, 5) << " / "
                 << fmt(r.barrier_backward_scaled, 5) << " EI/L";

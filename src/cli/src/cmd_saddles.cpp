@@ -94,7 +94,8 @@ void print_text(const SaddleStart& s, const std::vector<SaddleRecord>& records, 
   int verified = 0;
   for (size_t k = 0; k < records.size(); ++k) {
     const SaddleRecord& r = records[k];
-    std::cout << "search " << k << " (mode " << r.mode << (r.direction > 0 ? " +" : " -") << "): " << r.status;
+    std::cout << "search " << k << " (mode " << r.mode << (r.direction > 0 ? " +" : " -")
+              << "): " << to_string(r.status);
     if (r.verified) {
       ++verified;
       std::cout << ", energy " << fmt(r.energy) << ", barrier " << fmt(r.energy - s.energy, 6) << " / "

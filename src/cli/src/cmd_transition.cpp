@@ -52,7 +52,7 @@ bool parse_transition(int argc, char** argv, TransitionCommand& c) {
 Json minimum_json(const SaddleMinimum& m, double to_b) {
   Json j;
   j["energy"] = number(m.energy);
-  j["status"] = m.status;
+  j["status"] = to_string(m.status);
   j["gradient_norm"] = number(m.gradient_norm);
   j["a_similarity"] = number(m.start_similarity);
   j["b_similarity"] = number(to_b);
@@ -65,7 +65,7 @@ Json saddle_json(const TransitionSearch& t) {
   if (t.seeds_tried == 0) return nullptr;
   const SaddleRecord& r = t.saddle;
   Json j;
-  j["status"] = r.status;
+  j["status"] = to_string(r.status);
   j["verified"] = r.verified;
   j["energy"] = number(r.energy);
   const bool descended = !r.minima[0].images.empty();
@@ -93,7 +93,7 @@ Json summary_json(const TransitionCommand& c, const TransitionSearch& t) {
   Json j;
   j["a"] = c.a;
   j["b"] = c.b;
-  j["status"] = t.status;
+  j["status"] = to_string(t.status);
   j["reached"] = t.reached;
   j["verified"] = t.verified;
   j["energy_a"] = number(t.energy_a);
@@ -109,7 +109,9 @@ Json summary_json(const TransitionCommand& c, const TransitionSearch& t) {
   j["path_barrier"] = number(t.path_barrier);
   j["path_barrier_scaled"] = number(t.path_barrier / t.energy_scale);
   j["seeds_tried"] = t.seeds_tried;
-  j["seed_statuses"] = t.seed_statuses;
+  Json seeds = Json::array();
+  for (const SearchStatus& s : t.seed_statuses) seeds.push_back(to_string(s));
+  j["seed_statuses"] = seeds;
   j["saddle"] = saddle_json(t);
   j["output"] = c.out;
   j["seconds"] = number(t.seconds);
@@ -143,7 +145,7 @@ void print_text(const TransitionSearch& t) {
   std::cout << "\n";
   if (t.seeds_tried > 0) {
     const SaddleRecord& r = t.saddle;
-    std::cout << "saddle (" << t.seeds_tried << " seed(s)): " << r.status;
+    std::cout << "saddle (" << t.seeds_tried << " seed(s)): " << to_string(r.status);
     if (r.verified)
       std::cout << ", energy " << fmt(r.energy) << ", barrier "
                 << fmt((r.energy - r.minima[0].energy) / t.energy_scale, 5) << " / "
@@ -151,7 +153,7 @@ void print_text(const TransitionSearch& t) {
                 << fmt(r.negative_eigenvalue, 4);
     std::cout << "\n";
   }
-  std::cout << "status: " << t.status << ", " << fmt(t.seconds, 4) << " s\n";
+  std::cout << "status: " << to_string(t.status) << ", " << fmt(t.seconds, 4) << " s\n";
 }
 
 }  // namespace

@@ -42,7 +42,7 @@ inline Json saddles_json(const std::vector<SaddleRecord>& records, double start_
     for (const SaddleMinimum& m : r.minima) {
       Json mj;
       mj["energy"] = number(m.energy);
-      mj["status"] = m.status;
+      mj["status"] = to_string(m.status);
       mj["gradient_norm"] = number(m.gradient_norm);
       mj["start_similarity"] = number(m.start_similarity);
       mj["images"] = m.images.size();
@@ -64,7 +64,7 @@ inline Json searches_json(const std::vector<SaddleRecord>& records, double start
     Json j;
     j["mode"] = r.mode;
     j["direction"] = r.direction;
-    j["status"] = r.status;
+    j["status"] = to_string(r.status);
     j["verified"] = r.verified;
     j["duplicate_of"] = r.duplicate_of;
     j["energy"] = number(r.energy);

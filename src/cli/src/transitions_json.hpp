@@ -95,8 +95,8 @@ inline Json graph_json(const TransitionGraph& g) {
     Json pj;
     pj["a"] = p.a;
     pj["b"] = p.b;
-    pj["status"] = p.status;
-    pj["seed_statuses"] = p.seed_statuses;
+    pj["status"] = to_string(p.status);
+    pj["seed_statuses"] = to_string(p.seed_statuses);
     pj["reached"] = p.reached;
     pj["verified"] = p.verified;
     pj["stages"] = p.stages;
@@ -124,7 +124,8 @@ inline void print_graph(const TransitionGraph& g, double seconds) {
               << fmt(e.barrier_forward / g.energy_scale, 5) << " / " << fmt(e.barrier_backward / g.energy_scale, 5)
               << " EI/L)" << (inter_state(e) ? "" : " (within the state)") << "\n";
   for (const PairSearch& p : g.pairs)
-    std::cout << "  double-ended " << p.a << " -> " << p.b << ": " << p.status << " (" << p.stages << " stages, "
+    std::cout << "  double-ended " << p.a << " -> " << p.b << ": " << to_string(p.status) << " (" << p.stages
+              << " stages, "
               << (p.reached ? "reached" : "not reached") << ", " << fmt(p.seconds, 3) << " s)\n";
   std::cout << "seconds: " << fmt(seconds, 4) << "\n";
 }

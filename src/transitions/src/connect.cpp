@@ -132,7 +132,7 @@ ConnectAttempt attempt(TransitionGraph& g, int u, int v, const VecX& rest, const
 
 void fill_chain(const TransitionGraph& g, int a, int b, const std::vector<int>& chain, ConnectResult& r) {
   r.connected = true;
-  r.status = "connected";
+  r.status = ConnectStatus::Connected;
   r.chain = chain;
   double top = -std::numeric_limits<double>::infinity();
   for (const int e : chain) top = std::max(top, g.edges[static_cast<size_t>(e)].energy);
@@ -151,8 +151,7 @@ ConnectResult connect_states(TransitionGraph& g, int a, int b, const VecX& rest,
   require(a != b, "connect_states: a and b must be two different states");
   o.validate();
   const auto t0 = Clock::now();
-  ConnectResult r;
-  r.status = "budget";
+  ConnectResult r;  // status Budget unless joined or exhausted
   std::set<Pair> tried;
   for (const PairSearch& p : g.pairs) tried.insert(key(p.a, p.b));  // searched before this call
   std::map<Pair, double> distances;
@@ -161,7 +160,7 @@ ConnectResult connect_states(TransitionGraph& g, int a, int b, const VecX& rest,
     double d = 0.0;
     const Pair p = next_pair(g, a, b, tried, distances, d);
     if (p.first < 0) {
-      r.status = "exhausted";
+      r.status = ConnectStatus::Exhausted;
       break;
     }
     tried.insert(key(p.first, p.second));

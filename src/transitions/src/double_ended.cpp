@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include "ek/core/errors.hpp"
 #include "saddle_checks.hpp"
@@ -113,24 +114,8 @@ bool same_minimum(const Points& x, double energy, const Points& ref, double ref_
   return distance <= o.same_distance;
 }
 
-/// The state a minimum x belongs to (the file comment's "ends at"): 0 A,
-/// 1 B, 2 neither. A state is the class of curves with similarity >= reach
-/// to it; when x is in both classes (A and B are that similar, e.g. a chiral
-/// curve and its mirror image, which the similarity cannot tell apart) only
-/// the minimum itself counts (same_minimum()).
-int which_state(const Points& x, double energy, const SaddleStart& a, const SaddleStart& b,
-                const TransitionSearchOptions& o, const CurveSimilarity& similarity, double* to_a = nullptr,
-                double* to_b = nullptr) {
-  const double sa = similarity(x, a.positions), sb = similarity(x, b.positions);
-  if (to_a) *to_a = sa;
-  if (to_b) *to_b = sb;
-  const bool in_a = sa >= o.reach, in_b = sb >= o.reach;
-  if (in_a != in_b) return in_a ? 0 : 1;
-  if (!in_a) return 2;
-  if (same_minimum(x, energy, a.positions, a.energy, o)) return 0;
-  if (same_minimum(x, energy, b.positions, b.energy, o)) return 1;
-  return 2;
-}
+/// The state a minimum belongs to (the file comment's "States").
+enum class InState { A, B, Neither };
 
 /// The steered chain (step 2): every accepted iterate (dofs) and its E.
 struct Chain {
@@ -138,61 +123,10 @@ struct Chain {
   std::vector<double> energies;
 };
 
-/// Newton on E from the current dofs; true (and the images appended) when it
-/// ends converged-stable at B.
-bool release(KnotSystem& sys, const SaddleStart& a, const SaddleStart& b, const TransitionSearchOptions& o,
-             const CurveSimilarity& similarity, Chain& chain) {
-  Objective& f = sys.objective();
-  NewtonOptions no = sys.newton();
-  no.max_iterations = o.stage_iterations;
-  const Descent d = descend(f, no);
-  if (d.report.status != SolverStatus::ConvergedStable) return false;
-  const Points end = sys.positions(d.images.back());
-  if (which_state(end, d.energies.back(), a, b, o, similarity) != 1) return false;
-  chain.images.insert(chain.images.end(), d.images.begin() + 1, d.images.end());
-  chain.energies.insert(chain.energies.end(), d.energies.begin() + 1, d.energies.end());
-  return true;
-}
-
-/// Step 2 from A (sys at A's dofs) towards B; fills the result's stage fields.
-Chain steer(KnotSystem& sys, const SaddleStart& a, const SaddleStart& b, const TransitionSearchOptions& o,
-            const CurveSimilarity& similarity, TransitionSearch& t) {
-  Objective& f = sys.objective();
-  const VecX target = as_vector(b.positions);
-  Chain chain{{f.dofs()}, {f.energy()}};
-  double k = o.initial_stiffness * a.mode_eigenvalues(0);
-  NewtonOptions no = sys.newton();
-  no.max_iterations = o.stage_iterations;
-  no.remove_rigid_motions = false;
-  for (int j = 0; j < o.max_stages; ++j, k *= o.growth) {
-    SteeredObjective s(f, target, k);
-    const Descent d = descend(s, no);
-    for (size_t i = 1; i < d.images.size(); ++i) {
-      chain.images.push_back(d.images[i]);
-      chain.energies.push_back(d.energies[i] - 0.5 * k * (d.images[i].head(target.size()) - target).squaredNorm());
-    }
-    t.stages = j + 1;
-    t.final_stiffness = k;
-    const VecX x = chain.images.back();
-    f.set_dofs(x);
-    f.accept();
-    t.reached_similarity = similarity(sys.positions(x), b.positions);
-    if (t.reached_similarity < o.reach) continue;
-    if (release(sys, a, b, o, similarity, chain)) {
-      t.reached = true;
-      t.reached_similarity = similarity(sys.positions(chain.images.back()), b.positions);
-      break;
-    }
-    f.set_dofs(x);
-    f.accept();
-  }
-  return chain;
-}
-
-/// At most `count` images evenly spaced by path length (first and last kept).
-void thin(Chain& c, int count) {
+/// At most `count` images of c evenly spaced by path length (first and last kept).
+Chain thinned(const Chain& c, int count) {
   const size_t m = c.images.size();
-  if (static_cast<int>(m) <= count) return;
+  if (static_cast<int>(m) <= count) return c;
   std::vector<double> s(m, 0.0);
   for (size_t k = 1; k < m; ++k) s[k] = s[k - 1] + (c.images[k] - c.images[k - 1]).norm();
   Chain out;
@@ -204,120 +138,7 @@ void thin(Chain& c, int count) {
     out.images.push_back(c.images[k]);
     out.energies.push_back(c.energies[k]);
   }
-  c = std::move(out);
-}
-
-/// Step 3 from one chain image: the search along the chain's tangent, the
-/// checks, and the A/B test of the minima.
-SaddleRecord seed_search(const Points& seed, const VecX& tangent, const SaddleStart& a, const SaddleStart& b,
-                         const VecX& rest, const TransitionSearchOptions& o, const CurveSimilarity& similarity,
-                         std::array<double, 2>& to_b) {
-  const auto t0 = Clock::now();
-  const RelaxOptions model = detail::direct(o.saddle);
-  KnotSystem sys(seed, rest, model);
-  SaddleSearchOptions so = o.saddle.search;
-  so.max_iterations = o.search_iterations;
-  SaddleRecord r;
-  const SaddleSearchResult s = detail::search_into(sys, tangent, so, o.saddle.max_rise_factor * std::abs(a.energy), r);
-  if (s.status == SaddleStatus::Converged) {
-    const std::string failed = detail::descend_saddle(a.alexander, rest, o.saddle, sys, s.x, r);
-    bool at_a[2] = {false, false}, at_b[2] = {false, false};
-    for (int m = 0; m < 2 && r.index == 1 && !r.minima[m].images.empty(); ++m) {
-      SaddleMinimum& mm = r.minima[m];
-      const int state = which_state(mm.positions, mm.energy, a, b, o, similarity, &mm.start_similarity, &to_b[m]);
-      at_a[m] = state == 0;
-      at_b[m] = state == 1;
-    }
-    if (r.minima[1].start_similarity > r.minima[0].start_similarity) {
-      std::swap(r.minima[0], r.minima[1]);
-      std::swap(to_b[0], to_b[1]);
-      std::swap(at_a[0], at_a[1]);
-      std::swap(at_b[0], at_b[1]);
-    }
-    if (!failed.empty()) r.status = failed;
-    else if ((at_a[0] && at_b[1]) || (at_a[1] && at_b[0])) r.status = "verified";
-    else r.status = "other-minima";
-    if (r.status == "verified" && !at_a[0]) {  // the A-side descent first
-      std::swap(r.minima[0], r.minima[1]);
-      std::swap(to_b[0], to_b[1]);
-    }
-  }
-  r.verified = r.status == "verified";
-  r.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
-  return r;
-}
-
-/// The state of the minimum Newton's method on E reaches from dofs x
-/// (which_state()), 2 when it does not end converged-stable.
-int basin(KnotSystem& sys, const VecX& x, const SaddleStart& a, const SaddleStart& b,
-          const TransitionSearchOptions& o, const CurveSimilarity& similarity) {
-  Objective& f = sys.objective();
-  f.set_dofs(x);
-  f.accept();
-  NewtonOptions no = sys.newton();
-  no.max_iterations = o.stage_iterations;
-  const Descent d = descend(f, no);
-  if (d.report.status != SolverStatus::ConvergedStable) return 2;
-  const Points end = sys.positions(d.images.back());
-  return which_state(end, d.energies.back(), a, b, o, similarity);
-}
-
-/// `count` halvings of the step from `inside` (A's state) to `outside` (not).
-void bisect(KnotSystem& sys, const SaddleStart& a, const SaddleStart& b, const TransitionSearchOptions& o,
-            const CurveSimilarity& similarity, int count, VecX& inside, VecX& outside) {
-  for (int j = 0; j < count; ++j) {
-    const VecX mid = 0.5 * (inside + outside);
-    (basin(sys, mid, a, b, o, similarity) == 0 ? inside : outside) = mid;
-  }
-}
-
-/// `steps` Newton iterations on E from dofs x.
-VecX newton_steps(KnotSystem& sys, const VecX& x, int steps) {
-  Objective& f = sys.objective();
-  f.set_dofs(x);
-  f.accept();
-  NewtonOptions no = sys.newton();
-  no.max_iterations = steps;
-  return descend(f, no).images.back();
-}
-
-/// Edge tracking along the boundary of A's state (step 3): both points move
-/// by `tracking_steps` Newton iterations (each stays in its basin), the
-/// pair is checked (basins again, the straight step between them cleared by
-/// the CCD), then bisected again; it stops early when a check fails.
-void track_boundary(KnotSystem& sys, const SaddleStart& a, const SaddleStart& b, const TransitionSearchOptions& o,
-                    const CurveSimilarity& similarity, VecX& inside, VecX& outside) {
-  Objective& f = sys.objective();
-  for (int r = 0; r < o.tracking_rounds; ++r) {
-    const VecX in = newton_steps(sys, inside, o.tracking_steps);
-    const VecX out = newton_steps(sys, outside, o.tracking_steps);
-    f.set_dofs(in);
-    f.accept();
-    if (f.max_step(in, out - in) < 1.0) return;
-    if (basin(sys, in, a, b, o, similarity) != 0 || basin(sys, out, a, b, o, similarity) == 0) return;
-    inside = in;
-    outside = out;
-    bisect(sys, a, b, o, similarity, o.tracking_bisections, inside, outside);
-  }
-}
-
-/// A point of A's state's basin next to its boundary on the chain (step 3):
-/// a binary search over the iterates for consecutive ones, the first in A's
-/// basin and the second not, then `bisections` halvings of the straight step
-/// between them (a step the CCD cleared), then track_boundary(). `outside`
-/// receives the other end.
-VecX basin_boundary(KnotSystem& sys, const Chain& full, const SaddleStart& a, const SaddleStart& b,
-                    const TransitionSearchOptions& o, const CurveSimilarity& similarity, VecX& outside) {
-  size_t lo = 0, hi = full.images.size() - 1;  // A, and the released end at B
-  while (hi - lo > 1) {
-    const size_t mid = (lo + hi) / 2;
-    (basin(sys, full.images[mid], a, b, o, similarity) == 0 ? lo : hi) = mid;
-  }
-  VecX inside = full.images[lo];
-  outside = full.images[hi];
-  bisect(sys, a, b, o, similarity, o.bisections, inside, outside);
-  track_boundary(sys, a, b, o, similarity, inside, outside);
-  return inside;
+  return out;
 }
 
 /// The chain's interior local maxima of E (E_i > E_{i−1}, E_i >= E_{i+1}) by decreasing energy.
@@ -329,33 +150,254 @@ std::vector<size_t> seed_order(const std::vector<double>& energies) {
   return idx;
 }
 
-/// One seed's search and its bookkeeping; true when verified.
-bool try_seed(const Points& seed, const VecX& direction, const SaddleStart& a, const SaddleStart& b,
-              const VecX& rest, const TransitionSearchOptions& o, const CurveSimilarity& similarity,
-              TransitionSearch& t) {
-  ++t.seeds_tried;
-  t.minima_to_b = {0.0, 0.0};
-  t.saddle = seed_search(seed, direction, a, b, rest, o, similarity, t.minima_to_b);
-  t.seed_statuses.push_back(t.saddle.status);
-  if (t.saddle.status == "other-minima") t.other_saddles.push_back(t.saddle);
-  return t.saddle.verified;
-}
+/// Steps 2 and 3 of the file comment between two polished states: the
+/// model's system (at A's dofs to begin with), on which the chain is
+/// steered and the basins are tested, the states, the options and the
+/// result being filled.
+class DoubleEndedSearch {
+ public:
+  DoubleEndedSearch(const SaddleStart& a, const SaddleStart& b, const VecX& rest, const TransitionSearchOptions& o,
+                    const CurveSimilarity& similarity, TransitionSearch& result)
+      : sys_(a.positions, rest, detail::direct(o.saddle)), a_(a), b_(b), rest_(rest), o_(o),
+        similarity_(similarity), t_(result) {}
 
-/// Step 3's seeds in order: the basin boundary on the chain (when
-/// `bisections` > 0), then the chain's highest local maxima of E.
-void run_seeds(KnotSystem& sys, const Chain& full, const SaddleStart& a, const SaddleStart& b, const VecX& rest,
-               const TransitionSearchOptions& o, const CurveSimilarity& similarity, TransitionSearch& t) {
-  if (o.bisections > 0) {
-    VecX outside;
-    const VecX inside = basin_boundary(sys, full, a, b, o, similarity, outside);
-    if (try_seed(sys.positions(inside), outside - inside, a, b, rest, o, similarity, t)) return;
+  /// The chain, then the seeds' searches; returns the search's status.
+  SearchStatus run() {
+    const Chain full = steer();
+    keep_chain(thinned(full, o_.max_images));
+    if (!t_.alexander_preserved) return SearchOutcome::TopologyChanged;
+    if (!t_.reached) return SearchOutcome::NotReached;
+    t_.path_barrier = *std::max_element(full.energies.begin(), full.energies.end()) - t_.energy_a;
+    run_seeds(full);
+    if (t_.seeds_tried == 0) return SearchOutcome::NoSeed;
+    return t_.saddle.status;
   }
-  for (const size_t i : seed_order(full.energies)) {
-    if (t.seeds_tried >= o.seeds) return;
-    const VecX tangent = full.images[i + 1] - full.images[i - 1];
-    if (try_seed(sys.positions(full.images[i]), tangent, a, b, rest, o, similarity, t)) return;
+
+ private:
+  /// The model's Newton options with another iteration cap.
+  NewtonOptions newton(int max_iterations) const {
+    NewtonOptions no = sys_.newton();
+    no.max_iterations = max_iterations;
+    return no;
   }
-}
+
+  /// The system's dofs set to x and accepted.
+  void move_to(const VecX& x) {
+    Objective& f = sys_.objective();
+    f.set_dofs(x);
+    f.accept();
+  }
+
+  /// Newton's method on E from dofs x, at most `max_iterations` iterations.
+  Descent descend_from(const VecX& x, int max_iterations) {
+    move_to(x);
+    return descend(sys_.objective(), newton(max_iterations));
+  }
+
+  /// The state of minimum x (energy `energy`): A's or B's when its
+  /// similarity to that one is >= reach and to the other not; when it is
+  /// in both classes (A and B are that similar, e.g. a chiral curve and its
+  /// mirror image, which the similarity cannot tell apart) only the minimum
+  /// itself counts (same_minimum()). `to_a`, `to_b` receive the similarities.
+  InState which_state(const Points& x, double energy, double* to_a = nullptr, double* to_b = nullptr) const {
+    const double sa = similarity_(x, a_.positions), sb = similarity_(x, b_.positions);
+    if (to_a) *to_a = sa;
+    if (to_b) *to_b = sb;
+    const bool in_a = sa >= o_.reach, in_b = sb >= o_.reach;
+    if (in_a != in_b) return in_a ? InState::A : InState::B;
+    if (!in_a) return InState::Neither;
+    if (same_minimum(x, energy, a_.positions, a_.energy, o_)) return InState::A;
+    if (same_minimum(x, energy, b_.positions, b_.energy, o_)) return InState::B;
+    return InState::Neither;
+  }
+
+  /// The state of the minimum Newton's method on E reaches from dofs x
+  /// (which_state()); Neither when it does not end converged-stable.
+  InState basin(const VecX& x) {
+    const Descent d = descend_from(x, o_.stage_iterations);
+    if (d.report.status != SolverStatus::ConvergedStable) return InState::Neither;
+    return which_state(sys_.positions(d.images.back()), d.energies.back());
+  }
+
+  /// Newton on E from the current dofs; true (and the images appended) when
+  /// it ends converged-stable in B's state.
+  bool release(Chain& chain) {
+    const Descent d = descend(sys_.objective(), newton(o_.stage_iterations));
+    if (d.report.status != SolverStatus::ConvergedStable) return false;
+    if (which_state(sys_.positions(d.images.back()), d.energies.back()) != InState::B) return false;
+    chain.images.insert(chain.images.end(), d.images.begin() + 1, d.images.end());
+    chain.energies.insert(chain.energies.end(), d.energies.begin() + 1, d.energies.end());
+    return true;
+  }
+
+  /// One steering stage (stiffness k towards `target`) from the current
+  /// dofs: its iterates appended to the chain with E (the pull removed).
+  void stage(Chain& chain, const VecX& target, double k, const NewtonOptions& no) {
+    SteeredObjective s(sys_.objective(), target, k);
+    const Descent d = descend(s, no);
+    for (size_t i = 1; i < d.images.size(); ++i) {
+      chain.images.push_back(d.images[i]);
+      chain.energies.push_back(d.energies[i] - 0.5 * k * (d.images[i].head(target.size()) - target).squaredNorm());
+    }
+  }
+
+  /// Step 2 from A (the system at A's dofs) towards B: every accepted
+  /// iterate; fills the result's stage fields.
+  Chain steer() {
+    Objective& f = sys_.objective();
+    const VecX target = as_vector(b_.positions);
+    Chain chain{{f.dofs()}, {f.energy()}};
+    double k = o_.initial_stiffness * a_.mode_eigenvalues(0);
+    NewtonOptions no = newton(o_.stage_iterations);
+    no.remove_rigid_motions = false;
+    for (int j = 0; j < o_.max_stages; ++j, k *= o_.growth) {
+      stage(chain, target, k, no);
+      t_.stages = j + 1;
+      t_.final_stiffness = k;
+      const VecX x = chain.images.back();
+      move_to(x);
+      t_.reached_similarity = similarity_(sys_.positions(x), b_.positions);
+      if (t_.reached_similarity < o_.reach) continue;
+      if (release(chain)) {
+        t_.reached = true;
+        t_.reached_similarity = similarity_(sys_.positions(chain.images.back()), b_.positions);
+        break;
+      }
+      move_to(x);
+    }
+    return chain;
+  }
+
+  /// The thinned chain's images and energies into the result, with the
+  /// Alexander polynomial of every image checked against A's.
+  void keep_chain(const Chain& chain) {
+    for (size_t i = 0; i < chain.images.size(); ++i) {
+      t_.chain.push_back(sys_.positions(chain.images[i]));
+      t_.chain_energies.push_back(chain.energies[i]);
+      if (detail::alexander_or_zero(t_.chain.back()) != a_.alexander) t_.alexander_preserved = false;
+    }
+  }
+
+  /// `count` halvings of the step from `inside` (A's state) to `outside` (not).
+  void bisect(int count, VecX& inside, VecX& outside) {
+    for (int j = 0; j < count; ++j) {
+      const VecX mid = 0.5 * (inside + outside);
+      (basin(mid) == InState::A ? inside : outside) = mid;
+    }
+  }
+
+  /// Edge tracking along the boundary of A's state (step 3): both points
+  /// move by `tracking_steps` Newton iterations (each stays in its basin),
+  /// the pair is checked (basins again, the straight step between them
+  /// cleared by the CCD), then bisected again; it stops early when a check
+  /// fails.
+  void track_boundary(VecX& inside, VecX& outside) {
+    Objective& f = sys_.objective();
+    for (int r = 0; r < o_.tracking_rounds; ++r) {
+      const VecX in = descend_from(inside, o_.tracking_steps).images.back();
+      const VecX out = descend_from(outside, o_.tracking_steps).images.back();
+      move_to(in);
+      if (f.max_step(in, out - in) < 1.0) return;
+      if (basin(in) != InState::A || basin(out) == InState::A) return;
+      inside = in;
+      outside = out;
+      bisect(o_.tracking_bisections, inside, outside);
+    }
+  }
+
+  /// A point of A's state's basin next to its boundary on the chain (step
+  /// 3): a binary search over the iterates for consecutive ones, the first
+  /// in A's basin and the second not, then `bisections` halvings of the
+  /// straight step between them (a step the CCD cleared), then
+  /// track_boundary(). `outside` receives the other end.
+  VecX basin_boundary(const Chain& full, VecX& outside) {
+    size_t lo = 0, hi = full.images.size() - 1;  // A, and the released end at B
+    while (hi - lo > 1) {
+      const size_t mid = (lo + hi) / 2;
+      (basin(full.images[mid]) == InState::A ? lo : hi) = mid;
+    }
+    VecX inside = full.images[lo];
+    outside = full.images[hi];
+    bisect(o_.bisections, inside, outside);
+    track_boundary(inside, outside);
+    return inside;
+  }
+
+  /// Swaps r's two minima with their similarities to B and their states.
+  static void swap_minima(SaddleRecord& r, std::array<double, 2>& to_b, std::array<InState, 2>& state) {
+    std::swap(r.minima[0], r.minima[1]);
+    std::swap(to_b[0], to_b[1]);
+    std::swap(state[0], state[1]);
+  }
+
+  /// The A/B test of a checked saddle's minima (their start_similarity to A,
+  /// to_b to B), minima[0] the one nearer A; `failed` the checks' verdict.
+  SearchStatus classify(SaddleRecord& r, const std::optional<SearchStatus>& failed,
+                        std::array<double, 2>& to_b) const {
+    std::array<InState, 2> state{InState::Neither, InState::Neither};
+    for (int m = 0; m < 2 && r.index == 1 && !r.minima[m].images.empty(); ++m) {
+      SaddleMinimum& mm = r.minima[m];
+      state[m] = which_state(mm.positions, mm.energy, &mm.start_similarity, &to_b[m]);
+    }
+    if (r.minima[1].start_similarity > r.minima[0].start_similarity) swap_minima(r, to_b, state);
+    if (failed) return *failed;
+    const bool joins = (state[0] == InState::A && state[1] == InState::B) ||
+                       (state[0] == InState::B && state[1] == InState::A);
+    if (!joins) return SearchOutcome::OtherMinima;
+    if (state[0] != InState::A) swap_minima(r, to_b, state);  // the A-side descent first
+    return SearchOutcome::Verified;
+  }
+
+  /// Step 3 from one seed: the search along `tangent`, the checks, and the
+  /// A/B test of the minima (to_b: their similarities to B).
+  SaddleRecord seed_search(const Points& seed, const VecX& tangent, std::array<double, 2>& to_b) const {
+    const auto t0 = Clock::now();
+    KnotSystem sys(seed, rest_, detail::direct(o_.saddle));
+    SaddleSearchOptions so = o_.saddle.search;
+    so.max_iterations = o_.search_iterations;
+    SaddleRecord r;
+    const double max_rise = o_.saddle.max_rise_factor * std::abs(a_.energy);
+    const SaddleSearchResult s = detail::search_into(sys, tangent, so, max_rise, r);
+    if (s.status == SaddleStatus::Converged)
+      r.status = classify(r, detail::descend_saddle(a_.alexander, rest_, o_.saddle, sys, s.x, r), to_b);
+    r.verified = r.status.verified();
+    r.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    return r;
+  }
+
+  /// One seed's search and its bookkeeping; true when verified.
+  bool try_seed(const Points& seed, const VecX& direction) {
+    ++t_.seeds_tried;
+    t_.minima_to_b = {0.0, 0.0};
+    t_.saddle = seed_search(seed, direction, t_.minima_to_b);
+    t_.seed_statuses.push_back(t_.saddle.status);
+    if (t_.saddle.status == SearchOutcome::OtherMinima) t_.other_saddles.push_back(t_.saddle);
+    return t_.saddle.verified;
+  }
+
+  /// Step 3's seeds in order: the basin boundary on the chain (when
+  /// `bisections` > 0), then the chain's highest local maxima of E.
+  void run_seeds(const Chain& full) {
+    if (o_.bisections > 0) {
+      VecX outside;
+      const VecX inside = basin_boundary(full, outside);
+      if (try_seed(sys_.positions(inside), outside - inside)) return;
+    }
+    for (const size_t i : seed_order(full.energies)) {
+      if (t_.seeds_tried >= o_.seeds) return;
+      const VecX tangent = full.images[i + 1] - full.images[i - 1];
+      if (try_seed(sys_.positions(full.images[i]), tangent)) return;
+    }
+  }
+
+  KnotSystem sys_;
+  const SaddleStart& a_;
+  const SaddleStart& b_;
+  const VecX& rest_;
+  const TransitionSearchOptions& o_;
+  const CurveSimilarity& similarity_;
+  TransitionSearch& t_;
+};
 
 }  // namespace
 
@@ -414,32 +456,18 @@ TransitionSearch transition_search(const Points& a, const Points& b, const VecX&
   t.energy_b = sb.energy;
   t.energy_scale = sa.energy_scale;
   t.alignment_distance = std::sqrt((t.a - t.b).rowwise().squaredNorm().mean());
-  const auto done = [&](const std::string& status) {
+  const auto done = [&](const SearchStatus& status) {
     t.status = status;
-    t.verified = status == "verified";
+    t.verified = status.verified();
     t.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
     return t;
   };
-  if (sa.alexander != sb.alexander) return done("different-knot");
+  if (sa.alexander != sb.alexander) return done(SearchOutcome::DifferentKnot);
   t.similarity_ab = similarity(t.a, t.b);
   if (std::abs(t.energy_b - t.energy_a) <= o.energy_tolerance * std::abs(t.energy_a) &&
       t.alignment_distance <= o.same_distance)
-    return done("same-state");
-  KnotSystem sys(t.a, rest, detail::direct(o.saddle));
-  Chain chain = steer(sys, sa, sb, o, similarity, t);
-  const Chain full = chain;
-  thin(chain, o.max_images);
-  for (size_t i = 0; i < chain.images.size(); ++i) {
-    t.chain.push_back(sys.positions(chain.images[i]));
-    t.chain_energies.push_back(chain.energies[i]);
-    if (detail::alexander_or_zero(t.chain.back()) != sa.alexander) t.alexander_preserved = false;
-  }
-  if (!t.alexander_preserved) return done("topology-changed");
-  if (!t.reached) return done("not-reached");
-  t.path_barrier = *std::max_element(full.energies.begin(), full.energies.end()) - t.energy_a;
-  run_seeds(sys, full, sa, sb, rest, o, similarity, t);
-  if (t.seeds_tried == 0) return done("no-seed");
-  return done(t.saddle.status);
+    return done(SearchOutcome::SameState);
+  return done(DoubleEndedSearch(sa, sb, rest, o, similarity, t).run());
 }
 
 }  // namespace ek

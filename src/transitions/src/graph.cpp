@@ -117,7 +117,7 @@ void add_pair(TransitionGraph& g, int a, int b, const TransitionSearch& t, const
   p.a = a;
   p.b = b;
   p.status = t.status;
-  for (const std::string& x : t.seed_statuses) p.seed_statuses += (p.seed_statuses.empty() ? "" : ";") + x;
+  p.seed_statuses = t.seed_statuses;
   p.reached = t.reached;
   p.verified = t.verified;
   p.stages = t.stages;
@@ -152,7 +152,7 @@ TransitionSearch search_pair(TransitionGraph& g, int a, int b, const VecX& rest,
                           rest, o, sim);
   } catch (const InputError& e) {
     t = TransitionSearch{};
-    t.status = std::string("refused: ") + e.what();
+    t.status = SearchStatus::refused(e.what());
   }
   add_pair(g, a, b, t, sim, threshold);
   return t;

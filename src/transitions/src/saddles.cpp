@@ -61,6 +61,19 @@ bool link_holds(KnotSystem& sys, const KnotSaddleOptions& o, double& link) {
   return std::abs(link - *o.relax.link) <= o.link_tolerance;
 }
 
+/// f's dofs set to x_s + δ·step, δ halved from the largest step the CCD
+/// allows until E is below the saddle's `saddle_energy` (up to kMaxHalvings
+/// times); false when it never is. A linear step along a bending mode
+/// stretches the edges at second order (energy ~ δ⁴ against ½λδ²).
+bool displace_below(Objective& f, const VecX& xs, double saddle_energy, const VecX& step) {
+  VecX d = step * f.max_step(xs, step);
+  for (int j = 0; j < kMaxHalvings; ++j, d *= 0.5) {
+    f.set_dofs(xs + d);
+    if (f.energy() < saddle_energy) break;
+  }
+  return f.energy() < saddle_energy;
+}
+
 /// Newton from x_s + δ·v (item 3 of saddles.hpp's file comment). The system
 /// is built at x_s's positions (θ relaxed there when the model has θ: at an
 /// equilibrium θ minimises the twisting energy); `step` is a direction, whose
@@ -71,16 +84,9 @@ SaddleMinimum descend_from(const AlexanderPolynomial& alexander, const VecX& res
   Objective& f = sys.objective();
   const VecX xs = f.dofs();
   const double saddle_energy = f.energy();
-  // Halved until below the saddle: a linear step along a bending mode
-  // stretches the edges at second order (energy ~ δ⁴ against ½λδ²).
-  VecX d = step * f.max_step(xs, step);
   SaddleMinimum m;
-  for (int j = 0; j < kMaxHalvings; ++j, d *= 0.5) {
-    f.set_dofs(xs + d);
-    if (f.energy() < saddle_energy) break;
-  }
-  if (!(f.energy() < saddle_energy)) {
-    m.status = "not-below-saddle";
+  if (!displace_below(f, xs, saddle_energy, step)) {
+    m.status = DescentStatus::NotBelowSaddle;
     return m;
   }
   f.accept();
@@ -88,7 +94,7 @@ SaddleMinimum descend_from(const AlexanderPolynomial& alexander, const VecX& res
   m.link_preserved = link_holds(sys, o, m.link);
   descent.images.insert(descent.images.begin(), xs);
   descent.energies.insert(descent.energies.begin(), saddle_energy);
-  m.status = to_string(descent.report.status);
+  m.status = descent_status(descent.report.status);
   m.iterations = descent.report.iterations;
   m.gradient_norm = descent.report.gradient_norm;
   m.energy = descent.energies.back();
@@ -99,7 +105,7 @@ SaddleMinimum descend_from(const AlexanderPolynomial& alexander, const VecX& res
   }
   m.energies = descent.energies;
   m.positions = m.images.back();
-  if (!m.alexander_preserved || !m.link_preserved) m.status = "topology-changed";
+  if (!m.alexander_preserved || !m.link_preserved) m.status = DescentStatus::TopologyChanged;
   return m;
 }
 
@@ -107,18 +113,19 @@ SaddleMinimum descend_from(const AlexanderPolynomial& alexander, const VecX& res
 
 namespace detail {
 
-std::string descend_saddle(const AlexanderPolynomial& alexander, const VecX& rest, const KnotSaddleOptions& o,
-                           KnotSystem& sys, const VecX& xs, SaddleRecord& r) {
+std::optional<SearchStatus> descend_saddle(const AlexanderPolynomial& alexander, const VecX& rest,
+                                           const KnotSaddleOptions& o, KnotSystem& sys, const VecX& xs,
+                                           SaddleRecord& r) {
   Objective& f = sys.objective();
   f.set_dofs(xs);
   const double threshold = sys.newton().shift_epsilon * sys.lambda_min();
   const HessianIndex idx = hessian_index(f, 2, threshold);
-  if (!idx.converged) return "degenerate-hessian";
+  if (!idx.converged) return SearchOutcome::DegenerateHessian;
   r.index = idx.negative;
   r.negative_eigenvalue = idx.values(0);
   r.second_eigenvalue = idx.values.size() > 1 ? idx.values(1) : 0.0;
-  if (idx.near_zero > 0) return "degenerate-hessian";
-  if (idx.negative != 1) return "index-" + std::to_string(idx.negative);
+  if (idx.near_zero > 0) return SearchOutcome::DegenerateHessian;
+  if (idx.negative != 1) return SearchStatus::with_index(idx.negative);
   const VecX v = idx.vectors.col(0);
   const VecX step = v * (o.displacement / v.head(3 * rest.size()).cwiseAbs().maxCoeff());
   const bool link_ok = link_holds(sys, o, r.link);
@@ -127,9 +134,10 @@ std::string descend_saddle(const AlexanderPolynomial& alexander, const VecX& res
   const SaddleMinimum& a = r.minima[0];
   const SaddleMinimum& b = r.minima[1];
   if (!link_ok || !a.alexander_preserved || !b.alexander_preserved || !a.link_preserved || !b.link_preserved)
-    return "topology-changed";
-  if (a.status != "converged-stable" || b.status != "converged-stable") return "descent-failed";
-  return "";
+    return SearchOutcome::TopologyChanged;
+  if (a.status != DescentStatus::ConvergedStable || b.status != DescentStatus::ConvergedStable)
+    return SearchOutcome::DescentFailed;
+  return std::nullopt;
 }
 
 SaddleSearchResult search_into(KnotSystem& sys, const VecX& direction, SaddleSearchOptions search, double max_rise,
@@ -138,7 +146,7 @@ SaddleSearchResult search_into(KnotSystem& sys, const VecX& direction, SaddleSea
   search.base_shift = sys.newton().shift_epsilon * sys.lambda_min();
   search.max_energy_rise = max_rise;
   const SaddleSearchResult s = search_saddle(sys.objective(), direction, search);
-  r.status = to_string(s.status);
+  if (s.status != SaddleStatus::Converged) r.status = search_outcome(s.status);
   r.energy = s.energy;
   r.gradient_norm = s.gradient_norm;
   r.negative_eigenvalue = s.eigenvalue;
@@ -155,7 +163,7 @@ namespace {
 /// Items 2-4 of the file comment for a converged search at x_s.
 void check_saddle(const SaddleStart& start, const VecX& rest, const KnotSaddleOptions& o, KnotSystem& sys,
                   const VecX& xs, const CurveSimilarity& similarity, SaddleRecord& r) {
-  const std::string failed = detail::descend_saddle(start.alexander, rest, o, sys, xs, r);
+  const std::optional<SearchStatus> failed = detail::descend_saddle(start.alexander, rest, o, sys, xs, r);
   for (SaddleMinimum& m : r.minima)
     if (!m.images.empty()) m.start_similarity = similarity(m.positions, start.positions);
   SaddleMinimum& a = r.minima[0];
@@ -166,11 +174,11 @@ void check_saddle(const SaddleStart& start, const VecX& rest, const KnotSaddleOp
   };
   if (is_start(b) > is_start(a) || (is_start(b) == is_start(a) && b.start_similarity > a.start_similarity))
     std::swap(a, b);
-  if (!failed.empty()) r.status = failed;
-  else if (!is_start(a)) r.status = "start-not-reached";
-  else if (is_start(b)) r.status = "returns-to-start";
-  else r.status = "verified";
-  r.verified = r.status == "verified";
+  if (failed) r.status = *failed;
+  else if (!is_start(a)) r.status = SearchOutcome::StartNotReached;
+  else if (is_start(b)) r.status = SearchOutcome::ReturnsToStart;
+  else r.status = SearchOutcome::Verified;
+  r.verified = r.status.verified();
 }
 
 /// One search from the start along `direction` (dofs) and its checks. The

@@ -140,7 +140,7 @@ void write_searches(hid_t file, const TransitionGraph& graph) {
       verified.push_back(r.verified ? 1 : 0);
       index.push_back(r.index);
       iterations.push_back(r.iterations);
-      status.push_back(r.status);
+      status.push_back(to_string(r.status));
       energy.push_back(r.energy);
       gradient.push_back(r.gradient_norm);
       seconds.push_back(r.seconds);
@@ -166,10 +166,10 @@ void write_pairs(hid_t file, const TransitionGraph& graph) {
   put(g.id(), "a", ints(p, [](const P& x) { return x.a; }));
   put(g.id(), "b", ints(p, [](const P& x) { return x.b; }));
   std::vector<std::string> status;
-  for (const P& x : p) status.push_back(x.status);
+  for (const P& x : p) status.push_back(to_string(x.status));
   h5::write_strings(g.id(), "status", status);
   std::vector<std::string> seeds;
-  for (const P& x : p) seeds.push_back(x.seed_statuses);
+  for (const P& x : p) seeds.push_back(to_string(x.seed_statuses));
   h5::write_strings(g.id(), "seed_statuses", seeds);
   put(g.id(), "reached", ints(p, [](const P& x) { return x.reached ? 1 : 0; }));
   put(g.id(), "verified", ints(p, [](const P& x) { return x.verified ? 1 : 0; }));
@@ -314,8 +314,8 @@ void read_pairs(hid_t file, TransitionGraph& g) {
     PairSearch x;
     x.a = static_cast<int>(a[j]);
     x.b = static_cast<int>(b[j]);
-    x.status = status[j];
-    x.seed_statuses = seeds[j];
+    x.status = from_string<SearchStatus>(status[j]);
+    x.seed_statuses = from_string<std::vector<SearchStatus>>(seeds[j]);
     x.reached = reached[j] != 0;
     x.verified = verified[j] != 0;
     x.stages = static_cast<int>(stages[j]);
@@ -364,7 +364,7 @@ void read_searches(hid_t file, TransitionGraph& g) {
     r.verified = verified[j] != 0;
     r.index = static_cast<int>(index[j]);
     r.iterations = static_cast<int>(iterations[j]);
-    r.status = status[j];
+    r.status = from_string<SearchStatus>(status[j]);
     r.energy = energy[j];
     r.gradient_norm = gradient[j];
     r.seconds = seconds[j];

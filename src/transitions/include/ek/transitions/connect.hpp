@@ -31,13 +31,13 @@
 ///       with the states C_a joined to a and C_b joined to b only, the
 ///       closest untried pair u ∈ C_a, v ∈ C_b);
 ///     transition_search(u, v) (an InputError — u or v not a stable
-///     equilibrium — becomes the status "refused: <reason>"), and
+///     equilibrium — becomes the status Refused, "refused: <reason>"), and
 ///     add_pair(g, u, v, ...): its verified saddle joins u and v, and its
 ///     other saddles join the states their minima match (at `threshold`),
 ///     new minima become new states of g (and candidates for later links).
 ///
 /// The loop also ends when no path with an untried link is left
-/// ("exhausted"). When a and b are joined, the chain is minimax_path(g, a, b)
+/// (Exhausted). When a and b are joined, the chain is minimax_path(g, a, b)
 /// (the path whose highest saddle is lowest) and its barrier, seen from a, is
 ///     ΔE_a = max_{e ∈ chain} E_saddle(e) − E_a,   ΔE_b = max E_saddle − E_b,
 /// E_a, E_b the energies stored in g.states. Every edge's own barriers (from
@@ -76,7 +76,7 @@ struct ConnectOptions {
 struct ConnectAttempt {
   int u = -1, v = -1;               ///< states searched from and towards
   double distance = 0.0;            ///< [length] aligned RMS vertex distance of u and v
-  std::string status;               ///< transition_search()'s, or "refused: <reason>"
+  SearchStatus status;              ///< transition_search()'s, or Refused (search_pair())
   bool reached = false;             ///< the steered chain reached v
   double path_barrier = 0.0;        ///< [energy] highest chain iterate − E_u (when reached; else 0)
   int edges_added = 0;              ///< [1] inter-state edges the search added to the graph
@@ -86,7 +86,8 @@ struct ConnectAttempt {
 
 struct ConnectResult {
   bool connected = false;           ///< a chain of verified saddles joins a and b
-  std::string status;               ///< "connected", "budget" (max_searches spent), "exhausted" (no untried pair)
+  /// Connected, Budget (max_searches spent), Exhausted (no untried pair)
+  ConnectStatus status = ConnectStatus::Budget;
   int attempts = 0;                 ///< [1] double-ended searches run (<= max_searches)
   std::vector<int> chain;           ///< edges of g from a to b (minimax_path()); empty unless connected
   double barrier_forward = 0.0;     ///< [energy] highest saddle on the chain − E_a (when connected)

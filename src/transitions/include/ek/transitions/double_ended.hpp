@@ -65,19 +65,19 @@
 /// tell apart), only A or B itself counts: energy within
 /// `energy_tolerance` relative and aligned RMS vertex distance (step 1) at
 /// most `same_distance`.
-/// Statuses (never a false saddle): "verified"; "same-state" (A and B are one
-/// curve: energies within `energy_tolerance` relative and the aligned RMS
-/// vertex distance at most `same_distance`; a mirror image, which the
-/// similarity cannot tell apart, is not the same curve); "different-knot"
-/// (Alexander polynomials differ: no path without a strand passage);
-/// "not-reached" (the stages ran out before the release
-/// reached B); "topology-changed" (an image's Alexander polynomial differs:
+/// Statuses (SearchStatus, status.hpp; never a false saddle): Verified;
+/// SameState (A and B are one curve: energies within `energy_tolerance`
+/// relative and the aligned RMS vertex distance at most `same_distance`; a
+/// mirror image, which the similarity cannot tell apart, is not the same
+/// curve); DifferentKnot (Alexander polynomials differ: no path without a
+/// strand passage); NotReached (the stages ran out before the release
+/// reached B); TopologyChanged (an image's Alexander polynomial differs:
 /// the CCD makes this a defect, never expected); else the last seed's status
-/// (the search's: "max-iterations", "stalled", "left-basin", "degenerate";
-/// the checks': "degenerate-hessian", "index-K", "descent-failed"; and
-/// "other-minima" when the descents do not end in A's and B's states:
-/// TransitionSearch::other_saddles keeps those); "no-seed" when
-/// the chain has no interior local maximum of E.
+/// (the search's: MaxIterations, Stalled, LeftBasin, Degenerate; the
+/// checks': DegenerateHessian, Index, DescentFailed, TopologyChanged; and
+/// OtherMinima when the descents do not end in A's and B's states:
+/// TransitionSearch::other_saddles keeps those); NoSeed when no seed was
+/// searched (no boundary seed and no interior local maximum of E).
 /// The chain's highest energy, E_max − E_A, bounds the barrier of the best
 /// path between A and B from above even when no saddle verifies.
 #include <array>
@@ -96,7 +96,7 @@ struct TransitionSearchOptions {
   KnotSaddleOptions saddle;
   double initial_stiffness = 0.1;   ///< [1] k₀ / λ₁(A)
   double growth = 1.5;              ///< [1] k_{j+1} / k_j (> 1)
-  int max_stages = 60;              ///< [1] steering stages before "not-reached" (k up to 0.1·1.5⁵⁹ ≈ 2·10⁹ λ₁)
+  int max_stages = 60;              ///< [1] steering stages before NotReached (k up to 0.1·1.5⁵⁹ ≈ 2·10⁹ λ₁)
   int stage_iterations = 200;       ///< [1] Newton iterations per stage (and for the release)
   double reach = 0.99;              ///< [1] similarity to B (and A) that counts as reaching it
   double energy_tolerance = 1e-8;   ///< [1] relative energy difference that counts as the same minimum
@@ -118,9 +118,9 @@ struct TransitionSearchOptions {
 /// The outcome of transition_search(). Energies in [energy], EI/L in
 /// energy_scale (L the total rest length).
 struct TransitionSearch {
-  std::string status;                ///< see the file comment
+  SearchStatus status;               ///< see the file comment
   bool reached = false;              ///< the release from the chain reached B
-  bool verified = false;             ///< status == "verified"
+  bool verified = false;             ///< status is Verified
   double energy_a = 0.0;             ///< [energy] A after the polish
   double energy_b = 0.0;             ///< [energy] B after the polish
   double energy_scale = 0.0;         ///< [energy] EI / L
@@ -135,10 +135,10 @@ struct TransitionSearch {
   bool alexander_preserved = true;   ///< on every chain image
   double path_barrier = 0.0;         ///< [energy] highest chain iterate's E − E_A (when reached; else 0)
   int seeds_tried = 0;               ///< [1] saddle searches run
-  std::vector<std::string> seed_statuses;  ///< each seed's search status, in order
+  std::vector<SearchStatus> seed_statuses;  ///< each seed's search status, in order
   /// The seeds' saddles that passed checks 1-3 and 5 of saddles.hpp (index
   /// one, gradient, two converged-stable descents, topology kept) but whose
-  /// descents do not end in A's and B's states ("other-minima"): saddles
+  /// descents do not end in A's and B's states (OtherMinima): saddles
   /// between the minima they reached, with their descents.
   std::vector<SaddleRecord> other_saddles;
   /// The last seed's search: minima[0] the descent that ended nearer A (by

@@ -41,8 +41,8 @@ struct StateSearches {
 /// One double-ended search between two states (its summary).
 struct PairSearch {
   int a = -1, b = -1;                  ///< states
-  std::string status;                  ///< transition_search()'s, or "refused: <reason>"
-  std::string seed_statuses;           ///< each seed search's status, separated by ";"
+  SearchStatus status;                 ///< transition_search()'s, or Refused (search_pair())
+  std::vector<SearchStatus> seed_statuses;  ///< each seed search's status, in order
   bool reached = false;                ///< the steered chain reached B
   bool verified = false;
   int stages = 0;                      ///< [1]
@@ -111,7 +111,8 @@ void add_pair(TransitionGraph& graph, int a, int b, const TransitionSearch& sear
 
 /// transition_search() between states a and b of the graph (rest lengths
 /// `rest`), added by add_pair(); an InputError of the search (a or b not a
-/// stable equilibrium) becomes its status "refused: <reason>". Returns the
+/// stable equilibrium) becomes its status Refused with the error's message
+/// ("refused: <reason>"). Returns the
 /// search (its status, reached, path_barrier).
 TransitionSearch search_pair(TransitionGraph& graph, int a, int b, const VecX& rest,
                              const TransitionSearchOptions& options, const CurveSimilarity& similarity,

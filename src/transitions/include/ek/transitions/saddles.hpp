@@ -36,6 +36,7 @@
 #include "ek/knots/polynomial.hpp"
 #include "ek/solver/relax.hpp"
 #include "ek/solver/saddle.hpp"
+#include "ek/transitions/status.hpp"
 
 namespace ek {
 
@@ -68,9 +69,9 @@ struct KnotSaddleOptions {
 
 /// One descent from the saddle (item 3 of the file comment).
 struct SaddleMinimum {
-  /// relax()'s status of the descent, "topology-changed", or
-  /// "not-below-saddle" (no displacement lowered the energy: no descent).
-  std::string status;
+  /// Newton's status of the descent (relax()'s), TopologyChanged, or
+  /// NotBelowSaddle (no displacement lowered the energy: no descent).
+  DescentStatus status = DescentStatus::NotBelowSaddle;
   Points positions;              ///< n by 3, the equilibrium reached
   double energy = 0.0;           ///< [energy]
   double gradient_norm = 0.0;    ///< [energy/length]
@@ -87,14 +88,15 @@ struct SaddleMinimum {
 struct SaddleRecord {
   int mode = 0;                  ///< [1] rank of the followed mode at the start (0: softest)
   int direction = 1;             ///< +1 or −1
-  /// "verified", or why not: the search status (max-iterations, stalled,
-  /// left-basin, degenerate), "index-K" (K negative eigenvalues),
-  /// "degenerate-hessian" (an eigenvalue within ±ε·λ_min), "descent-failed"
-  /// (a descent did not converge stable), "topology-changed" (Alexander
-  /// polynomial or link), "start-not-reached" (neither descent reached x₀),
-  /// "returns-to-start" (both did).
-  std::string status;
-  bool verified = false;
+  /// Verified, or why not: the search's outcome (MaxIterations, Stalled,
+  /// LeftBasin, Degenerate), Index (K ≠ 1 negative eigenvalues),
+  /// DegenerateHessian (an eigenvalue within ±ε·λ_min), DescentFailed (a
+  /// descent did not converge stable), TopologyChanged (Alexander
+  /// polynomial or link), StartNotReached (neither descent reached x₀),
+  /// ReturnsToStart (both did); a double-ended search's seed
+  /// (double_ended.hpp) has OtherMinima instead of the last two.
+  SearchStatus status;
+  bool verified = false;         ///< status is Verified
   double energy = 0.0;           ///< [energy] at the saddle (the search's last iterate otherwise)
   double gradient_norm = 0.0;    ///< [energy/length]
   double negative_eigenvalue = 0.0;  ///< [energy/length²] λ₁ (0 when not computed)

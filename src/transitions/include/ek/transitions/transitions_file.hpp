@@ -15,9 +15,11 @@
 ///   edges/       from, to, saddle int64 [e], energy, barrier_forward, barrier_backward,
 ///                barrier_forward_scaled, barrier_backward_scaled float64 [e]
 ///   searches/    state, mode, direction, verified, index, iterations int64 [m],
-///                status string [m], energy, gradient_norm, seconds float64 [m]
+///                status string [m] (to_string(SearchStatus), or "start-refused: <error>"),
+///                energy, gradient_norm, seconds float64 [m]
 ///   pairs/       a, b, reached, verified, stages, saddle int64 [q] (-1: none),
-///                status, seed_statuses string [q], path_barrier, reached_similarity,
+///                status, seed_statuses string [q] (to_string() of the status and of
+///                the seeds' list), path_barrier, reached_similarity,
 ///                saddle_energy, seconds float64 [q] (double-ended searches)
 ///
 /// Written to a temporary name and renamed into place. A run of `knots
@@ -41,8 +43,8 @@ struct TransitionsFileInfo {
 /// and `states_searched` when it is >= 0.
 void write_transitions(const std::string& path, const TransitionGraph& graph, const std::string& dataset,
                        const std::string& options, bool complete, int states_searched = -1);
-/// Reads a transitions file (InputError naming the file for any problem),
-/// the searches included (one StateSearches per state with rows, its records
+/// Reads a transitions file (InputError naming the file for any problem,
+/// an unknown status included), the searches included (one StateSearches per state with rows, its records
 /// holding the columns of searches/; a "start-refused: " row becomes its
 /// error). `options` (optional) receives the recorded options text.
 TransitionGraph read_transitions(const std::string& path, std::string* options = nullptr);
