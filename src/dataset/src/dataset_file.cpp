@@ -95,6 +95,60 @@ DatasetMetadata read_meta(hid_t f, const std::string& path) {
   return m;
 }
 
+/// The columns of a knot's runs/ group (docs/dataset-format.md): one
+/// dataset per column, one row per run, written and read from these tables
+/// in this order (integers, reals, texts).
+struct RunIntColumn {
+  const char* name;
+  std::int64_t (*get)(const RunRecord&);
+  void (*set)(RunRecord&, std::int64_t);
+};
+struct RunRealColumn {
+  const char* name;
+  double RunRecord::*field;
+};
+struct RunTextColumn {
+  const char* name;
+  std::string RunRecord::*field;
+};
+const RunIntColumn kRunIntColumns[] = {
+    {"sample", [](const RunRecord& r) -> std::int64_t { return r.sample; },
+     [](RunRecord& r, std::int64_t v) { r.sample = static_cast<int>(v); }},
+    {"seed", [](const RunRecord& r) { return static_cast<std::int64_t>(r.seed); },
+     [](RunRecord& r, std::int64_t v) { r.seed = static_cast<std::uint64_t>(v); }},
+    {"equilibrium", [](const RunRecord& r) -> std::int64_t { return r.equilibrium; },
+     [](RunRecord& r, std::int64_t v) { r.equilibrium = static_cast<int>(v); }},
+    {"iterations", [](const RunRecord& r) -> std::int64_t { return r.iterations; },
+     [](RunRecord& r, std::int64_t v) { r.iterations = static_cast<int>(v); }},
+    {"contacts", [](const RunRecord& r) -> std::int64_t { return r.contacts; },
+     [](RunRecord& r, std::int64_t v) { r.contacts = static_cast<int>(v); }},
+    {"alexander_preserved", [](const RunRecord& r) -> std::int64_t { return r.alexander_preserved ? 1 : 0; },
+     [](RunRecord& r, std::int64_t v) { r.alexander_preserved = v != 0; }},
+};
+const RunRealColumn kRunRealColumns[] = {
+    {"seconds", &RunRecord::seconds}, {"energy", &RunRecord::energy}, {"gradient_norm", &RunRecord::gradient_norm}};
+const RunTextColumn kRunTextColumns[] = {{"status", &RunRecord::status}, {"message", &RunRecord::message}};
+
+void write_runs(hid_t knot, const std::vector<RunRecord>& runs) {
+  h5::Handle g = h5::create_group(knot, "runs");
+  const hsize_t r = runs.size();
+  for (const RunIntColumn& c : kRunIntColumns) {
+    std::vector<std::int64_t> v;
+    for (const RunRecord& run : runs) v.push_back(c.get(run));
+    h5::write_int64(g.id(), c.name, {r}, v.data());
+  }
+  for (const RunRealColumn& c : kRunRealColumns) {
+    std::vector<double> v;
+    for (const RunRecord& run : runs) v.push_back(run.*c.field);
+    h5::write_doubles(g.id(), c.name, {r}, v.data());
+  }
+  for (const RunTextColumn& c : kRunTextColumns) {
+    std::vector<std::string> v;
+    for (const RunRecord& run : runs) v.push_back(run.*c.field);
+    h5::write_strings(g.id(), c.name, v);
+  }
+}
+
 }  // namespace
 
 int KnotEntry::attribute_column(const std::string& attribute) const {
@@ -162,37 +216,7 @@ void DatasetWriter::add(const KnotEntry& k) {
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> attr = k.attributes;
   h5::write_doubles(id, "attributes", {m, kcols}, attr.data());
   h5::write_strings(id, "attribute_names", k.attribute_names);
-  {
-    h5::Handle runs = h5::create_group(id, "runs");
-    const hsize_t r = k.runs.size();
-    std::vector<std::int64_t> sample, seed, eqi, iters, contacts, alex;
-    std::vector<double> seconds, energy, gnorm;
-    std::vector<std::string> status, message;
-    for (const auto& run : k.runs) {
-      sample.push_back(run.sample);
-      seed.push_back(static_cast<std::int64_t>(run.seed));
-      eqi.push_back(run.equilibrium);
-      iters.push_back(run.iterations);
-      contacts.push_back(run.contacts);
-      alex.push_back(run.alexander_preserved ? 1 : 0);
-      seconds.push_back(run.seconds);
-      energy.push_back(run.energy);
-      gnorm.push_back(run.gradient_norm);
-      status.push_back(run.status);
-      message.push_back(run.message);
-    }
-    h5::write_int64(runs.id(), "sample", {r}, sample.data());
-    h5::write_int64(runs.id(), "seed", {r}, seed.data());
-    h5::write_int64(runs.id(), "equilibrium", {r}, eqi.data());
-    h5::write_int64(runs.id(), "iterations", {r}, iters.data());
-    h5::write_int64(runs.id(), "contacts", {r}, contacts.data());
-    h5::write_int64(runs.id(), "alexander_preserved", {r}, alex.data());
-    h5::write_doubles(runs.id(), "seconds", {r}, seconds.data());
-    h5::write_doubles(runs.id(), "energy", {r}, energy.data());
-    h5::write_doubles(runs.id(), "gradient_norm", {r}, gnorm.data());
-    h5::write_strings(runs.id(), "status", status);
-    h5::write_strings(runs.id(), "message", message);
-  }
+  write_runs(id, k.runs);
   require(k.similarity.size() == 0 || (static_cast<hsize_t>(k.similarity.rows()) == m && k.similarity.cols() == k.similarity.rows()),
           "DatasetWriter: similarity matrix has the wrong shape");
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> sim = k.similarity;
@@ -256,35 +280,32 @@ class KnotGroupReader {
   /// runs/: columns of one length; `equilibria` rows exist.
   std::vector<RunRecord> runs(size_t equilibria) const {
     h5::Handle g = h5::open_group(id_, "runs");
-    const hid_t r = g.id();
-    const auto sample = h5::read_int64(r, "sample"), seed = h5::read_int64(r, "seed"),
-               eqi = h5::read_int64(r, "equilibrium"), iters = h5::read_int64(r, "iterations"),
-               contacts = h5::read_int64(r, "contacts"), alex = h5::read_int64(r, "alexander_preserved");
-    const auto seconds = h5::read_doubles(r, "seconds"), energy = h5::read_doubles(r, "energy"),
-               gnorm = h5::read_doubles(r, "gradient_norm");
-    const auto status = h5::read_strings(r, "status"), message = h5::read_strings(r, "message");
-    const size_t count = sample.size();
-    for (size_t len : {seed.size(), eqi.size(), iters.size(), contacts.size(), alex.size(), seconds.size(),
-                       energy.size(), gnorm.size(), status.size(), message.size()})
-      if (len != count) damaged("the columns of runs/ have different lengths");
-    std::vector<RunRecord> out(count);
-    for (size_t k = 0; k < count; ++k) {
-      if (eqi[k] < -1 || eqi[k] >= static_cast<std::int64_t>(equilibria))
-        damaged("run " + std::to_string(k) + " names equilibrium " + std::to_string(eqi[k]) + " of " +
-                std::to_string(equilibria));
-      RunRecord& run = out[k];
-      run.sample = static_cast<int>(sample[k]);
-      run.seed = static_cast<std::uint64_t>(seed[k]);
-      run.equilibrium = static_cast<int>(eqi[k]);
-      run.iterations = static_cast<int>(iters[k]);
-      run.contacts = static_cast<int>(contacts[k]);
-      run.alexander_preserved = alex[k] != 0;
-      run.seconds = seconds[k];
-      run.energy = energy[k];
-      run.gradient_norm = gnorm[k];
-      run.status = status[k];
-      run.message = message[k];
+    std::vector<RunRecord> out;
+    bool first = true;
+    const auto rows = [&](size_t count) {
+      if (first) out.resize(count);
+      first = false;
+      if (count != out.size()) damaged("the columns of runs/ have different lengths");
+    };
+    for (const RunIntColumn& c : kRunIntColumns) {
+      const auto v = h5::read_int64(g.id(), c.name);
+      rows(v.size());
+      for (size_t k = 0; k < v.size(); ++k) c.set(out[k], v[k]);
     }
+    for (const RunRealColumn& c : kRunRealColumns) {
+      const auto v = h5::read_doubles(g.id(), c.name);
+      rows(v.size());
+      for (size_t k = 0; k < v.size(); ++k) out[k].*c.field = v[k];
+    }
+    for (const RunTextColumn& c : kRunTextColumns) {
+      const auto v = h5::read_strings(g.id(), c.name);
+      rows(v.size());
+      for (size_t k = 0; k < v.size(); ++k) out[k].*c.field = v[k];
+    }
+    for (size_t k = 0; k < out.size(); ++k)
+      if (out[k].equilibrium < -1 || out[k].equilibrium >= static_cast<int>(equilibria))
+        damaged("run " + std::to_string(k) + " names equilibrium " + std::to_string(out[k].equilibrium) + " of " +
+                std::to_string(equilibria));
     return out;
   }
 

@@ -138,11 +138,47 @@ std::uint64_t knot_seed(std::uint64_t run_seed, const std::string& name) {
   return splitmix64(run_seed ^ splitmix64(h));
 }
 
+namespace {
+
+/// What an attribute of a stored equilibrium is computed from.
+struct AttributeSource {
+  const JournalRun& run;
+  const Attributes& attributes;
+  int sample;
+};
+
+/// The attribute table's columns, in the stored order: names and values
+/// from one list (dataset_attribute_names() and attribute_row()).
+struct AttributeColumn {
+  const char* name;
+  double (*value)(const AttributeSource&);
+};
+const AttributeColumn kAttributeColumns[] = {
+    {"energy", [](const AttributeSource& s) { return s.run.energy.total; }},
+    {"energy_stretch", [](const AttributeSource& s) { return s.run.energy.stretch; }},
+    {"energy_bend", [](const AttributeSource& s) { return s.run.energy.bend; }},
+    {"energy_twist", [](const AttributeSource& s) { return s.run.energy.twist; }},
+    {"energy_contact", [](const AttributeSource& s) { return s.run.energy.contact; }},
+    {"stiffness", [](const AttributeSource& s) { return s.run.stiffness; }},
+    {"max_stress", [](const AttributeSource& s) { return s.attributes.physical.max_stress.value_or(std::nan("")); }},
+    {"total_curvature", [](const AttributeSource& s) { return s.attributes.geometric.total_curvature; }},
+    {"threedim", [](const AttributeSource& s) { return s.attributes.geometric.threedim; }},
+    {"sphericity", [](const AttributeSource& s) { return s.attributes.geometric.sphericity; }},
+    {"diameter", [](const AttributeSource& s) { return s.attributes.geometric.diameter; }},
+    {"writhe", [](const AttributeSource& s) { return s.attributes.geometric.writhe; }},
+    {"link", [](const AttributeSource& s) { return s.run.link; }},
+    {"contacts", [](const AttributeSource& s) { return static_cast<double>(s.run.record.contacts); }},
+    {"sample", [](const AttributeSource& s) { return static_cast<double>(s.sample); }},
+};
+
+}  // namespace
+
 const std::vector<std::string>& dataset_attribute_names() {
-  static const std::vector<std::string> names = {
-      "energy",          "energy_stretch", "energy_bend", "energy_twist", "energy_contact", "stiffness",
-      "max_stress",      "total_curvature", "threedim",  "sphericity",   "diameter",       "writhe",
-      "link",            "contacts",       "sample"};
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> v;
+    for (const AttributeColumn& c : kAttributeColumns) v.push_back(c.name);
+    return v;
+  }();
   return names;
 }
 
@@ -380,13 +416,13 @@ double score_batch(AdaptiveScorer& scorer, const KnotRuns& runs, int begin, int 
   return scorer.add_batch(stable);
 }
 
-// One row of the attribute table (dataset_attribute_names() order).
+// One row of the attribute table (kAttributeColumns' order).
 std::vector<double> attribute_row(const JournalRun& r, int sample, const AttributeOptions& ao) {
   const Attributes a = compute_attributes(r.positions, ao);
-  return {r.energy.total, r.energy.stretch, r.energy.bend, r.energy.twist, r.energy.contact, r.stiffness,
-          a.physical.max_stress.value_or(std::nan("")), a.geometric.total_curvature, a.geometric.threedim,
-          a.geometric.sphericity, a.geometric.diameter, a.geometric.writhe, r.link,
-          static_cast<double>(r.record.contacts), static_cast<double>(sample)};
+  const AttributeSource source{r, a, sample};
+  std::vector<double> row;
+  for (const AttributeColumn& c : kAttributeColumns) row.push_back(c.value(source));
+  return row;
 }
 
 // Runs of samples [0, total) in sample order into the entry; the stable
