@@ -1,7 +1,8 @@
 // The transition graph: the minimax path on a hand-made graph with a known
 // answer, the chain profile (each edge's whole path, in the direction
 // travelled), and the transitions file round trip (an unknown status in it
-// refused).
+// refused), its version policy (another format version refused) and a
+// missing column refused naming it.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -248,4 +249,218 @@ TEST(TransitionsFile, RoundTripAndBadInput) {
   { std::FILE* f = std::fopen(bad.c_str(), "w"); std::fputs("not hdf5", f); std::fclose(f); }
   EXPECT_THROW(read_transitions(bad), InputError);
   std::remove(bad.c_str());
+}
+
+namespace {
+
+/// The example with searches whose state energies and seconds are what the
+/// reader rebuilds (the state's energy, the records' seconds summed), every
+/// column holding a value of its own.
+TransitionGraph example_with_searches() {
+  TransitionGraph g = example();
+  g.states[3].cluster = -1;
+  g.states[4].equilibrium = -1;
+  for (size_t k = 0; k < g.saddles.size(); ++k) {
+    g.saddles[k].gradient_norm = 1e-9 * static_cast<double>(k + 1);
+    g.saddles[k].index = static_cast<int>(k) + 1;
+    g.saddles[k].saddle_image = k == 2 ? 2 : 1;
+  }
+  StateSearches searched;
+  searched.state = 0;
+  searched.energy = g.states[0].energy;
+  for (int k = 0; k < 2; ++k) {
+    SaddleRecord r;
+    r.mode = k;
+    r.direction = k == 0 ? 1 : -1;
+    r.status = k == 0 ? SearchStatus(SearchOutcome::Verified) : SearchStatus(SearchOutcome::LeftBasin);
+    r.verified = k == 0;
+    r.index = k == 0 ? 1 : -1;
+    r.iterations = 10 + k;
+    r.energy = 2.5 + k;
+    r.gradient_norm = 1e-9 * (k + 1);
+    r.seconds = 0.5 + k;
+    searched.records.push_back(r);
+    searched.seconds += r.seconds;
+  }
+  StateSearches refused;
+  refused.state = 2;
+  refused.energy = g.states[2].energy;
+  refused.error = "not a stable equilibrium";
+  refused.seconds = 0.25;
+  g.searches = {searched, refused};
+  return g;
+}
+
+/// Every member the file keeps, compared exactly.
+void expect_same_graph(const TransitionGraph& a, const TransitionGraph& b) {
+  EXPECT_EQ(a.knot, b.knot);
+  EXPECT_EQ(a.cut, b.cut);
+  EXPECT_EQ(a.energy_scale, b.energy_scale);
+  ASSERT_EQ(a.states.size(), b.states.size());
+  for (size_t k = 0; k < a.states.size(); ++k) {
+    const TransitionState &x = a.states[k], &y = b.states[k];
+    EXPECT_EQ(x.energy, y.energy) << k;
+    EXPECT_EQ(x.cluster, y.cluster) << k;
+    EXPECT_EQ(x.equilibrium, y.equilibrium) << k;
+    EXPECT_EQ(x.positions, y.positions) << k;
+  }
+  ASSERT_EQ(a.saddles.size(), b.saddles.size());
+  for (size_t k = 0; k < a.saddles.size(); ++k) {
+    const TransitionSaddle &x = a.saddles[k], &y = b.saddles[k];
+    EXPECT_EQ(x.energy, y.energy) << k;
+    EXPECT_EQ(x.negative_eigenvalue, y.negative_eigenvalue) << k;
+    EXPECT_EQ(x.second_eigenvalue, y.second_eigenvalue) << k;
+    EXPECT_EQ(x.gradient_norm, y.gradient_norm) << k;
+    EXPECT_EQ(x.index, y.index) << k;
+    EXPECT_EQ(x.from, y.from) << k;
+    EXPECT_EQ(x.to, y.to) << k;
+    EXPECT_EQ(x.saddle_image, y.saddle_image) << k;
+    EXPECT_EQ(x.energy_from, y.energy_from) << k;
+    EXPECT_EQ(x.energy_to, y.energy_to) << k;
+    EXPECT_EQ(x.double_ended, y.double_ended) << k;
+    EXPECT_EQ(x.positions, y.positions) << k;
+    EXPECT_EQ(x.path, y.path) << k;
+    EXPECT_EQ(x.path_energies, y.path_energies) << k;
+  }
+  ASSERT_EQ(a.edges.size(), b.edges.size());
+  for (size_t k = 0; k < a.edges.size(); ++k) {
+    const TransitionEdge &x = a.edges[k], &y = b.edges[k];
+    EXPECT_EQ(x.from, y.from) << k;
+    EXPECT_EQ(x.to, y.to) << k;
+    EXPECT_EQ(x.saddle, y.saddle) << k;
+    EXPECT_EQ(x.energy, y.energy) << k;
+    EXPECT_EQ(x.barrier_forward, y.barrier_forward) << k;
+    EXPECT_EQ(x.barrier_backward, y.barrier_backward) << k;
+  }
+  ASSERT_EQ(a.searches.size(), b.searches.size());
+  for (size_t k = 0; k < a.searches.size(); ++k) {
+    const StateSearches &x = a.searches[k], &y = b.searches[k];
+    EXPECT_EQ(x.state, y.state) << k;
+    EXPECT_EQ(x.energy, y.energy) << k;
+    EXPECT_EQ(x.seconds, y.seconds) << k;
+    EXPECT_EQ(x.error, y.error) << k;
+    ASSERT_EQ(x.records.size(), y.records.size()) << k;
+    for (size_t j = 0; j < x.records.size(); ++j) {
+      const SaddleRecord &r = x.records[j], &s = y.records[j];
+      EXPECT_EQ(r.mode, s.mode);
+      EXPECT_EQ(r.direction, s.direction);
+      EXPECT_EQ(r.verified, s.verified);
+      EXPECT_EQ(r.index, s.index);
+      EXPECT_EQ(r.iterations, s.iterations);
+      EXPECT_EQ(r.status, s.status);
+      EXPECT_EQ(r.energy, s.energy);
+      EXPECT_EQ(r.gradient_norm, s.gradient_norm);
+      EXPECT_EQ(r.seconds, s.seconds);
+    }
+  }
+  ASSERT_EQ(a.pairs.size(), b.pairs.size());
+  for (size_t k = 0; k < a.pairs.size(); ++k) {
+    const PairSearch &x = a.pairs[k], &y = b.pairs[k];
+    EXPECT_EQ(x.a, y.a) << k;
+    EXPECT_EQ(x.b, y.b) << k;
+    EXPECT_EQ(x.status, y.status) << k;
+    EXPECT_EQ(x.seed_statuses, y.seed_statuses) << k;
+    EXPECT_EQ(x.reached, y.reached) << k;
+    EXPECT_EQ(x.verified, y.verified) << k;
+    EXPECT_EQ(x.stages, y.stages) << k;
+    EXPECT_EQ(x.saddle, y.saddle) << k;
+    EXPECT_EQ(x.path_barrier, y.path_barrier) << k;
+    EXPECT_EQ(x.reached_similarity, y.reached_similarity) << k;
+    EXPECT_EQ(x.saddle_energy, y.saddle_energy) << k;
+    EXPECT_EQ(x.seconds, y.seconds) << k;
+  }
+}
+
+/// The InputError message of f() (empty when it does not throw one).
+template <class F>
+std::string input_error(F f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+std::string temp_file(const std::string& name) { return std::filesystem::temp_directory_path() / name; }
+
+}  // namespace
+
+// Written and read back, the graph is the one in memory (every column), and
+// so is every attribute; an empty graph too.
+TEST(TransitionsFile, RoundTripEqualsTheGraph) {
+  const std::string path = temp_file("ek_test_transitions_round_trip.h5");
+  const TransitionGraph g = example_with_searches();
+  write_transitions(path, g, "data.h5", "modes 2", false, 1);
+  TransitionsFileInfo info;
+  expect_same_graph(read_transitions(path, info), g);
+  EXPECT_EQ(info.dataset, "data.h5");
+  EXPECT_EQ(info.options, "modes 2");
+  EXPECT_FALSE(info.complete);
+  EXPECT_EQ(info.states_searched, 1);
+  TransitionGraph empty;
+  empty.knot = "0_1";
+  write_transitions(path, empty, "", "", true);
+  expect_same_graph(read_transitions(path, info), empty);
+  EXPECT_TRUE(info.complete);
+  EXPECT_EQ(info.states_searched, -1);
+  std::remove(path.c_str());
+}
+
+// The reader accepts its own format version only: another (older or newer)
+// is one line naming the file and both versions.
+TEST(TransitionsFile, AnotherFormatVersionIsRefused) {
+  const std::string path = temp_file("ek_test_transitions_version.h5");
+  for (const std::int64_t version : {std::int64_t{0}, std::int64_t{2}}) {
+    write_transitions(path, example_with_searches(), "data.h5", "options", true);
+    {
+      const h5::Handle f = h5::open_file(path, true);
+      h5::set_attr(f.id(), "format_version", version);
+    }
+    const std::string message = input_error([&] { read_transitions(path); });
+    EXPECT_EQ(message, path + ": transitions format version " + std::to_string(version) + ", expected 1");
+    EXPECT_EQ(message.find('\n'), std::string::npos);
+  }
+  std::remove(path.c_str());
+}
+
+// A file without one of its columns (a derived one included) or required
+// attributes is refused naming it; one whose columns differ in length names
+// both.
+TEST(TransitionsFile, AMissingColumnIsRefusedNamingIt) {
+  const std::string path = temp_file("ek_test_transitions_missing.h5");
+  const std::pair<const char*, const char*> columns[] = {
+      {"states", "energy"},         {"states", "positions"},     {"saddles", "energy_from"},
+      {"saddles", "double_ended"},  {"saddles/path_1", "energies"}, {"edges", "barrier_backward"},
+      {"edges", "barrier_forward_scaled"}, {"searches", "status"}, {"pairs", "seed_statuses"},
+  };
+  for (const auto& [group, column] : columns) {
+    write_transitions(path, example_with_searches(), "data.h5", "options", true, 2);
+    {
+      const h5::Handle f = h5::open_file(path, true);
+      const h5::Handle g = h5::open_group(f.id(), group);
+      ASSERT_GE(H5Ldelete(g.id(), column, H5P_DEFAULT), 0) << group << "/" << column;
+    }
+    EXPECT_EQ(input_error([&] { read_transitions(path); }),
+              path + ": the column '" + group + "/" + column + "' is missing");
+  }
+  for (const char* attribute : {"knot", "cut", "complete"}) {
+    write_transitions(path, example_with_searches(), "data.h5", "options", true, 2);
+    {
+      const h5::Handle f = h5::open_file(path, true);
+      ASSERT_GE(H5Adelete(f.id(), attribute), 0) << attribute;
+    }
+    EXPECT_EQ(input_error([&] { read_transitions(path); }),
+              path + ": the attribute '" + std::string(attribute) + "' is missing");
+  }
+  write_transitions(path, example_with_searches(), "data.h5", "options", true, 2);
+  {
+    const h5::Handle f = h5::open_file(path, true);
+    const h5::Handle g = h5::open_group(f.id(), "edges");
+    H5Ldelete(g.id(), "energy", H5P_DEFAULT);
+    const std::vector<double> one{1.0};
+    h5::write_doubles(g.id(), "energy", {1}, one.data());
+  }
+  EXPECT_EQ(input_error([&] { read_transitions(path); }), path + ": edges: column 'energy' has 1 rows, 'from' 4");
+  std::remove(path.c_str());
 }

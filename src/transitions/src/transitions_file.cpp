@@ -1,6 +1,12 @@
 #include "ek/transitions/transitions_file.hpp"
 
-#include <filesystem>
+#include <cstdio>
+#include <functional>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <variant>
+#include <vector>
 
 #include "ek/core/atomic_file.hpp"
 #include "ek/core/errors.hpp"
@@ -10,175 +16,429 @@ namespace ek {
 namespace {
 
 constexpr const char* kFormat = "elastic-knots-transitions";
+/// The reader accepts this version only (the data set's policy, dataset_file.cpp).
 constexpr std::int64_t kFormatVersion = 1;
+constexpr const char* kPathFormat = "elastic-knots-path";
+constexpr std::int64_t kPathFormatVersion = 1;
 constexpr const char* kRefusedRow = "start-refused: ";  ///< the searches/ status of a refused start
 
-void write_curves(hid_t g, const std::string& name, const std::vector<Points>& curves) {
-  const hsize_t n = curves.empty() ? 0 : static_cast<hsize_t>(curves.front().rows());
+// ---------------------------------------------------------------------------
+// Columns and attributes: each is described once, in the tables below, and
+// both write_transitions() and read_transitions() walk the tables in order
+// (the order is the file's: datasets are created in it).
+
+/// How a column or attribute is stored: int64, float64, a variable-length
+/// UTF-8 string, or one curve per row (float64 [rows, n, 3]).
+enum class Type { Int64, Float64, Text, Curves };
+
+/// One cell of a column, or an attribute's value; std::monostate: not
+/// recorded (an optional attribute left out, or absent from the file).
+using Cell = std::variant<std::monostate, std::int64_t, double, std::string, Points>;
+
+template <class T>
+constexpr Type type_of() {
+  if constexpr (std::is_same_v<T, double>) return Type::Float64;
+  else if constexpr (std::is_same_v<T, std::string>) return Type::Text;
+  else if constexpr (std::is_same_v<T, Points>) return Type::Curves;
+  else {
+    static_assert(std::is_integral_v<T>, "columns are integers, flags, doubles, strings or curves");
+    return Type::Int64;
+  }
+}
+
+template <class T>
+Cell to_cell(const T& v) {
+  if constexpr (std::is_same_v<T, bool>) return std::int64_t{v ? 1 : 0};
+  else if constexpr (std::is_integral_v<T>) return static_cast<std::int64_t>(v);
+  else return v;
+}
+
+template <class T>
+void from_cell(Cell&& c, T& out) {
+  if constexpr (std::is_same_v<T, bool>) out = std::get<std::int64_t>(c) != 0;
+  else if constexpr (std::is_integral_v<T>) out = static_cast<T>(std::get<std::int64_t>(c));
+  else out = std::get<T>(std::move(c));
+}
+
+/// One dataset of a group: one row per record of type Row. `get` has the
+/// graph for the columns derived from it; a column without `set` is derived
+/// from others (written, required in the file, not read back).
+template <class Row>
+struct Column {
+  std::string name;
+  Type type;
+  std::function<Cell(const Row&, const TransitionGraph&)> get;
+  std::function<void(Row&, Cell&&)> set;
+};
+
+/// A column that is the member `m` (of Row or of a base of it).
+template <class Row, class Class, class T>
+Column<Row> column(std::string name, T Class::*m) {
+  return {std::move(name), type_of<T>(), [m](const Row& r, const TransitionGraph&) { return to_cell(r.*m); },
+          [m](Row& r, Cell&& c) { from_cell(std::move(c), r.*m); }};
+}
+
+/// A column holding to_string() of the member `m`, read by from_string<T>().
+template <class Row, class T>
+Column<Row> text_of(std::string name, T Row::*m) {
+  return {std::move(name), Type::Text, [m](const Row& r, const TransitionGraph&) { return Cell(to_string(r.*m)); },
+          [m](Row& r, Cell&& c) { r.*m = from_string<T>(std::get<std::string>(c)); }};
+}
+
+/// A column derived from a record and the graph (written only).
+template <class Row>
+Column<Row> derived(std::string name, double (*get)(const Row&, const TransitionGraph&)) {
+  return {std::move(name), Type::Float64,
+          [get](const Row& r, const TransitionGraph& g) { return Cell(get(r, g)); }, {}};
+}
+
+/// A group of the file and its columns.
+template <class Row>
+struct Table {
+  std::string group;
+  std::vector<Column<Row>> columns;
+};
+
+/// One row of searches/: a search from a state, or a start that was refused
+/// (one row with mode −1, direction 0, index −1, no iterations, energy and
+/// gradient 0, the start's seconds, and status "start-refused: <error>").
+struct SearchRow : SaddleRecord {
+  int state = -1;
+  bool refused = false;
+  std::string error;  ///< of a refused start
+};
+
+/// One image of a saddle's path (saddles/path_<j>/) or of a path file.
+struct PathRow {
+  Points image;
+  double energy = 0.0;
+};
+
+using State = TransitionState;
+using Saddle = TransitionSaddle;
+using Edge = TransitionEdge;
+
+const Table<State> kStates{"states",
+                           {
+                               column<State>("energy", &State::energy),
+                               column<State>("cluster", &State::cluster),
+                               column<State>("equilibrium", &State::equilibrium),
+                               column<State>("positions", &State::positions),
+                           }};
+
+/// Each saddle's path is a group path_<j> of kPath's columns besides these.
+const Table<Saddle> kSaddles{"saddles",
+                             {
+                                 column<Saddle>("energy", &Saddle::energy),
+                                 column<Saddle>("negative_eigenvalue", &Saddle::negative_eigenvalue),
+                                 column<Saddle>("second_eigenvalue", &Saddle::second_eigenvalue),
+                                 column<Saddle>("gradient_norm", &Saddle::gradient_norm),
+                                 column<Saddle>("index", &Saddle::index),
+                                 column<Saddle>("from", &Saddle::from),
+                                 column<Saddle>("to", &Saddle::to),
+                                 column<Saddle>("saddle_image", &Saddle::saddle_image),
+                                 column<Saddle>("energy_from", &Saddle::energy_from),
+                                 column<Saddle>("energy_to", &Saddle::energy_to),
+                                 column<Saddle>("double_ended", &Saddle::double_ended),
+                                 column<Saddle>("positions", &Saddle::positions),
+                             }};
+
+const std::vector<Column<PathRow>> kPath = {
+    column<PathRow>("images", &PathRow::image),
+    column<PathRow>("energies", &PathRow::energy),
+};
+
+const Table<Edge> kEdges{"edges",
+                         {
+                             column<Edge>("from", &Edge::from),
+                             column<Edge>("to", &Edge::to),
+                             column<Edge>("saddle", &Edge::saddle),
+                             column<Edge>("energy", &Edge::energy),
+                             column<Edge>("barrier_forward", &Edge::barrier_forward),
+                             column<Edge>("barrier_backward", &Edge::barrier_backward),
+                             // divided by EI/L
+                             derived<Edge>("barrier_forward_scaled",
+                                           [](const Edge& e, const TransitionGraph& g) {
+                                             return e.barrier_forward / g.energy_scale;
+                                           }),
+                             derived<Edge>("barrier_backward_scaled",
+                                           [](const Edge& e, const TransitionGraph& g) {
+                                             return e.barrier_backward / g.energy_scale;
+                                           }),
+                         }};
+
+const Table<SearchRow> kSearches{
+    "searches",
+    {
+        column<SearchRow>("state", &SearchRow::state),
+        column<SearchRow>("mode", &SearchRow::mode),
+        column<SearchRow>("direction", &SearchRow::direction),
+        column<SearchRow>("verified", &SearchRow::verified),
+        column<SearchRow>("index", &SearchRow::index),
+        column<SearchRow>("iterations", &SearchRow::iterations),
+        {"status", Type::Text,
+         [](const SearchRow& r, const TransitionGraph&) {
+           return Cell(r.refused ? kRefusedRow + r.error : to_string(r.status));
+         },
+         [](SearchRow& r, Cell&& c) {
+           const std::string& text = std::get<std::string>(c);
+           r.refused = text.rfind(kRefusedRow, 0) == 0;
+           if (r.refused) r.error = text.substr(std::string(kRefusedRow).size());
+           else r.status = from_string<SearchStatus>(text);
+         }},
+        column<SearchRow>("energy", &SearchRow::energy),
+        column<SearchRow>("gradient_norm", &SearchRow::gradient_norm),
+        column<SearchRow>("seconds", &SearchRow::seconds),
+    }};
+
+const Table<PairSearch> kPairs{"pairs",
+                               {
+                                   column<PairSearch>("a", &PairSearch::a),
+                                   column<PairSearch>("b", &PairSearch::b),
+                                   text_of("status", &PairSearch::status),
+                                   text_of("seed_statuses", &PairSearch::seed_statuses),
+                                   column<PairSearch>("reached", &PairSearch::reached),
+                                   column<PairSearch>("verified", &PairSearch::verified),
+                                   column<PairSearch>("stages", &PairSearch::stages),
+                                   column<PairSearch>("saddle", &PairSearch::saddle),
+                                   column<PairSearch>("path_barrier", &PairSearch::path_barrier),
+                                   column<PairSearch>("reached_similarity", &PairSearch::reached_similarity),
+                                   column<PairSearch>("saddle_energy", &PairSearch::saddle_energy),
+                                   column<PairSearch>("seconds", &PairSearch::seconds),
+                               }};
+
+/// An attribute of the root group (after format and format_version). An
+/// optional one is left out when `get` gives std::monostate (not recorded),
+/// and `set` receives std::monostate when the file lacks it; a required one
+/// must be in the file.
+struct Attribute {
+  std::string name;
+  Type type;
+  std::function<Cell(const TransitionGraph&, const TransitionsFileInfo&)> get;
+  std::function<void(TransitionGraph&, TransitionsFileInfo&, Cell&&)> set;
+  bool optional = false;
+};
+
+template <class T>
+Attribute attribute(std::string name, T TransitionGraph::*m) {
+  return {std::move(name), type_of<T>(),
+          [m](const TransitionGraph& g, const TransitionsFileInfo&) { return to_cell(g.*m); },
+          [m](TransitionGraph& g, TransitionsFileInfo&, Cell&& c) { from_cell(std::move(c), g.*m); }};
+}
+template <class T>
+Attribute attribute(std::string name, T TransitionsFileInfo::*m) {
+  return {std::move(name), type_of<T>(),
+          [m](const TransitionGraph&, const TransitionsFileInfo& i) { return to_cell(i.*m); },
+          [m](TransitionGraph&, TransitionsFileInfo& i, Cell&& c) { from_cell(std::move(c), i.*m); }};
+}
+
+const std::vector<Attribute> kAttributes = {
+    attribute("knot", &TransitionGraph::knot),
+    attribute("dataset", &TransitionsFileInfo::dataset),
+    attribute("cut", &TransitionGraph::cut),
+    attribute("energy_scale", &TransitionGraph::energy_scale),
+    attribute("options", &TransitionsFileInfo::options),
+    attribute("complete", &TransitionsFileInfo::complete),
+    // optional: the experiment's files do not record it (states_searched < 0)
+    {"states_searched", Type::Int64,
+     [](const TransitionGraph&, const TransitionsFileInfo& i) {
+       return i.states_searched < 0 ? Cell() : Cell(std::int64_t{i.states_searched});
+     },
+     [](TransitionGraph&, TransitionsFileInfo& i, Cell&& c) {
+       i.states_searched = std::holds_alternative<std::monostate>(c) ? -1 : static_cast<int>(std::get<std::int64_t>(c));
+     },
+     true},
+};
+
+// ---------------------------------------------------------------------------
+// Walking the tables.
+
+void write_curves(hid_t g, const std::string& name, const std::vector<Cell>& cells) {
+  const hsize_t n = cells.empty() ? 0 : static_cast<hsize_t>(std::get<Points>(cells.front()).rows());
   std::vector<double> data;
-  data.reserve(curves.size() * n * 3);
-  for (const Points& p : curves) {
+  data.reserve(cells.size() * n * 3);
+  for (const Cell& c : cells) {
+    const Points& p = std::get<Points>(c);
     require(static_cast<hsize_t>(p.rows()) == n, "transitions file: curves of different vertex counts");
     for (Eigen::Index i = 0; i < p.rows(); ++i)
       for (int a = 0; a < 3; ++a) data.push_back(p(i, a));
   }
-  h5::write_doubles(g, name, {static_cast<hsize_t>(curves.size()), n, 3}, data.data());
+  h5::write_doubles(g, name, {static_cast<hsize_t>(cells.size()), n, 3}, data.data());
 }
 
-std::vector<Points> read_curves(hid_t g, const std::string& name) {
-  std::vector<hsize_t> shape;
-  const std::vector<double> data = h5::read_doubles(g, name, &shape);
-  if (shape.size() != 3 || shape[2] != 3) throw InputError("'" + name + "' is not an array of curves");
-  std::vector<Points> out(shape[0], Points(shape[1], 3));
-  size_t k = 0;
-  for (Points& p : out)
-    for (Eigen::Index i = 0; i < p.rows(); ++i)
-      for (int a = 0; a < 3; ++a) p(i, a) = data[k++];
+template <class T>
+std::vector<T> values(const std::vector<Cell>& cells) {
+  std::vector<T> out;
+  out.reserve(cells.size());
+  for (const Cell& c : cells) out.push_back(std::get<T>(c));
   return out;
 }
 
-template <class T, class F>
-std::vector<double> doubles(const std::vector<T>& v, F f) {
-  std::vector<double> out;
-  for (const T& x : v) out.push_back(f(x));
-  return out;
-}
-template <class T, class F>
-std::vector<std::int64_t> ints(const std::vector<T>& v, F f) {
-  std::vector<std::int64_t> out;
-  for (const T& x : v) out.push_back(f(x));
-  return out;
-}
-void put(hid_t g, const std::string& name, const std::vector<double>& v) {
-  h5::write_doubles(g, name, {v.size()}, v.data());
-}
-void put(hid_t g, const std::string& name, const std::vector<std::int64_t>& v) {
-  h5::write_int64(g, name, {v.size()}, v.data());
-}
-
-std::vector<Points> state_curves(const std::vector<TransitionState>& s) {
-  std::vector<Points> out;
-  for (const TransitionState& x : s) out.push_back(x.positions);
-  return out;
-}
-
-void write_states(hid_t file, const TransitionGraph& graph) {
-  const h5::Handle g = h5::create_group(file, "states");
-  const auto& s = graph.states;
-  put(g.id(), "energy", doubles(s, [](const TransitionState& x) { return x.energy; }));
-  put(g.id(), "cluster", ints(s, [](const TransitionState& x) { return x.cluster; }));
-  put(g.id(), "equilibrium", ints(s, [](const TransitionState& x) { return x.equilibrium; }));
-  write_curves(g.id(), "positions", state_curves(s));
-}
-
-void write_path(hid_t parent, const std::string& name, const std::vector<Points>& images,
-                const std::vector<double>& energies) {
-  const h5::Handle g = h5::create_group(parent, name);
-  write_curves(g.id(), "images", images);
-  put(g.id(), "energies", energies);
-}
-
-void write_saddles(hid_t file, const TransitionGraph& graph) {
-  const h5::Handle g = h5::create_group(file, "saddles");
-  const auto& s = graph.saddles;
-  using S = TransitionSaddle;
-  put(g.id(), "energy", doubles(s, [](const S& x) { return x.energy; }));
-  put(g.id(), "negative_eigenvalue", doubles(s, [](const S& x) { return x.negative_eigenvalue; }));
-  put(g.id(), "second_eigenvalue", doubles(s, [](const S& x) { return x.second_eigenvalue; }));
-  put(g.id(), "gradient_norm", doubles(s, [](const S& x) { return x.gradient_norm; }));
-  put(g.id(), "index", ints(s, [](const S& x) { return x.index; }));
-  put(g.id(), "from", ints(s, [](const S& x) { return x.from; }));
-  put(g.id(), "to", ints(s, [](const S& x) { return x.to; }));
-  put(g.id(), "saddle_image", ints(s, [](const S& x) { return x.saddle_image; }));
-  put(g.id(), "energy_from", doubles(s, [](const S& x) { return x.energy_from; }));
-  put(g.id(), "energy_to", doubles(s, [](const S& x) { return x.energy_to; }));
-  put(g.id(), "double_ended", ints(s, [](const S& x) { return x.double_ended ? 1 : 0; }));
-  std::vector<Points> pos;
-  for (const S& x : s) pos.push_back(x.positions);
-  write_curves(g.id(), "positions", pos);
-  for (size_t k = 0; k < s.size(); ++k) write_path(g.id(), "path_" + std::to_string(k), s[k].path, s[k].path_energies);
-}
-
-void write_edges(hid_t file, const TransitionGraph& graph) {
-  const h5::Handle g = h5::create_group(file, "edges");
-  const auto& e = graph.edges;
-  using E = TransitionEdge;
-  const double scale = graph.energy_scale;
-  put(g.id(), "from", ints(e, [](const E& x) { return x.from; }));
-  put(g.id(), "to", ints(e, [](const E& x) { return x.to; }));
-  put(g.id(), "saddle", ints(e, [](const E& x) { return x.saddle; }));
-  put(g.id(), "energy", doubles(e, [](const E& x) { return x.energy; }));
-  put(g.id(), "barrier_forward", doubles(e, [](const E& x) { return x.barrier_forward; }));
-  put(g.id(), "barrier_backward", doubles(e, [](const E& x) { return x.barrier_backward; }));
-  put(g.id(), "barrier_forward_scaled", doubles(e, [scale](const E& x) { return x.barrier_forward / scale; }));
-  put(g.id(), "barrier_backward_scaled", doubles(e, [scale](const E& x) { return x.barrier_backward / scale; }));
-}
-
-/// One row per search of every state.
-void write_searches(hid_t file, const TransitionGraph& graph) {
-  const h5::Handle g = h5::create_group(file, "searches");
-  std::vector<std::int64_t> state, mode, direction, verified, index, iterations;
-  std::vector<std::string> status;
-  std::vector<double> energy, gradient, seconds;
-  for (const StateSearches& s : graph.searches) {
-    if (!s.error.empty()) {
-      state.push_back(s.state);
-      mode.push_back(-1);
-      direction.push_back(0);
-      verified.push_back(0);
-      index.push_back(-1);
-      iterations.push_back(0);
-      status.push_back(kRefusedRow + s.error);
-      energy.push_back(0.0);
-      gradient.push_back(0.0);
-      seconds.push_back(s.seconds);
+/// The column `name` of `g`, stored as `type`.
+void write_cells(hid_t g, const std::string& name, Type type, const std::vector<Cell>& cells) {
+  switch (type) {
+    case Type::Int64: {
+      const auto v = values<std::int64_t>(cells);
+      h5::write_int64(g, name, {v.size()}, v.data());
+      break;
     }
-    for (const SaddleRecord& r : s.records) {
-      state.push_back(s.state);
-      mode.push_back(r.mode);
-      direction.push_back(r.direction);
-      verified.push_back(r.verified ? 1 : 0);
-      index.push_back(r.index);
-      iterations.push_back(r.iterations);
-      status.push_back(to_string(r.status));
-      energy.push_back(r.energy);
-      gradient.push_back(r.gradient_norm);
-      seconds.push_back(r.seconds);
+    case Type::Float64: {
+      const auto v = values<double>(cells);
+      h5::write_doubles(g, name, {v.size()}, v.data());
+      break;
+    }
+    case Type::Text: h5::write_strings(g, name, values<std::string>(cells)); break;
+    case Type::Curves: write_curves(g, name, cells); break;
+  }
+}
+
+template <class Row>
+void write_columns(hid_t g, const std::vector<Column<Row>>& columns, const std::vector<Row>& rows,
+                   const TransitionGraph& graph) {
+  for (const Column<Row>& c : columns) {
+    std::vector<Cell> cells;
+    cells.reserve(rows.size());
+    for (const Row& r : rows) cells.push_back(c.get(r, graph));
+    write_cells(g, c.name, c.type, cells);
+  }
+}
+
+template <class Row>
+h5::Handle write_table(hid_t file, const Table<Row>& table, const std::vector<Row>& rows,
+                       const TransitionGraph& graph) {
+  h5::Handle g = h5::create_group(file, table.group);
+  write_columns(g.id(), table.columns, rows, graph);
+  return g;
+}
+
+/// The column `name` of `g` as cells; `where` ("states/energy") names it in errors.
+std::vector<Cell> read_cells(hid_t g, const std::string& name, Type type, const std::string& where) {
+  if (!h5::exists(g, name)) throw InputError("the column '" + where + "' is missing");
+  std::vector<hsize_t> shape;
+  std::vector<Cell> out;
+  const auto one_dimensional = [&] {
+    if (shape.size() != 1) throw InputError("'" + where + "' is not a column");
+  };
+  switch (type) {
+    case Type::Int64:
+      for (const std::int64_t v : h5::read_int64(g, name, &shape)) out.emplace_back(v);
+      one_dimensional();
+      break;
+    case Type::Float64:
+      for (const double v : h5::read_doubles(g, name, &shape)) out.emplace_back(v);
+      one_dimensional();
+      break;
+    case Type::Text:
+      for (std::string& v : h5::read_strings(g, name)) out.emplace_back(std::move(v));
+      break;
+    case Type::Curves: {
+      const std::vector<double> data = h5::read_doubles(g, name, &shape);
+      if (shape.size() != 3 || shape[2] != 3) throw InputError("'" + where + "' is not an array of curves");
+      size_t k = 0;
+      for (hsize_t j = 0; j < shape[0]; ++j) {
+        Points p(static_cast<Eigen::Index>(shape[1]), 3);
+        for (Eigen::Index i = 0; i < p.rows(); ++i)
+          for (int a = 0; a < 3; ++a) p(i, a) = data[k++];
+        out.emplace_back(std::move(p));
+      }
+      break;
     }
   }
-  put(g.id(), "state", state);
-  put(g.id(), "mode", mode);
-  put(g.id(), "direction", direction);
-  put(g.id(), "verified", verified);
-  put(g.id(), "index", index);
-  put(g.id(), "iterations", iterations);
-  h5::write_strings(g.id(), "status", status);
-  put(g.id(), "energy", energy);
-  put(g.id(), "gradient_norm", gradient);
-  put(g.id(), "seconds", seconds);
+  return out;
 }
 
-/// One row per double-ended search.
-void write_pairs(hid_t file, const TransitionGraph& graph) {
-  const h5::Handle g = h5::create_group(file, "pairs");
-  const auto& p = graph.pairs;
-  using P = PairSearch;
-  put(g.id(), "a", ints(p, [](const P& x) { return x.a; }));
-  put(g.id(), "b", ints(p, [](const P& x) { return x.b; }));
-  std::vector<std::string> status;
-  for (const P& x : p) status.push_back(to_string(x.status));
-  h5::write_strings(g.id(), "status", status);
-  std::vector<std::string> seeds;
-  for (const P& x : p) seeds.push_back(to_string(x.seed_statuses));
-  h5::write_strings(g.id(), "seed_statuses", seeds);
-  put(g.id(), "reached", ints(p, [](const P& x) { return x.reached ? 1 : 0; }));
-  put(g.id(), "verified", ints(p, [](const P& x) { return x.verified ? 1 : 0; }));
-  put(g.id(), "stages", ints(p, [](const P& x) { return x.stages; }));
-  put(g.id(), "saddle", ints(p, [](const P& x) { return x.saddle; }));
-  put(g.id(), "path_barrier", doubles(p, [](const P& x) { return x.path_barrier; }));
-  put(g.id(), "reached_similarity", doubles(p, [](const P& x) { return x.reached_similarity; }));
-  put(g.id(), "saddle_energy", doubles(p, [](const P& x) { return x.saddle_energy; }));
-  put(g.id(), "seconds", doubles(p, [](const P& x) { return x.seconds; }));
+/// The rows of `g` (named `where` in errors): every column must be there,
+/// all of one length.
+template <class Row>
+std::vector<Row> read_columns(hid_t g, const std::vector<Column<Row>>& columns, const std::string& where) {
+  std::vector<Row> rows;
+  const Column<Row>* first = nullptr;
+  for (const Column<Row>& c : columns) {
+    if (!c.set) {  // derived: only required
+      if (!h5::exists(g, c.name)) throw InputError("the column '" + where + "/" + c.name + "' is missing");
+      continue;
+    }
+    std::vector<Cell> cells = read_cells(g, c.name, c.type, where + "/" + c.name);
+    if (!first) {
+      first = &c;
+      rows.resize(cells.size());
+    } else if (cells.size() != rows.size()) {
+      throw InputError(where + ": column '" + c.name + "' has " + std::to_string(cells.size()) + " rows, '" +
+                       first->name + "' " + std::to_string(rows.size()));
+    }
+    for (size_t k = 0; k < cells.size(); ++k) c.set(rows[k], std::move(cells[k]));
+  }
+  return rows;
+}
+
+template <class Row>
+std::vector<Row> read_table(hid_t file, const Table<Row>& table, h5::Handle* group = nullptr) {
+  h5::Handle g = h5::open_group(file, table.group);
+  std::vector<Row> rows = read_columns(g.id(), table.columns, table.group);
+  if (group) *group = std::move(g);
+  return rows;
+}
+
+std::vector<PathRow> path_rows(const std::vector<Points>& images, const std::vector<double>& energies) {
+  require(images.size() == energies.size(), "transitions file: one energy per path image");
+  std::vector<PathRow> rows;
+  for (size_t k = 0; k < images.size(); ++k) rows.push_back({images[k], energies[k]});
+  return rows;
+}
+
+std::string path_group(size_t saddle) { return "path_" + std::to_string(saddle); }
+
+std::vector<SearchRow> search_rows(const TransitionGraph& graph) {
+  std::vector<SearchRow> rows;
+  for (const StateSearches& s : graph.searches) {
+    if (!s.error.empty()) {
+      SearchRow r;
+      r.state = s.state;
+      r.refused = true;
+      r.error = s.error;
+      r.mode = -1;
+      r.direction = 0;
+      r.verified = false;
+      r.index = -1;
+      r.iterations = 0;
+      r.energy = r.gradient_norm = 0.0;
+      r.seconds = s.seconds;
+      rows.push_back(std::move(r));
+    }
+    for (const SaddleRecord& x : s.records) {
+      SearchRow r;
+      static_cast<SaddleRecord&>(r) = x;
+      r.state = s.state;
+      rows.push_back(std::move(r));
+    }
+  }
+  return rows;
+}
+
+/// The searches/ rows back as one StateSearches per state (in the order of
+/// their first row); the record members the file does not keep stay default.
+void add_search_rows(TransitionGraph& g, std::vector<SearchRow>&& rows) {
+  for (size_t j = 0; j < rows.size(); ++j) {
+    SearchRow& row = rows[j];
+    if (row.state < 0 || row.state >= static_cast<int>(g.states.size()))
+      throw InputError("searches: a state index out of range");
+    if (g.searches.empty() || g.searches.back().state != row.state) {
+      g.searches.emplace_back();
+      g.searches.back().state = row.state;
+      g.searches.back().energy = g.states[static_cast<size_t>(row.state)].energy;
+    }
+    StateSearches& out = g.searches.back();
+    if (row.refused) {
+      if (row.mode >= 0)
+        throw InputError("searches: row " + std::to_string(j) + " is a refused start with mode " +
+                         std::to_string(row.mode));
+      out.error = row.error;
+      out.seconds = row.seconds;
+      continue;
+    }
+    out.seconds += row.seconds;
+    out.records.push_back(std::move(static_cast<SaddleRecord&>(row)));
+  }
 }
 
 /// Removes the temporary unless committed.
@@ -190,190 +450,59 @@ struct Temporary {
   }
 };
 
+void set_cell_attr(hid_t obj, const std::string& name, const Cell& v) {
+  if (const auto* i = std::get_if<std::int64_t>(&v)) h5::set_attr(obj, name, *i);
+  else if (const auto* x = std::get_if<double>(&v)) h5::set_attr(obj, name, *x);
+  else if (const auto* t = std::get_if<std::string>(&v)) h5::set_attr(obj, name, *t);
+}
+
+Cell get_cell_attr(hid_t obj, const Attribute& a) {
+  if (!h5::has_attr(obj, a.name)) {
+    if (!a.optional) throw InputError("the attribute '" + a.name + "' is missing");
+    return {};
+  }
+  switch (a.type) {
+    case Type::Int64: return h5::get_attr_int(obj, a.name);
+    case Type::Float64: return h5::get_attr_double(obj, a.name);
+    case Type::Text: return h5::get_attr_string(obj, a.name);
+    case Type::Curves: break;
+  }
+  return {};
+}
+
 }  // namespace
 
 void write_transitions(const std::string& path, const TransitionGraph& graph, const std::string& dataset,
                        const std::string& options, bool complete, int states_searched) {
   h5::quiet();
   check_writable(path);
+  const TransitionsFileInfo info{dataset, options, complete, states_searched};
   Temporary tmp{temporary_path(path)};
   {
     const h5::Handle f = h5::create_file(tmp.path);
     h5::set_attr(f.id(), "format", std::string(kFormat));
     h5::set_attr(f.id(), "format_version", kFormatVersion);
-    h5::set_attr(f.id(), "knot", graph.knot);
-    h5::set_attr(f.id(), "dataset", dataset);
-    h5::set_attr(f.id(), "cut", graph.cut);
-    h5::set_attr(f.id(), "energy_scale", graph.energy_scale);
-    h5::set_attr(f.id(), "options", options);
-    h5::set_attr(f.id(), "complete", static_cast<std::int64_t>(complete ? 1 : 0));
-    if (states_searched >= 0) h5::set_attr(f.id(), "states_searched", static_cast<std::int64_t>(states_searched));
-    write_states(f.id(), graph);
-    write_saddles(f.id(), graph);
-    write_edges(f.id(), graph);
-    write_searches(f.id(), graph);
-    write_pairs(f.id(), graph);
+    for (const Attribute& a : kAttributes) {
+      const Cell v = a.get(graph, info);
+      require(!std::holds_alternative<std::monostate>(v) || a.optional,
+              "transitions file: the attribute '" + a.name + "' is not set");
+      set_cell_attr(f.id(), a.name, v);
+    }
+    write_table(f.id(), kStates, graph.states, graph);
+    {
+      const h5::Handle g = write_table(f.id(), kSaddles, graph.saddles, graph);
+      for (size_t k = 0; k < graph.saddles.size(); ++k) {
+        const h5::Handle p = h5::create_group(g.id(), path_group(k));
+        write_columns(p.id(), kPath, path_rows(graph.saddles[k].path, graph.saddles[k].path_energies), graph);
+      }
+    }
+    write_table(f.id(), kEdges, graph.edges, graph);
+    write_table(f.id(), kSearches, search_rows(graph), graph);
+    write_table(f.id(), kPairs, graph.pairs, graph);
   }
   atomic_replace(tmp.path, path);
   tmp.committed = true;
 }
-
-namespace {
-
-void read_states(hid_t file, TransitionGraph& g) {
-  const h5::Handle s = h5::open_group(file, "states");
-  const std::vector<double> energy = h5::read_doubles(s.id(), "energy");
-  const std::vector<std::int64_t> cluster = h5::read_int64(s.id(), "cluster");
-  const std::vector<std::int64_t> eq = h5::read_int64(s.id(), "equilibrium");
-  const std::vector<Points> pos = read_curves(s.id(), "positions");
-  if (cluster.size() != energy.size() || eq.size() != energy.size() || pos.size() != energy.size())
-    throw InputError("states: columns of different lengths");
-  for (size_t k = 0; k < energy.size(); ++k)
-    g.states.push_back({static_cast<int>(cluster[k]), static_cast<int>(eq[k]), energy[k], pos[k]});
-}
-
-void read_saddles(hid_t file, TransitionGraph& g) {
-  const h5::Handle s = h5::open_group(file, "saddles");
-  const std::vector<double> energy = h5::read_doubles(s.id(), "energy");
-  const std::vector<double> neg = h5::read_doubles(s.id(), "negative_eigenvalue");
-  const std::vector<double> second = h5::read_doubles(s.id(), "second_eigenvalue");
-  const std::vector<double> grad = h5::read_doubles(s.id(), "gradient_norm");
-  const std::vector<std::int64_t> index = h5::read_int64(s.id(), "index");
-  const std::vector<std::int64_t> from = h5::read_int64(s.id(), "from"), to = h5::read_int64(s.id(), "to");
-  const std::vector<std::int64_t> at = h5::read_int64(s.id(), "saddle_image");
-  const std::vector<double> energy_from = h5::read_doubles(s.id(), "energy_from");
-  const std::vector<double> energy_to = h5::read_doubles(s.id(), "energy_to");
-  const std::vector<std::int64_t> two = h5::read_int64(s.id(), "double_ended");
-  const std::vector<Points> pos = energy.empty() ? std::vector<Points>{} : read_curves(s.id(), "positions");
-  const size_t k = energy.size();
-  if (neg.size() != k || second.size() != k || grad.size() != k || index.size() != k || from.size() != k ||
-      to.size() != k || at.size() != k || pos.size() != k || energy_to.size() != k || energy_from.size() != k || two.size() != k)
-    throw InputError("saddles: columns of different lengths");
-  for (size_t j = 0; j < k; ++j) {
-    TransitionSaddle t;
-    t.energy = energy[j];
-    t.negative_eigenvalue = neg[j];
-    t.second_eigenvalue = second[j];
-    t.gradient_norm = grad[j];
-    t.index = static_cast<int>(index[j]);
-    t.from = static_cast<int>(from[j]);
-    t.to = static_cast<int>(to[j]);
-    t.saddle_image = static_cast<int>(at[j]);
-    t.energy_from = energy_from[j];
-    t.energy_to = energy_to[j];
-    t.double_ended = two[j] != 0;
-    t.positions = pos[j];
-    const h5::Handle p = h5::open_group(s.id(), "path_" + std::to_string(j));
-    t.path = read_curves(p.id(), "images");
-    t.path_energies = h5::read_doubles(p.id(), "energies");
-    if (t.path.size() != t.path_energies.size() || t.saddle_image < 0 ||
-        t.saddle_image >= static_cast<int>(t.path.size()))
-      throw InputError("saddles: path " + std::to_string(j) + " is inconsistent");
-    g.saddles.push_back(std::move(t));
-  }
-}
-
-void read_edges(hid_t file, TransitionGraph& g) {
-  const h5::Handle e = h5::open_group(file, "edges");
-  const std::vector<std::int64_t> from = h5::read_int64(e.id(), "from"), to = h5::read_int64(e.id(), "to");
-  const std::vector<std::int64_t> saddle = h5::read_int64(e.id(), "saddle");
-  const std::vector<double> energy = h5::read_doubles(e.id(), "energy");
-  const std::vector<double> fw = h5::read_doubles(e.id(), "barrier_forward");
-  const std::vector<double> bw = h5::read_doubles(e.id(), "barrier_backward");
-  const size_t k = from.size();
-  if (to.size() != k || saddle.size() != k || energy.size() != k || fw.size() != k || bw.size() != k)
-    throw InputError("edges: columns of different lengths");
-  const auto states = static_cast<std::int64_t>(g.states.size());
-  const auto saddles = static_cast<std::int64_t>(g.saddles.size());
-  for (size_t j = 0; j < k; ++j) {
-    if (from[j] < 0 || from[j] >= states || to[j] < 0 || to[j] >= states || saddle[j] < 0 || saddle[j] >= saddles)
-      throw InputError("edges: an index out of range");
-    g.edges.push_back({static_cast<int>(from[j]), static_cast<int>(to[j]), static_cast<int>(saddle[j]), energy[j],
-                       fw[j], bw[j]});
-  }
-}
-
-void read_pairs(hid_t file, TransitionGraph& g) {
-  const h5::Handle p = h5::open_group(file, "pairs");
-  const std::vector<std::int64_t> a = h5::read_int64(p.id(), "a"), b = h5::read_int64(p.id(), "b");
-  const std::vector<std::string> status = h5::read_strings(p.id(), "status");
-  const std::vector<std::string> seeds = h5::read_strings(p.id(), "seed_statuses");
-  const std::vector<std::int64_t> reached = h5::read_int64(p.id(), "reached");
-  const std::vector<std::int64_t> verified = h5::read_int64(p.id(), "verified");
-  const std::vector<std::int64_t> stages = h5::read_int64(p.id(), "stages");
-  const std::vector<std::int64_t> saddle = h5::read_int64(p.id(), "saddle");
-  const std::vector<double> barrier = h5::read_doubles(p.id(), "path_barrier");
-  const std::vector<double> reach = h5::read_doubles(p.id(), "reached_similarity");
-  const std::vector<double> energy = h5::read_doubles(p.id(), "saddle_energy");
-  const std::vector<double> seconds = h5::read_doubles(p.id(), "seconds");
-  const size_t k = a.size();
-  for (const size_t m : {b.size(), status.size(), seeds.size(), reached.size(), verified.size(), stages.size(), saddle.size(),
-                         barrier.size(), reach.size(), energy.size(), seconds.size()})
-    if (m != k) throw InputError("pairs: columns of different lengths");
-  for (size_t j = 0; j < k; ++j) {
-    PairSearch x;
-    x.a = static_cast<int>(a[j]);
-    x.b = static_cast<int>(b[j]);
-    x.status = from_string<SearchStatus>(status[j]);
-    x.seed_statuses = from_string<std::vector<SearchStatus>>(seeds[j]);
-    x.reached = reached[j] != 0;
-    x.verified = verified[j] != 0;
-    x.stages = static_cast<int>(stages[j]);
-    x.saddle = static_cast<int>(saddle[j]);
-    x.path_barrier = barrier[j];
-    x.reached_similarity = reach[j];
-    x.saddle_energy = energy[j];
-    x.seconds = seconds[j];
-    if (x.saddle >= static_cast<int>(g.saddles.size())) throw InputError("pairs: a saddle index out of range");
-    g.pairs.push_back(x);
-  }
-}
-
-/// The searches/ rows back as one StateSearches per state (in the order of
-/// their first row); the columns the file does not keep stay default.
-void read_searches(hid_t file, TransitionGraph& g) {
-  const h5::Handle s = h5::open_group(file, "searches");
-  const std::vector<std::int64_t> state = h5::read_int64(s.id(), "state"), mode = h5::read_int64(s.id(), "mode");
-  const std::vector<std::int64_t> direction = h5::read_int64(s.id(), "direction");
-  const std::vector<std::int64_t> verified = h5::read_int64(s.id(), "verified"), index = h5::read_int64(s.id(), "index");
-  const std::vector<std::int64_t> iterations = h5::read_int64(s.id(), "iterations");
-  const std::vector<std::string> status = h5::read_strings(s.id(), "status");
-  const std::vector<double> energy = h5::read_doubles(s.id(), "energy"), gradient = h5::read_doubles(s.id(), "gradient_norm");
-  const std::vector<double> seconds = h5::read_doubles(s.id(), "seconds");
-  const size_t k = state.size();
-  for (const size_t m : {mode.size(), direction.size(), verified.size(), index.size(), iterations.size(), status.size(),
-                         energy.size(), gradient.size(), seconds.size()})
-    if (m != k) throw InputError("searches: columns of different lengths");
-  for (size_t j = 0; j < k; ++j) {
-    if (state[j] < 0 || state[j] >= static_cast<std::int64_t>(g.states.size()))
-      throw InputError("searches: a state index out of range");
-    if (g.searches.empty() || g.searches.back().state != state[j]) {
-      g.searches.emplace_back();
-      g.searches.back().state = static_cast<int>(state[j]);
-      g.searches.back().energy = g.states[static_cast<size_t>(state[j])].energy;
-    }
-    StateSearches& out = g.searches.back();
-    if (mode[j] < 0 && status[j].rfind(kRefusedRow, 0) == 0) {
-      out.error = status[j].substr(std::string(kRefusedRow).size());
-      out.seconds = seconds[j];
-      continue;
-    }
-    SaddleRecord r;
-    r.mode = static_cast<int>(mode[j]);
-    r.direction = static_cast<int>(direction[j]);
-    r.verified = verified[j] != 0;
-    r.index = static_cast<int>(index[j]);
-    r.iterations = static_cast<int>(iterations[j]);
-    r.status = from_string<SearchStatus>(status[j]);
-    r.energy = energy[j];
-    r.gradient_norm = gradient[j];
-    r.seconds = seconds[j];
-    out.seconds += seconds[j];
-    out.records.push_back(std::move(r));
-  }
-}
-
-}  // namespace
 
 TransitionGraph read_transitions(const std::string& path, TransitionsFileInfo& info) {
   h5::quiet();
@@ -381,23 +510,42 @@ TransitionGraph read_transitions(const std::string& path, TransitionsFileInfo& i
   try {
     if (!h5::has_attr(f.id(), "format") || h5::get_attr_string(f.id(), "format") != kFormat)
       throw InputError("not a transitions file");
-    if (h5::get_attr_int(f.id(), "format_version") > kFormatVersion)
-      throw InputError("written by a newer version (format_version " +
-                       std::to_string(h5::get_attr_int(f.id(), "format_version")) + ")");
+    if (!h5::has_attr(f.id(), "format_version")) throw InputError("the attribute 'format_version' is missing");
+    const std::int64_t version = h5::get_attr_int(f.id(), "format_version");
+    if (version != kFormatVersion)
+      throw InputError("transitions format version " + std::to_string(version) + ", expected " +
+                       std::to_string(kFormatVersion));
     TransitionGraph g;
-    g.knot = h5::get_attr_string(f.id(), "knot");
-    g.cut = h5::get_attr_double(f.id(), "cut");
-    g.energy_scale = h5::get_attr_double(f.id(), "energy_scale");
-    info.dataset = h5::get_attr_string(f.id(), "dataset");
-    info.options = h5::get_attr_string(f.id(), "options");
-    info.complete = h5::get_attr_int(f.id(), "complete") != 0;
-    info.states_searched =
-        h5::has_attr(f.id(), "states_searched") ? static_cast<int>(h5::get_attr_int(f.id(), "states_searched")) : -1;
-    read_states(f.id(), g);
-    read_saddles(f.id(), g);
-    read_edges(f.id(), g);
-    read_searches(f.id(), g);
-    read_pairs(f.id(), g);
+    info = TransitionsFileInfo{};
+    for (const Attribute& a : kAttributes) a.set(g, info, get_cell_attr(f.id(), a));
+
+    g.states = read_table(f.id(), kStates);
+
+    h5::Handle saddles;
+    g.saddles = read_table(f.id(), kSaddles, &saddles);
+    for (size_t j = 0; j < g.saddles.size(); ++j) {
+      TransitionSaddle& t = g.saddles[j];
+      const std::string name = path_group(j);
+      const h5::Handle p = h5::open_group(saddles.id(), name);
+      for (PathRow& r : read_columns(p.id(), kPath, kSaddles.group + "/" + name)) {
+        t.path.push_back(std::move(r.image));
+        t.path_energies.push_back(r.energy);
+      }
+      if (t.saddle_image < 0 || t.saddle_image >= static_cast<int>(t.path.size()))
+        throw InputError("saddles: path " + std::to_string(j) + " is inconsistent");
+    }
+
+    g.edges = read_table(f.id(), kEdges);
+    const int states = static_cast<int>(g.states.size()), saddle_count = static_cast<int>(g.saddles.size());
+    for (const TransitionEdge& e : g.edges)
+      if (e.from < 0 || e.from >= states || e.to < 0 || e.to >= states || e.saddle < 0 || e.saddle >= saddle_count)
+        throw InputError("edges: an index out of range");
+
+    add_search_rows(g, read_table(f.id(), kSearches));
+
+    g.pairs = read_table(f.id(), kPairs);
+    for (const PairSearch& x : g.pairs)
+      if (x.saddle >= saddle_count) throw InputError("pairs: a saddle index out of range");
     return g;
   } catch (const InputError& e) {
     throw InputError(path + ": " + e.what());
@@ -419,12 +567,12 @@ void write_path_h5(const std::string& path, const std::string& knot, const std::
   Temporary tmp{temporary_path(path)};
   {
     const h5::Handle f = h5::create_file(tmp.path);
-    h5::set_attr(f.id(), "format", std::string("elastic-knots-path"));
-    h5::set_attr(f.id(), "format_version", kFormatVersion);
+    h5::set_attr(f.id(), "format", std::string(kPathFormat));
+    h5::set_attr(f.id(), "format_version", kPathFormatVersion);
     h5::set_attr(f.id(), "knot", knot);
-    write_curves(f.id(), "images", images);
-    put(f.id(), "energies", energies);
-    put(f.id(), "saddle_images", std::vector<std::int64_t>(saddle_images.begin(), saddle_images.end()));
+    write_columns(f.id(), kPath, path_rows(images, energies), TransitionGraph{});
+    const std::vector<std::int64_t> at(saddle_images.begin(), saddle_images.end());
+    h5::write_int64(f.id(), "saddle_images", {at.size()}, at.data());
   }
   atomic_replace(tmp.path, path);
   tmp.committed = true;
