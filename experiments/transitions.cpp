@@ -269,8 +269,8 @@ void puzzle_barriers(const Args& a, const TransitionRunOptions& r, results::Tran
              c.connected ? Csv::num(c.barrier_forward_scaled) : "", c.connected ? Csv::num(c.barrier_backward_scaled) : "",
              c.upper_bound_scaled ? Csv::num(*c.upper_bound_scaled) : "", Csv::num(c.seconds, 4), statuses,
              g.states.empty() ? "" : graph, source});
-    ++*sum.puzzle_pairs;
-    *sum.puzzles_connected += c.connected;
+    ++sum.puzzle_pairs;
+    sum.puzzles_connected += c.connected;
   }
   csv.commit();
 }
@@ -305,8 +305,8 @@ void connect_graph_pairs(const Args& a, const TransitionRunOptions& r, const Tra
              std::to_string(x.attempts), std::to_string(x.chain.size()),
              x.connected ? Csv::num(x.barrier_forward_scaled) : "", x.connected ? Csv::num(x.barrier_backward_scaled) : "",
              Csv::num(x.seconds, 4), statuses});
-    *sum.graph_pairs_connected_before += before;
-    *sum.graph_pairs_connected_after += x.connected;
+    sum.graph_pairs_connected_before += before;
+    sum.graph_pairs_connected_after += x.connected;
   }
   write_transitions(a.out + "/transitions_4_1_connected.h5", c, input, "connected " + std::to_string(o.max_searches),
                     true);

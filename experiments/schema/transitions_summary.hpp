@@ -61,15 +61,15 @@ struct TransitionsSummary {
   std::vector<TransitionEdgeSummary> edge_list;
   std::vector<PairSummary> pair_list;
   /// [1] puzzle pairs (../puzzles/puzzles.csv) that connect_states() was
-  /// run on (puzzle_barriers.csv; absent before)
-  std::optional<int> puzzle_pairs;
-  std::optional<int> puzzles_connected;  ///< [1] of them, joined by a chain of verified saddles (absent before)
+  /// run on (puzzle_barriers.csv)
+  int puzzle_pairs = 0;
+  int puzzles_connected = 0;  ///< [1] of them, joined by a chain of verified saddles
   /// [1] of the double-ended pairs (pair_list), those joined by a chain of
-  /// the graph's edges (graph_pairs.csv; absent before)
-  std::optional<int> graph_pairs_connected_before;
+  /// the graph's edges (graph_pairs.csv)
+  int graph_pairs_connected_before = 0;
   /// [1] of them, joined after connect_states() on the grown graph
-  /// (transitions_4_1_connected.h5; absent before)
-  std::optional<int> graph_pairs_connected_after;
+  /// (transitions_4_1_connected.h5)
+  int graph_pairs_connected_after = 0;
   double seconds = 0.0;               ///< [s] the whole run
 };
 EK_JSON_FIELDS(TransitionsSummary, scale, knot, cut, modes, states, states_searched, states_refused, new_states,
