@@ -233,7 +233,7 @@ TEST(Relax, DefaultAndPaperNewtonOptionsReachStableEquilibriaOfTheSameKnot) {
     start.max_iterations = 0;  // the input's energy
     const double E0 = relax(c.curve, start).energy.total;
     RelaxOptions paper;
-    paper.newton = NewtonOptions::paper();
+    paper.newton = NewtonMethodOptions::paper();
     RelaxOptions defaults;
     std::vector<RelaxResult> results;
     for (const RelaxOptions* o : {&paper, &defaults}) {

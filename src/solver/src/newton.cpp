@@ -36,8 +36,8 @@ std::string to_string(HessianMode mode) {
   return "unknown";
 }
 
-NewtonOptions NewtonOptions::paper() {
-  NewtonOptions o;
+NewtonMethodOptions NewtonMethodOptions::paper() {
+  NewtonMethodOptions o;
   o.hessian = HessianMode::Exact;
   o.remove_rigid_motions = false;
   return o;
@@ -47,6 +47,10 @@ void NewtonOptions::validate() const {
   require(gradient_tolerance > 0.0, "NewtonOptions: gradient_tolerance must be positive");
   require(max_iterations >= 0, "NewtonOptions: max_iterations must be >= 0");
   require(lambda_min > 0.0 && std::isfinite(lambda_min), "NewtonOptions: lambda_min must be positive");
+  NewtonMethodOptions::validate();
+}
+
+void NewtonMethodOptions::validate() const {
   require(shift_epsilon > 0.0, "NewtonOptions: shift_epsilon must be positive");
   require(shift_growth > 1.0, "NewtonOptions: shift_growth must be > 1");
   require(armijo > 0.0 && armijo < 0.5, "NewtonOptions: armijo must be in (0, 0.5)");

@@ -85,7 +85,7 @@ ContactOptions contact_options(const ResolvedModel& model, const RelaxOptions& o
 }
 
 NewtonOptions newton_options(const RelaxOptions& options, const ResolvedModel& model, double lambda_min) {
-  NewtonOptions no = options.newton;
+  NewtonOptions no(options.newton);
   no.gradient_tolerance = model.tolerance;
   no.max_iterations = options.max_iterations;
   no.stop_at_critical_point = options.stop_at_critical_point;
@@ -208,7 +208,7 @@ RelaxOptions with_method(RelaxOptions o, const std::string& name) {
   if (name == "exact") o.newton.hessian = HessianMode::Exact;
   if (name == "paper") {
     const bool verbose = o.newton.verbose, trace = o.newton.record_trace;
-    o.newton = NewtonOptions::paper();
+    o.newton = NewtonMethodOptions::paper();
     o.newton.verbose = verbose;
     o.newton.record_trace = trace;
   }

@@ -31,7 +31,7 @@ KnotSystem::KnotSystem(const Points& x, const VecX& rest, const RelaxOptions& op
   impl_->contact.update(x);
   require_input(impl_->contact.min_distance() > 0.0, "the curve touches itself");
   impl_->objective = std::make_unique<KnotObjective>(impl_->rod, impl_->contact, nullptr, options.max_tangent_rotation);
-  newton_ = options.newton;
+  newton_ = NewtonOptions(options.newton);
   newton_.gradient_tolerance = model.tolerance;
   newton_.max_iterations = options.max_iterations;
   newton_.stop_at_critical_point = options.stop_at_critical_point;

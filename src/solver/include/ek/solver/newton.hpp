@@ -52,13 +52,10 @@ enum class HessianMode {
 };
 std::string to_string(HessianMode mode);  ///< "exact", "hybrid"
 
-struct NewtonOptions {
-  double gradient_tolerance = 1e-8;  ///< [energy/length] stop when ||g||₂ <= this (and H is PSD)
-  int max_iterations = 1000;         ///< [1] Newton iterations
-  /// [energy/length²] λ_min: smallest nonzero eigenvalue of the rod Hessian
-  /// in a straight configuration (the caller provides it). The base shift is
-  /// shift_epsilon·λ_min.
-  double lambda_min = 1.0;
+/// How Newton's method steps: every setting but the solve's goal (its
+/// tolerance, iteration cap, λ_min and whether to stop at a saddle, which
+/// NewtonOptions adds). RelaxOptions holds these; relax() adds the goal.
+struct NewtonMethodOptions {
   double shift_epsilon = 1e-4;      ///< [1] ε of the paper
   double shift_growth = 10.0;       ///< [1] factor applied to the shift after a failed factorisation
   /// Start each iteration's shift search one factor shift_growth below the
@@ -97,9 +94,6 @@ struct NewtonOptions {
   /// on 8_1, 40 lattice samples: 2 clusters with 16, 4 without).
   double max_expansion = 1.0;
   double expansion_ratio = 0.75;    ///< [1] see max_expansion
-  /// Report converged-unstable at a saddle instead of leaving it along a
-  /// direction of negative curvature.
-  bool stop_at_critical_point = false;
   int max_saddle_escapes = 50;      ///< [1]
   CholeskyOptions cholesky;         ///< factorisation mode and ordering reuse (cholesky.hpp)
   /// Keep an IterationRecord per iteration (NewtonSolver::trace()).
@@ -107,12 +101,31 @@ struct NewtonOptions {
   /// Print each iteration's record to stderr (iteration, energy, ||g||,
   /// shift, collision-free bound, accepted step, pattern changes).
   bool verbose = false;
-  void validate() const;
+  void validate() const;  ///< std::invalid_argument for impossible values
 
   /// The paper's method: exact Hessian in every iteration, no rigid-motion
   /// removal (the shift alone suppresses rigid motions), warm-started shift
   /// search.
-  static NewtonOptions paper();
+  static NewtonMethodOptions paper();
+};
+
+/// One Newton solve: the method and its goal.
+struct NewtonOptions : NewtonMethodOptions {
+  double gradient_tolerance = 1e-8;  ///< [energy/length] stop when ||g||₂ <= this (and H is PSD)
+  int max_iterations = 1000;         ///< [1] Newton iterations
+  /// [energy/length²] λ_min: smallest nonzero eigenvalue of the rod Hessian
+  /// in a straight configuration (the caller provides it). The base shift is
+  /// shift_epsilon·λ_min.
+  double lambda_min = 1.0;
+  /// Report converged-unstable at a saddle instead of leaving it along a
+  /// direction of negative curvature.
+  bool stop_at_critical_point = false;
+  NewtonOptions() = default;
+  /// `method` with the default goal.
+  explicit NewtonOptions(const NewtonMethodOptions& method) : NewtonMethodOptions(method) {}
+  void validate() const;  ///< std::invalid_argument for impossible values
+  /// The paper's method with the default goal.
+  static NewtonOptions paper() { return NewtonOptions(NewtonMethodOptions::paper()); }
 };
 
 /// Timings and counters of a minimisation.

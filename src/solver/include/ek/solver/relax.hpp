@@ -105,7 +105,10 @@ struct RelaxOptions {
   bool stop_at_critical_point = false;  ///< report converged-unstable instead of leaving saddles
   bool check_topology = true;         ///< compare the Alexander polynomial of input and result
   bool smallest_eigenvalue = false;   ///< also compute the smallest non-rigid eigenvalue of H (stiffness)
-  NewtonOptions newton;               ///< shift ε, Armijo constant, ... (tolerance, iterations, λ_min are set from the fields above)
+  /// How Newton's method steps (shift ε, Hessian, Armijo constant, ...);
+  /// relax() adds the goal: the tolerance, iteration cap and
+  /// stop_at_critical_point above, and λ_min of the straight rod.
+  NewtonMethodOptions newton;
   /// Throws InputError for impossible values (non-positive radius, ...).
   void validate() const;
 };
