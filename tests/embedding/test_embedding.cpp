@@ -68,7 +68,7 @@ TEST(Embedding, TiltedBraidCoilIsAnIsotopyOfTheFlatCoil) {
     // [units of R], and the crossings reach radii R ± h (h = 0.5 spacings);
     // R is the middle of the radii, all to 2% (the resampling)
     const VecX r = previous.leftCols(2).rowwise().norm();
-    const double R = 0.5 * (r.maxCoeff() + r.minCoeff()), delta = o.strand_spacing;
+    const double R = 0.5 * (r.maxCoeff() + r.minCoeff()), delta = *o.strand_spacing;
     const double height = previous.col(2).maxCoeff() - previous.col(2).minCoeff();
     EXPECT_NEAR(height / R, (s - 1) * delta, 0.02 * (s - 1) * delta) << name;
     EXPECT_NEAR(0.5 * (r.maxCoeff() - r.minCoeff()) / R, 0.5 * delta, 0.02 * 0.5 * delta) << name;
@@ -150,7 +150,7 @@ TEST(Embedding, BraidCylinderIsAnIsotopyOfTheCoil) {
       ASSERT_EQ(max_step(previous, e.points - previous, topology, co), 1.0) << name << " at step " << step;
       previous = e.points;
     }
-    o.strand_spacing = 0.0;  // the default: one letter slot's arc
+    o.strand_spacing.reset();  // the default: one letter slot's arc
     EXPECT_LT((embed_knot(k, EmbeddingSource::Braid, o).points - previous).norm(), 1e-9) << name;
     EXPECT_EQ(alexander(previous), alexander(*k.pd)) << name;
   }

@@ -59,7 +59,7 @@ Points to_points(const std::vector<Vec3>& pts) {
 Points coil_layout(const BraidWord& word, const EmbeddingOptions& o) {
   const int s = word.strands, L = word.length();
   const double R = 1.0, slot = 2.0 * M_PI * R / L;
-  const double delta = o.strand_spacing > 0.0 ? o.strand_spacing : std::min(0.5 * slot, 0.6 * R / s);
+  const double delta = o.strand_spacing.value_or(std::min(0.5 * slot, 0.6 * R / s));
   require_input(delta * (s - 1) < 1.8 * R, "braid embedding: strand spacing too large for the coil radius");
   const double h = o.crossing_height * delta;
   require_input(std::isfinite(o.braid_tilt), "braid embedding: tilt must be finite");
@@ -82,7 +82,7 @@ Points coil_layout(const BraidWord& word, const EmbeddingOptions& o) {
 Points cylinder_points(const BraidWord& word, const EmbeddingOptions& o, double h) {
   const int s = word.strands, L = word.length();
   const double R = 1.0;
-  const double delta = o.strand_spacing > 0.0 ? o.strand_spacing : 2.0 * M_PI * R / L;
+  const double delta = o.strand_spacing.value_or(2.0 * M_PI * R / L);
   const auto cosine_step = [](double u) { return 0.5 * (1.0 - std::cos(M_PI * u)); };
   std::vector<Vec3> pts;
   for (const StrandSample& q : strand_walk(word, o.samples_per_letter, cosine_step)) {

@@ -19,6 +19,8 @@ void validate(const EmbeddingOptions& o) {
   require_input(o.vertices >= 4, "embedding: need at least 4 vertices, got " + std::to_string(o.vertices));
   require_input(o.edge_length > 0.0 && std::isfinite(o.edge_length), "embedding: edge length must be positive");
   require_input(o.crossing_height > 0.0, "embedding: crossing height must be positive");
+  require_input(!o.strand_spacing || (*o.strand_spacing > 0.0 && std::isfinite(*o.strand_spacing)),
+                "embedding: the strand spacing must be positive");
   require_input(o.pd_crossing_height > 0.0, "embedding: PD crossing height must be positive");
   require_input(o.samples_per_letter >= 4 && o.samples_per_piece >= 2, "embedding: too few dense samples");
 }

@@ -29,8 +29,8 @@ DeployRun deploy_at_link(const Points& coil, double link, const DeployOptions& o
   ro.link = link;
   ro.method = RelaxMethod::Direct;  // the full model relaxes directly at n
   SlabOptions slab;
-  const double dhat = ro.dhat > 0.0 ? ro.dhat : 2.0 * ro.material.radius;
-  slab.half_thickness = options.slab_half_thickness > 0.0 ? options.slab_half_thickness : 2.0 * dhat;
+  const double dhat = ro.dhat.value_or(2.0 * ro.material.radius);
+  slab.half_thickness = options.slab_half_thickness.value_or(2.0 * dhat);
   require_input(coil.rows() > 0 && coil.col(2).cwiseAbs().maxCoeff() < slab.half_thickness,
                 "deploy: the coil must lie strictly inside the slab |z| < " + std::to_string(slab.half_thickness));
   ro.slab = slab;

@@ -18,7 +18,7 @@ void bind_embedding(py::module_& m) {
         EmbeddingOptions opt;
         opt.vertices = vertices;
         opt.edge_length = edge_length;
-        opt.strand_spacing = strand_spacing.value_or(0.0);
+        opt.strand_spacing = strand_spacing;
         opt.crossing_height = crossing_height;
         opt.braid_tilt = tilt * M_PI / 180.0;
         opt.braid_style = parse_braid_style(style);

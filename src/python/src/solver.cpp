@@ -59,8 +59,8 @@ energy_contact, gradient_norm, contacts, twist, writhe, link.)doc");
   m.def(
       "relax",
       [](const py::handle& points, std::optional<std::string> output, std::optional<double> link,
-         std::optional<double> planar, bool release, double tol, int max_iter, double radius, double young,
-         double poisson, double contact_stiffness, std::vector<double> continuation, bool full_model,
+         std::optional<double> planar, bool release, std::optional<double> tol, int max_iter, double radius,
+         double young, double poisson, std::optional<double> contact_stiffness, std::vector<double> continuation, bool full_model,
          std::string method, int coarse_levels, std::string factorization, bool eigen, bool stop_at_saddle,
          std::optional<std::string> trace, bool verbose) {
         RelaxRequest q;
@@ -85,10 +85,10 @@ energy_contact, gradient_norm, contacts, twist, writhe, link.)doc");
         return relax_points(points, q, output, trace);
       },
       py::arg("points"), py::kw_only(), py::arg("output") = py::none(), py::arg("link") = py::none(),
-      py::arg("planar") = py::none(), py::arg("release") = false, py::arg("tol") = RelaxRequest{}.tol,
+      py::arg("planar") = py::none(), py::arg("release") = false, py::arg("tol") = py::none(),
       py::arg("max_iter") = RelaxRequest{}.max_iter, py::arg("radius") = RelaxRequest{}.radius,
       py::arg("young") = RelaxRequest{}.young, py::arg("poisson") = RelaxRequest{}.poisson,
-      py::arg("contact_stiffness") = RelaxRequest{}.contact_stiffness,
+      py::arg("contact_stiffness") = py::none(),
       py::arg("continuation") = std::vector<double>{}, py::arg("full_model") = false,
       py::arg("method") = RelaxRequest{}.method, py::arg("coarse_levels") = RelaxRequest{}.coarse_levels,
       py::arg("factorization") = RelaxRequest{}.factorization, py::arg("eigen") = false,
@@ -96,8 +96,8 @@ energy_contact, gradient_norm, contacts, twist, writhe, link.)doc");
       R"doc(Relaxes the closed polygon points, (n, 3) (its edge lengths are the rest lengths), to a
 stable equilibrium of the elastic rod with self-contact (paper Section 6), as `knots relax`.
 Options as the command's (docs/cli.md): output (write the equilibrium, atomically), link,
-planar (slab half-thickness H), release, tol (<= 0: default), max_iter, radius, young,
-poisson, contact_stiffness (<= 0: default), continuation (factors in (0, 1)), full_model,
+planar (slab half-thickness H), release, tol (None: default), max_iter, radius, young,
+poisson, contact_stiffness (None: default), continuation (factors in (0, 1)), full_model,
 method ("default", "hybrid", "exact", "paper"), coarse_levels, factorization ("block",
 "cholmod"), eigen, stop_at_saddle, trace (a CSV path: one row per Newton iteration),
 verbose (lines on stderr).

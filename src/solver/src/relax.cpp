@@ -162,8 +162,10 @@ void describe_result(Relaxation& r, RelaxResult& result, bool coarse) {
 
 void RelaxOptions::validate() const {
   material.validate();
-  require_input(std::isfinite(dhat) && std::isfinite(contact_stiffness) && std::isfinite(tolerance),
-                "relax: options must be finite");
+  for (const auto& [value, name] : {std::pair{dhat, "dhat"}, std::pair{contact_stiffness, "contact_stiffness"},
+                                    std::pair{tolerance, "tolerance"}})
+    require_input(!value || (*value > 0.0 && std::isfinite(*value)),
+                  std::string("relax: ") + name + " must be positive and finite when given");
   require_input(max_iterations >= 0, "relax: max_iterations must be >= 0");
   require_input(!link || std::isfinite(*link), "relax: link must be finite");
   require_input(max_tangent_rotation > 0.0 && max_tangent_rotation < 1.5, "relax: max_tangent_rotation in (0, 1.5)");
@@ -190,11 +192,10 @@ ResolvedModel resolve_model(const RelaxOptions& options, double mean_edge_length
   require(mean_edge_length > 0.0 && std::isfinite(mean_edge_length), "resolve_model: edge length must be positive");
   const RodMaterial& mat = options.material;
   ResolvedModel r;
-  r.dhat = options.dhat > 0.0 ? options.dhat : 2.0 * mat.radius;
-  r.contact_stiffness = options.contact_stiffness > 0.0 ? options.contact_stiffness : default_contact_stiffness(mat);
-  r.tolerance = options.tolerance > 0.0
-                    ? options.tolerance
-                    : 1e-8 * (mat.bending_stiffness() / kReferenceBendingStiffness) / (mean_edge_length * mean_edge_length);
+  r.dhat = options.dhat.value_or(2.0 * mat.radius);
+  r.contact_stiffness = options.contact_stiffness.value_or(default_contact_stiffness(mat));
+  r.tolerance = options.tolerance.value_or(1e-8 * (mat.bending_stiffness() / kReferenceBendingStiffness) /
+                                           (mean_edge_length * mean_edge_length));
   if (options.link) r.model = TwistModel::FixedLink;
   else if (options.full_model) r.model = TwistModel::FreeTheta;
   return r;

@@ -231,7 +231,8 @@ void SymmetricSearchOptions::validate() const {
                 "symmetric critical point: only the twist-free model (no link, no full model, no slab)");
   require_input(max_modes >= 2, "symmetric critical point: max_modes must be at least 2");
   require_input(max_root_iterations >= 0, "symmetric critical point: max_root_iterations must be >= 0");
-  require_input(std::isfinite(index_threshold), "symmetric critical point: the index threshold must be finite");
+  require_input(!index_threshold || (*index_threshold > 0.0 && std::isfinite(*index_threshold)),
+                "symmetric critical point: the index threshold must be positive");
 }
 
 namespace {
@@ -391,8 +392,7 @@ SymmetricCriticalPoint find_symmetric_critical_point(const Points& start, const 
   if (options.relax.check_topology) out.alexander_preserved = alexander(out.positions) == alexander(model.start);
   out.residual = cyclic_symmetry_residual(out.positions, out.symmetry);
   out.contacts = full.active_pairs();
-  out.threshold = options.index_threshold > 0.0 ? options.index_threshold
-                                                : 1e3 * model.newton.shift_epsilon * model.system.lambda_min();
+  out.threshold = options.index_threshold.value_or(1e3 * model.newton.shift_epsilon * model.system.lambda_min());
   morse_index(full, out.symmetry, options.max_modes, out.threshold, out);
   out.subspace_index = subspace_index(model.reduced, options.max_modes, symmetry.order * out.threshold);
   out.seconds = since(t0);

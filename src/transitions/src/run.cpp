@@ -53,8 +53,9 @@ std::string transition_run_key(const std::string& knot, const TransitionRunOptio
     << " stages=" << p.max_stages << " seeds=" << p.seeds << " reach=" << p.reach
     << " search_iter=" << p.search_iterations << " bisections=" << p.bisections << " tracking=" << p.tracking_rounds
     << "x" << p.tracking_steps << "/" << p.tracking_bisections << " E=" << o.relax.material.young
-    << " nu=" << o.relax.material.poisson << " r=" << o.relax.material.radius << " tol=" << o.relax.tolerance
-    << " omega=" << o.relax.contact_stiffness << " dhat=" << o.relax.dhat << " rest=" << rest;
+    << " nu=" << o.relax.material.poisson << " r=" << o.relax.material.radius << " tol=" << o.relax.tolerance.value_or(0.0)
+    << " omega=" << o.relax.contact_stiffness.value_or(0.0) << " dhat=" << o.relax.dhat.value_or(0.0)
+    << " rest=" << rest;
   return s.str();
 }
 

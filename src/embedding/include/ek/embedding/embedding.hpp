@@ -34,10 +34,10 @@ struct EmbeddingOptions {
   BraidStyle braid_style = BraidStyle::Coil;  ///< braid closure: coil or cylinder
   /// Braid closure: distance between neighbouring strand positions, in units
   /// of the coil radius R (radial for the coil, axial for the cylinder);
-  /// <= 0 picks, for L letters on s strands, min(0.5 · 2π/L, 0.6/s) for the
-  /// coil (a well separated coil; small values give a multi-covered circle)
-  /// and 2π/L for the cylinder (one letter slot's arc).
-  double strand_spacing = 0.0;  ///< [R]
+  /// unset: for L letters on s strands, min(0.5 · 2π/L, 0.6/s) for the coil
+  /// (a well separated coil; small values give a multi-covered circle) and
+  /// 2π/L for the cylinder (one letter slot's arc).
+  std::optional<double> strand_spacing;  ///< [R] > 0
   /// Braid coil: height of the over/under offsets at a crossing, in units of
   /// the strand spacing.
   double crossing_height = 0.5;  ///< [strand spacing]

@@ -34,9 +34,9 @@ struct DeployOptions {
   /// Material, rest lengths, tolerances, ... of every solve; its link, slab
   /// and release_slab are set per run (the full model with Θ fixed).
   RelaxOptions relax;
-  /// [length] half-thickness h of the slab |z| < h; <= 0 means 2 d̂ (the
+  /// [length] half-thickness h of the slab |z| < h; unset: 2 d̂ (the
   /// jumping-knot experiment's slab).
-  double slab_half_thickness = 0.0;
+  std::optional<double> slab_half_thickness;
   /// [1] a released state with 3D-ness (ek::threedim) at least this counts
   /// as 3D (the planarity threshold of Section 8.2).
   double threedim_threshold = 0.1;

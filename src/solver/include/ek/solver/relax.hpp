@@ -50,15 +50,15 @@ struct RelaxOptions {
   RodMaterial material;             ///< E, ν, r (paper defaults)
   /// [length] rest edge lengths (n); default: the input curve's edge lengths.
   std::optional<VecX> rest_lengths;
-  /// [length] contact distance d̂; <= 0 means 2r (the wire diameter).
-  double dhat = 0.0;
-  /// [energy/length²] ω; <= 0 means 1e3 · (E/2000) · (r/0.2)³ (same relative
+  /// [length] contact distance d̂; unset: 2r (the wire diameter).
+  std::optional<double> dhat;
+  /// [energy/length²] ω; unset: 1e3 · (E/2000) · (r/0.2)³ (same relative
   /// penetration for the same shape; contact_potential.hpp).
-  double contact_stiffness = 0.0;
-  /// [energy/length] gradient tolerance; <= 0 means 1e-8 · (EI / EI_ref) / ℓ²
+  std::optional<double> contact_stiffness;
+  /// [energy/length] gradient tolerance; unset: 1e-8 · (EI / EI_ref) / ℓ²
   /// with EI_ref = 2000·π·0.2⁴/4 and ℓ the mean rest edge length: the paper's
   /// 1e-8 for its material and unit edges, scaled like the gradient.
-  double tolerance = 0.0;
+  std::optional<double> tolerance;
   /// [1] Newton iterations (per phase). 5,000: at 2,000 later samples of a
   /// walk were cut off in slow descents that converge in 2,000–2,400
   /// (docs/models.md, "Solver").
@@ -118,7 +118,7 @@ struct RelaxOptions {
 /// without a slab; other options relax by the direct method.
 bool multilevel_applies(const RelaxOptions& options);
 
-/// The model's parameters with every "<= 0 means default" field of
+/// The model's parameters with every unset field of
 /// RelaxOptions resolved. The only place where these defaults are computed:
 /// relax(), the data-set metadata and `knots energy` call it.
 struct ResolvedModel {

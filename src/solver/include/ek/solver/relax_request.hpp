@@ -16,12 +16,12 @@ struct RelaxRequest {
   std::optional<double> link;          ///< [1] --link: prescribed Lk = Tw + Wr (full model, Θ fixed); none: Θ free
   std::optional<double> planar;        ///< [length] --planar H: keep every vertex in the slab |z| < H
   bool release = false;                ///< --release: after the slab phase, drop the slab and continue
-  double tol = 0.0;                    ///< [energy/length] --tol; <= 0: 1e-8·(EI/EI_ref)/ℓ²
+  std::optional<double> tol;           ///< [energy/length] --tol; unset: 1e-8·(EI/EI_ref)/ℓ²
   int max_iter = RelaxOptions{}.max_iterations;  ///< [1] --max-iter: Newton iterations per phase
   double radius = RodMaterial{}.radius;          ///< [length] --radius r
   double young = RodMaterial{}.young;            ///< [pressure] --young E
   double poisson = RodMaterial{}.poisson;        ///< [1] --poisson ν
-  double contact_stiffness = 0.0;      ///< [energy/length²] --contact-stiffness ω; <= 0: 1e3·(E/2000)·(r/0.2)³
+  std::optional<double> contact_stiffness;  ///< [energy/length²] --contact-stiffness ω; unset: 1e3·(E/2000)·(r/0.2)³
   std::vector<double> continuation;    ///< [1] --continuation F[,F...]: factors in (0, 1); empty: off
   bool full_model = false;             ///< --full-model: positions, θ and Θ even when Θ is free
   std::string method = "default";      ///< --method: default, hybrid, exact or paper (with_method())

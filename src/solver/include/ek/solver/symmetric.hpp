@@ -157,9 +157,9 @@ struct SymmetricSearchOptions {
   /// (the index is complete when one computed eigenvalue is non-negative).
   int max_modes = 24;
   /// [energy/length²] eigenvalues below −threshold count in the index, those
-  /// within ±threshold are reported as near zero; <= 0 means 1e3·ε·λ_min of
-  /// the model (the Newton solver's shift scale).
-  double index_threshold = 0.0;
+  /// within ±threshold are reported as near zero; unset: 1e3·ε·λ_min of the
+  /// model (the Newton solver's shift scale).
+  std::optional<double> index_threshold;
   void validate() const;  ///< InputError for impossible values
 };
 
