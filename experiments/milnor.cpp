@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <optional>
+#include <vector>
 
 #include "ek/dataset/dataset_file.hpp"
 #include "experiment.hpp"
@@ -18,62 +20,81 @@
 using namespace ek;
 using namespace ek::exp;
 
+namespace {
+
+/// One knot of the data set: its smallest ratio and, for BB knots, its
+/// smallest ratio among the multi-covered circles.
+struct Row {
+  std::string name;
+  int crossings = 0, bridge = 0, braid = 0, equilibria = 0, violations = 0, planar = 0;
+  double min_total_curvature = 0.0, ratio = 0.0, threedim = 0.0;
+  std::optional<double> planar_ratio;
+};
+
+Row knot_row(const KnotEntry& e) {
+  const int tc = e.attribute_column("total_curvature"), td = e.attribute_column("threedim");
+  const double bound = 2.0 * M_PI * e.bridge_index;
+  Row r{e.name, e.crossing_number, e.bridge_index, e.braid_index, static_cast<int>(e.attributes.rows())};
+  Eigen::Index best = 0;
+  r.min_total_curvature = e.attributes.col(tc).minCoeff(&best);
+  r.ratio = r.min_total_curvature / bound;
+  r.threedim = e.attributes(best, td);
+  for (Eigen::Index i = 0; i < e.attributes.rows(); ++i) {
+    const double ratio = e.attributes(i, tc) / bound;
+    if (!(ratio > 1.0)) ++r.violations;
+    if (e.attributes(i, td) >= kPlanarThreedim) continue;
+    ++r.planar;
+    if (!r.planar_ratio || ratio < *r.planar_ratio) r.planar_ratio = ratio;
+  }
+  return r;
+}
+
+void fill_summary(const std::vector<Row>& rows, results::MilnorSummary& sum) {
+  for (const Row& r : rows) {
+    sum.equilibria += r.equilibria;
+    sum.milnor_violations += r.violations;
+    if (r.bridge != r.braid) continue;
+    sum.bb_knots.push_back({r.name, r.ratio, r.threedim, r.planar_ratio, r.planar, r.equilibria});
+    sum.bb_max_ratio_deviation = std::max(sum.bb_max_ratio_deviation, std::fabs(r.ratio - 1.0));
+    sum.bb_max_threedim = std::max(sum.bb_max_threedim, r.threedim);
+  }
+  std::vector<Row> sorted = rows;  // the top decile by ratio
+  std::sort(sorted.begin(), sorted.end(), [](const Row& x, const Row& y) { return x.ratio > y.ratio; });
+  const size_t decile = std::max<size_t>(1, sorted.size() / 10);
+  int two_bridge = 0;
+  for (size_t k = 0; k < decile && k < sorted.size(); ++k) two_bridge += sorted[k].bridge == 2;
+  sum.knots = static_cast<long>(rows.size());
+  sum.planar_threshold = kPlanarThreedim;
+  sum.top_decile_size = static_cast<long>(decile);
+  sum.top_decile_two_bridge_share = sorted.empty() ? 0.0 : static_cast<double>(two_bridge) / static_cast<double>(decile);
+}
+
+}  // namespace
+
 int main(int argc, char** argv) {
   return run_experiment(argc, argv, "exp_milnor", "Milnor-bound ratios of the data set (reads ../dataset/dataset.h5).", [](const Args& a) {
     const std::string in = a.results + "/dataset/dataset.h5";
     announce(a, "exp_milnor", "analyse " + in, 5.0);
     DatasetReader reader(in);
     Csv csv(a.out + "/milnor.csv", {"knot", "crossing_number", "bridge_index", "braid_index", "bb", "two_bridge",
-                                    "equilibria", "min_total_curvature", "ratio", "threedim_at_min", "violations"});
-    struct Row {
-      std::string name;
-      int bridge, braid;
-      double ratio, threedim;
-    };
+                                    "equilibria", "min_total_curvature", "ratio", "threedim_at_min", "violations",
+                                    "planar_ratio"});
     std::vector<Row> rows;
-    int violations = 0, equilibria = 0;
     for (const auto& name : reader.knot_names()) {
       const KnotEntry e = reader.read(name);
       if (e.equilibria.empty() || e.bridge_index < 1) continue;
-      const int tc = e.attribute_column("total_curvature"), td = e.attribute_column("threedim");
-      Eigen::Index best = 0;
-      e.attributes.col(tc).minCoeff(&best);
-      const double bound = 2.0 * M_PI * e.bridge_index;
-      int v = 0;
-      for (Eigen::Index i = 0; i < e.attributes.rows(); ++i)
-        if (!(e.attributes(i, tc) > bound)) ++v;
-      violations += v;
-      equilibria += static_cast<int>(e.attributes.rows());
-      const double ratio = e.attributes(best, tc) / bound;
-      rows.push_back({name, e.bridge_index, e.braid_index, ratio, e.attributes(best, td)});
-      csv.row({name, std::to_string(e.crossing_number), std::to_string(e.bridge_index), std::to_string(e.braid_index),
-               Csv::flag(e.bridge_index == e.braid_index), Csv::flag(e.bridge_index == 2),
-               std::to_string(e.attributes.rows()), Csv::num(e.attributes(best, tc)), Csv::num(ratio),
-               Csv::num(e.attributes(best, td)), std::to_string(v)});
+      const Row r = rows.emplace_back(knot_row(e));
+      csv.row({name, std::to_string(r.crossings), std::to_string(r.bridge), std::to_string(r.braid),
+               Csv::flag(r.bridge == r.braid), Csv::flag(r.bridge == 2), std::to_string(r.equilibria),
+               Csv::num(r.min_total_curvature), Csv::num(r.ratio), Csv::num(r.threedim), std::to_string(r.violations),
+               r.planar_ratio ? Csv::num(*r.planar_ratio) : ""});
     }
     csv.commit();
-    // BB knots and the top decile by ratio.
     results::MilnorSummary sum;
     sum.scale = a.scale_name;
-    for (const auto& r : rows)
-      if (r.bridge == r.braid) {
-        sum.bb_knots.push_back({r.name, r.ratio, r.threedim});
-        sum.bb_max_ratio_deviation = std::max(sum.bb_max_ratio_deviation, std::fabs(r.ratio - 1.0));
-        sum.bb_max_threedim = std::max(sum.bb_max_threedim, r.threedim);
-      }
-    std::vector<Row> sorted = rows;
-    std::sort(sorted.begin(), sorted.end(), [](const Row& x, const Row& y) { return x.ratio > y.ratio; });
-    const size_t decile = std::max<size_t>(1, sorted.size() / 10);
-    int two_bridge = 0;
-    for (size_t k = 0; k < decile && k < sorted.size(); ++k) two_bridge += sorted[k].bridge == 2;
-    sum.knots = static_cast<long>(rows.size());
-    sum.equilibria = equilibria;
-    sum.milnor_violations = violations;
-    sum.planar_threshold = kPlanarThreedim;
-    sum.top_decile_size = static_cast<long>(decile);
-    sum.top_decile_two_bridge_share = sorted.empty() ? 0.0 : static_cast<double>(two_bridge) / static_cast<double>(decile);
+    fill_summary(rows, sum);
     write_summary(a, sum);
-    std::cout << "exp_milnor: " << rows.size() << " knots, " << violations << " violations, BB max |ratio-1| "
+    std::cout << "exp_milnor: " << rows.size() << " knots, " << sum.milnor_violations << " violations, BB max |ratio-1| "
               << sum.bb_max_ratio_deviation << ", top-decile 2-bridge share " << sum.top_decile_two_bridge_share
               << std::endl;
   });

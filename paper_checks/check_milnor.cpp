@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "ek/dataset/dataset_file.hpp"
 #include "milnor_summary.hpp"
@@ -37,20 +39,29 @@ TEST(PaperMilnor, EveryEquilibriumIsAboveTheBound) {
   EXPECT_EQ(violations, 0) << "smallest total curvature / (2 pi bridge index) = " << closest;
 }
 
-// BB knots (bridge index = braid index) reach the bound in a multi-covered
-// circle: smallest ratio within 3% of 1 (our tolerance for the paper's "approximately",
-// footnote 3: wire thickness), with 3D-ness below the planarity threshold.
-// The BB knots and their smallest ratios: the experiment's summary (milnor.csv
-// flags the same knots).
+// Fig. 9's caption: "Knots with bridge index equal to braid index (BB knots)
+// assume Milnor's bound in multi-covered circle embeddings", and "for this
+// specific knot topology and our chosen wire length to diameter ratio, no
+// 'flat' multi-covered circle exists in our data set" (one outlier). As the
+// paper words it: every BB knot has an equilibrium that is a multi-covered
+// circle (3D-ness below the planarity threshold 0.1) within 3% of the bound
+// (our tolerance for "approximately", footnote 3: wire thickness), except at
+// most one knot, named with its values. The 3D-ness of each BB knot's
+// smallest-ratio state is reported, not asserted. milnor.csv flags the same
+// knots as BB.
 TEST(PaperMilnor, BBKnotsReachTheBoundAsMultiCoveredCircles) {
   const auto s = paper::summary<results::MilnorSummary>("milnor");
   int flagged = 0;
   for (const auto& row : paper::csv(paper::results("milnor") + "/milnor.csv")) flagged += paper::flag(row.at("bb"));
+  std::vector<std::string> exceptions;
   for (const auto& k : s.bb_knots) {
-    std::cout << "[ measured ] " << k.knot << ": ratio " << k.ratio << ", 3D-ness " << k.threedim << std::endl;
-    EXPECT_NEAR(k.ratio, 1.0, 0.03) << k.knot;
-    EXPECT_LT(k.threedim, results::kPlanarThreedim) << k.knot;
+    std::cout << "[ measured ] " << k.knot << ": smallest ratio " << k.ratio << " (3D-ness " << k.threedim
+              << "); multi-covered circles " << k.planar_equilibria << " of " << k.equilibria
+              << ", their smallest ratio " << paper::or_na(k.planar_ratio) << std::endl;
+    if (!k.planar_ratio || std::fabs(*k.planar_ratio - 1.0) > 0.03) exceptions.push_back(k.knot);
   }
+  for (const auto& name : exceptions) std::cout << "[ measured ] exception: " << name << std::endl;
+  EXPECT_LE(exceptions.size(), 1u) << "BB knots without a multi-covered circle within 3% of the bound";
   EXPECT_GT(s.bb_knots.size(), 0u) << "no BB knot in the data set";
   EXPECT_EQ(static_cast<int>(s.bb_knots.size()), flagged);
 }

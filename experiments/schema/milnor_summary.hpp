@@ -1,5 +1,6 @@
 #pragma once
 // summary.json of exp_milnor (docs/results.md, "milnor").
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -7,13 +8,20 @@
 
 namespace ek::results {
 
-/// A BB knot (bridge index = braid index) at its smallest total curvature.
+/// A BB knot (bridge index = braid index): its smallest total curvature,
+/// and its smallest among its multi-covered circles (3D-ness below
+/// kPlanarThreedim, Fig. 9's "flat" states).
 struct MilnorBBKnot {
   std::string knot;
-  double ratio = 0.0;     ///< [1] total curvature / (2π · bridge index)
+  double ratio = 0.0;     ///< [1] smallest total curvature / (2π · bridge index)
   double threedim = 0.0;  ///< [1] 3D-ness of that equilibrium
+  /// [1] the smallest ratio of its equilibria with 3D-ness < kPlanarThreedim;
+  /// null when it has none
+  std::optional<double> planar_ratio;
+  int planar_equilibria = 0;  ///< [1] its equilibria with 3D-ness < kPlanarThreedim
+  int equilibria = 0;         ///< [1] its equilibria
 };
-EK_JSON_FIELDS(MilnorBBKnot, knot, ratio, threedim)
+EK_JSON_FIELDS(MilnorBBKnot, knot, ratio, threedim, planar_ratio, planar_equilibria, equilibria)
 
 struct MilnorSummary {
   std::string scale;
