@@ -137,6 +137,28 @@ class Explorer(unittest.TestCase):
             counts.add(len(cli["clusters"]))
         self.assertGreater(len(counts), 1, "the cuts tried must give different cluster counts")
 
+    def fetched(self):
+        """The site files this page load has fetched so far (paths below the server's root)."""
+        names = self.d.execute_script("return performance.getEntriesByType('resource').map(e => e.name)")
+        return [n.split(self.server.url, 1)[-1].lstrip("/") for n in names]
+
+    def test_a_knot_loads_only_its_own_files(self):
+        # a fresh page opened at an equilibrium: the table's site.json and
+        # that knot's two files, never another knot's or every equilibrium's
+        # attributes (so that a site of the whole table stays usable); the
+        # query view, which filters across knots, loads attributes.bin
+        self.d.get("about:blank")
+        self.open(f"#/view/{self.knot}/0", "view")
+        data = [f for f in self.fetched() if f.startswith("data/")]
+        self.assertIn("data/site.json", data)
+        knot_files = sorted(f for f in data if f.startswith("data/knots/"))
+        self.assertEqual(len(knot_files), 2, knot_files)
+        self.assertTrue(all(f.split("/")[-1].rsplit(".", 1)[0] == knot_files[0].split("/")[-1].rsplit(".", 1)[0]
+                            for f in knot_files), knot_files)
+        self.assertNotIn("data/attributes.bin", data)
+        self.open("#/query", "query")
+        self.assertIn("data/attributes.bin", self.fetched())
+
     def canvas_coverage(self, box):
         """Share of the canvas's pixels that differ from its white background."""
         canvas = box.find_element(By.TAG_NAME, "canvas")

@@ -152,15 +152,19 @@ TEST(Site, KnotDataFiles) {
   EXPECT_GT(d02, 0.3);
   ASSERT_EQ(j["linkage"].size(), 3u);
   EXPECT_EQ(j["linkage"][0][2].get<double>(), e.linkage(0, 2));  // exact round trip of the heights
-  const int m = 4, n = 40;
+  const int m = 4, n = 40, c = static_cast<int>(e.attributes.cols()), a = m * c * 8;
   const auto& b = j["buffers"];
-  EXPECT_EQ(b["positions"]["offset"], 0);
-  EXPECT_EQ(b["curvature"]["offset"], m * n * 3 * 4);
-  EXPECT_EQ(b["similarity"]["offset"], m * n * 3 * 4 + m * n * 4);
-  EXPECT_EQ(b["contact"]["offset"], m * n * 3 * 4 + m * n * 4 + m * m * 4);
-  ASSERT_EQ(d.binary.size(), static_cast<size_t>(m * n * 3 * 4 + m * n * 4 + m * m * 4 + m * n));
+  // the knot's attributes first (8-byte aligned float64), then the float32 arrays
+  EXPECT_EQ(b["attributes"]["offset"], 0);
+  EXPECT_EQ(b["attributes"]["shape"], nlohmann::json::array({m, c}));
+  EXPECT_EQ(b["positions"]["offset"], a);
+  EXPECT_EQ(b["curvature"]["offset"], a + m * n * 3 * 4);
+  EXPECT_EQ(b["similarity"]["offset"], a + m * n * 3 * 4 + m * n * 4);
+  EXPECT_EQ(b["contact"]["offset"], a + m * n * 3 * 4 + m * n * 4 + m * m * 4);
+  ASSERT_EQ(d.binary.size(), static_cast<size_t>(a + m * n * 3 * 4 + m * n * 4 + m * m * 4 + m * n));
   EXPECT_EQ(j["binary_bytes"], d.binary.size());
-  EXPECT_EQ(read_at<float>(d.binary, (2 * n * 3 + 5 * 3 + 1) * 4), static_cast<float>(e.equilibria[2](5, 1)));
+  EXPECT_EQ(read_at<double>(d.binary, (3 * c + 0) * 8), e.attributes(3, 0));
+  EXPECT_EQ(read_at<float>(d.binary, a + (2 * n * 3 + 5 * 3 + 1) * 4), static_cast<float>(e.equilibria[2](5, 1)));
   EXPECT_EQ(read_at<float>(d.binary, b["curvature"]["offset"].get<size_t>() + (3 * n + 7) * 4),
             static_cast<float>(vertex_curvature(e.equilibria[3])[7]));
   EXPECT_EQ(read_at<float>(d.binary, b["similarity"]["offset"].get<size_t>() + (0 * m + 1) * 4), 0.99f);

@@ -138,6 +138,11 @@ KnotSiteData knot_site_data(const KnotEntry& e, const std::string& file, double 
 
   std::string& bin = out.binary;
   Json buffers;
+  // the attributes first: a float64 array at offset 0 is 8-byte aligned
+  const int columns = static_cast<int>(e.attributes.cols());
+  buffers["attributes"] = buffer("float64", {m, columns}, bin.size());
+  for (Eigen::Index i = 0; i < e.attributes.rows(); ++i)
+    for (Eigen::Index c = 0; c < e.attributes.cols(); ++c) append(bin, e.attributes(i, c));
   buffers["positions"] = buffer("float32", {m, n, 3}, bin.size());
   for (const Points& P : e.equilibria)
     for (Eigen::Index i = 0; i < P.rows(); ++i)

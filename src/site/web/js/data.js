@@ -2,7 +2,7 @@
 // data/site.json, data/attributes.bin and data/knots/<file>.json|.bin.
 
 export const FORMAT = "elastic-knots-site";
-export const FORMAT_VERSION = 1;
+export const FORMAT_VERSION = 2;
 
 async function fetchOk(url, kind) {
   const r = await fetch(url);
@@ -27,7 +27,8 @@ export async function loadSite() {
 }
 
 let attributes = null;
-/** Every equilibrium's attributes: Float64Array [rows * columns] (knots in file order). */
+/** Every equilibrium's attributes: Float64Array [rows * columns] (knots in file
+ *  order); loaded only by the views across knots (the query view). */
 export async function loadAttributes(site) {
   if (!attributes) {
     const buf = await fetchOk("data/" + site.attributes.file, "bin");
@@ -38,14 +39,23 @@ export async function loadAttributes(site) {
   return attributes;
 }
 
-/** Attribute `name` of equilibrium i of a knot. */
+/** Attribute `name` of equilibrium i of a knot, from the table of every
+ *  equilibrium (loadAttributes()). */
 export function attribute(site, table, knot, i, name) {
   const c = site.column.get(name);
   return c === undefined ? null : table[(knot.offset + i) * site.attribute_names.length + c];
 }
 
+/** Attribute `name` of equilibrium i of a loaded knot (loadKnot()). */
+export function knotAttribute(site, k, i, name) {
+  const c = site.column.get(name);
+  return c === undefined ? null : k.attributes[i * site.attribute_names.length + c];
+}
+
 const knots = new Map();
-/** A knot's data: its JSON fields and typed arrays positions [m*n*3], curvature [m*n], similarity [m*m], contact [m*n]. */
+/** A knot's data, loaded when the knot is opened: its JSON fields and typed
+ *  arrays attributes [m*columns], positions [m*n*3], curvature [m*n],
+ *  similarity [m*m], contact [m*n]. */
 export function loadKnot(site, name) {
   if (!knots.has(name)) knots.set(name, (async () => {
     const rec = site.byName.get(name);
@@ -56,6 +66,7 @@ export function loadKnot(site, name) {
     const buf = await fetchOk(`data/knots/${k.binary}`, "bin");
     if (buf.byteLength !== k.binary_bytes) throw new Error(`data/knots/${k.binary}: unexpected size`);
     const view = (b, T) => new T(buf, b.offset, b.shape.reduce((x, y) => x * y, 1));
+    k.attributes = view(k.buffers.attributes, Float64Array);
     k.positions = view(k.buffers.positions, Float32Array);
     k.curvature = view(k.buffers.curvature, Float32Array);
     k.similarity = view(k.buffers.similarity, Float32Array);

@@ -2,7 +2,7 @@
 // a cut the slider sets (reclustered here exactly as `knots cluster` does),
 // the count of distinct states, and its equilibria with their attributes
 // (sortable); a point or a row opens the equilibrium in 3D.
-import { loadKnot, loadAttributes, attribute } from "./data.js";
+import { loadKnot, knotAttribute } from "./data.js";
 import { clustersAtCut } from "./clusters.js";
 import { mdsPlot } from "./mds.js";
 import { dendrogramPlot } from "./dendrogram.js";
@@ -11,9 +11,9 @@ import { el, fmt, sortableTable, clusterColor, ATTRIBUTE_LABELS, ready } from ".
 export async function showKnot(main, site, name) {
   const rec = site.byName.get(name);
   if (!rec) throw new Error(`no knot ${name} in this data set`);
-  const [k, table] = await Promise.all([loadKnot(site, name), loadAttributes(site)]);
+  const k = await loadKnot(site, name);
   const m = k.equilibria;
-  const value = (i, a) => attribute(site, table, rec, i, a);
+  const value = (i, a) => knotAttribute(site, k, i, a);
   main.append(el("h2", {}, `${name}`),
     el("p", { class: "muted" },
       `${rec.crossing_number} crossings, bridge index ${fmt(rec.bridge_index)}, braid index ${fmt(rec.braid_index)}` +

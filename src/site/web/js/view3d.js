@@ -2,7 +2,7 @@
 // their similarity. Colour by curvature (a shared scale and colour bar) or by
 // contact; the wire's thickness as stored (its radius r) or thicker; OBJ
 // downloads of the curve and of the tube.
-import { loadKnot, loadAttributes, attribute, curve } from "./data.js";
+import { loadKnot, knotAttribute, curve } from "./data.js";
 import { clustersAtCut } from "./clusters.js";
 import { TubeViewer } from "./viewer.js";
 import { viridis, viridisGradient, percentile, CONTACT, FREE } from "./colormap.js";
@@ -29,11 +29,11 @@ function colors(k, i, mode, vmax) {
 export async function showEquilibria(main, site, name, indices) {
   const rec = site.byName.get(name);
   if (!rec) throw new Error(`no knot ${name} in this data set`);
-  const [k, table] = await Promise.all([loadKnot(site, name), loadAttributes(site)]);
+  const k = await loadKnot(site, name);
   const m = k.equilibria;
   if (!indices.length || indices.length > 2 || !indices.every((i) => Number.isInteger(i) && i >= 0 && i < m))
     throw new Error(`${name} has equilibria 0 .. ${m - 1}; the address names ${indices.join(", ") || "none"}`);
-  const value = (i, a) => attribute(site, table, rec, i, a);
+  const value = (i, a) => knotAttribute(site, k, i, a);
   const clusters = clustersAtCut(k.linkage, m, site.cut, (i) => value(i, "energy"));
   const radius = site.dataset.radius;
   let curvatures = [];

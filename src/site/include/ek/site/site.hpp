@@ -39,7 +39,7 @@ namespace ek {
 
 /// Format of data/site.json and data/knots/*.json (conventions: data files carry a schema version).
 inline constexpr const char* kSiteFormat = "elastic-knots-site";
-inline constexpr int kSiteFormatVersion = 1;
+inline constexpr int kSiteFormatVersion = 2;
 
 struct SiteOptions {
   /// [1] distance cut (1 - similarity) for the knot table's "distinct states"
