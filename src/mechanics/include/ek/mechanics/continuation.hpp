@@ -1,0 +1,160 @@
+#pragma once
+/// Equilibria of a knot along a load path, by pseudo-arclength continuation
+/// (Keller 1977), so that the path passes limit points (folds) where the
+/// load parameter turns back, with the stability of every point.
+///
+/// The family: E(x; μ) = E_knot(x) + E_load(x; μ) (loads.hpp), equilibria
+/// G(x, μ) = ∇ₓE = 0. From a point (x_k, μ_k) with unit tangent
+/// t = (t_x, t_μ) (weighted norm w²|t_x|² + t_μ² = 1, w² = 1/dofs), the
+/// predictor (x_p, μ_p) = (x_k, μ_k) + Δs·t, and the corrector, Newton on
+///   G(x, μ) = 0,   w² t_xᵀ(x − x_p) + t_μ(μ − μ_p) = 0,
+/// by two solves with the exact Hessian H (indefinite in general; a sparse
+/// LU of H + κ QQᵀ, Q the rigid modes that keep the load):
+///   H a = −G,  H b = −∂G/∂μ,  Δμ = −(N + w² t_xᵀa) / (w² t_xᵀb + t_μ),  Δx = a + Δμ b.
+/// Every corrector step is cut to the collision-free fraction (the CCD of the
+/// contact term, the plates' barrier), so the knot type is kept, and halved
+/// until ||G|| decreases; a corrector that does not converge in
+/// `corrector_iterations` halves Δs.
+/// The new tangent solves H b = −∂G/∂μ: t ∝ (b, 1), oriented along the
+/// previous one; Δs grows ×1.5 after an easy corrector (<= 3 iterations).
+/// At each point: the energy, the load's reaction and displacement, and the
+/// lowest eigenvalues of H without the rigid modes (its index: negative
+/// eigenvalues below −threshold). A limit point is where t_μ changes sign
+/// (the parameter turns back: under that control the knot snaps there); a
+/// bifurcation where the index changes without a turn.
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ek/geometry/types.hpp"
+#include "ek/mechanics/loads.hpp"
+#include "ek/solver/newton.hpp"
+#include "ek/solver/objective.hpp"
+#include "ek/solver/relax.hpp"
+
+namespace ek {
+
+/// E(x; μ): an objective with one parameter, and the derivatives in μ that
+/// continuation needs.
+class ParameterizedObjective : public Objective {
+ public:
+  virtual double parameter() const = 0;
+  virtual void set_parameter(double mu) = 0;
+  /// ∂(∇ₓE)/∂μ at the current dofs (num_dofs()).
+  virtual VecX parameter_gradient() = 0;
+  /// ∂E/∂μ at the current dofs.
+  virtual double parameter_derivative() = 0;
+  /// What a device measures and applies (loads.hpp); by default μ and ∂E/∂μ.
+  virtual double displacement() { return parameter(); }
+  virtual double reaction() { return parameter_derivative(); }
+  virtual double load_energy() { return 0.0; }
+};
+
+struct ContinuationOptions {
+  double target = 0.0;               ///< [parameter] the path ends where μ reaches it
+  /// [parameter] first arclength step; unset: |target − μ₀| / 40
+  std::optional<double> step;
+  double min_step_factor = 1e-4;     ///< [1] the smallest step, as a share of the first: below it the path stalls
+  double max_step_factor = 4.0;      ///< [1] the largest step, as a multiple of the first
+  int max_points = 1000;             ///< [1] points of the path at most
+  int corrector_iterations = 20;     ///< [1] Newton iterations of a corrector before Δs is halved
+  double gradient_tolerance = 1e-8;  ///< [energy/length] a corrector has converged when ||G|| <= this
+  int eigen_count = 4;               ///< [1] lowest eigenpairs computed at each point (0: no stability)
+  double index_threshold = 1e-9;     ///< [energy/length²] eigenvalues below −this count as negative
+  /// The stable path instead of the arclength corrector: when set, each
+  /// point minimises E(·; μ_p) from the predictor (NewtonSolver with these
+  /// options: line search, shifts of indefinite Hessians, the CCD), so the
+  /// path follows stable equilibria only. A minimiser that lands farther
+  /// than `max_jump` from the predictor halves Δs; at the smallest Δs the
+  /// landing is kept as a snap (PathEvent::Snap: the stable state it jumped
+  /// to, past a fold or a subcritical bifurcation).
+  std::optional<NewtonOptions> minimizer;
+  double max_jump = 1.0;             ///< [length] |Δx|/√(dofs/3) from the predictor (minimizer only; the RMS vertex distance)
+  void validate() const;             ///< InputError for impossible values
+};
+
+/// Where a path point sits.
+enum class PathEvent {
+  Regular,
+  LimitPoint,    ///< the parameter turned back between the previous point and this one
+  Bifurcation,   ///< the index changed without a turn (an eigenvalue crossed zero)
+  Snap,          ///< (stable path) the minimiser jumped to another stable state at the smallest step
+};
+std::string to_string(PathEvent event);  ///< "regular", "limit-point", "bifurcation", "snap"
+
+struct PathPoint {
+  double parameter = 0.0;      ///< [parameter] μ
+  double displacement = 0.0;   ///< [length] what the device measures
+  double reaction = 0.0;       ///< [force] what the device applies
+  double parameter_derivative = 0.0;  ///< [energy/parameter] ∂E/∂μ
+  double energy = 0.0;         ///< [energy] E_knot + E_load
+  double load_energy = 0.0;    ///< [energy]
+  double gradient_norm = 0.0;  ///< [energy/length] ||∇ₓE||
+  double tangent_parameter = 0.0;  ///< [1] t_μ of the unit tangent
+  int index = -1;              ///< [1] negative eigenvalues of H (rigid modes removed); -1: not computed
+  double lowest_eigenvalue = 0.0;  ///< [energy/length²]
+  VecX lowest_mode;            ///< its unit eigenvector (num_dofs); empty when not computed
+  bool stable = false;         ///< index == 0
+  PathEvent event = PathEvent::Regular;
+  int corrector_iterations = 0;
+  VecX dofs;                   ///< the equilibrium
+};
+
+/// How a path ended.
+enum class PathStatus {
+  Reached,     ///< μ reached the target
+  MaxPoints,   ///< the point budget ran out
+  Stalled,     ///< Δs fell below its minimum (no corrector converged)
+  Stopped,     ///< the caller stopped it (on_point returned false)
+};
+std::string to_string(PathStatus status);  ///< "reached", "max-points", "stalled", "stopped"
+
+struct LoadPath {
+  PathStatus status = PathStatus::MaxPoints;
+  std::vector<PathPoint> points;  ///< the start (relaxed at μ₀) first
+  double seconds = 0.0;           ///< [s]
+};
+
+/// Follows the equilibria of `f` from its current dofs and parameter μ₀ (an
+/// equilibrium: it is first brought to ||G|| <= tolerance at μ₀ by the same
+/// Newton solve with μ fixed) towards options.target. Leaves `f` at the last
+/// point. `on_point` (optional) sees every accepted point; returning false
+/// ends the path there (PathStatus::Stopped).
+LoadPath follow_path(ParameterizedObjective& f, const ContinuationOptions& options,
+                     const std::function<bool(const PathPoint&)>& on_point = {});
+
+/// The knot model (KnotSystem: rod and contact, twist-free) plus a load: a
+/// ParameterizedObjective whose parameter is the load's. Its rigid modes are
+/// those the load keeps. The system and the load must outlive it.
+class LoadedKnot : public ParameterizedObjective {
+ public:
+  LoadedKnot(Objective& knot, ControlledLoad& load);
+  int num_dofs() const override { return knot_.num_dofs(); }
+  VecX dofs() const override { return knot_.dofs(); }
+  void set_dofs(const VecX& x) override;
+  double energy() override { return knot_.energy() + load_.energy(); }
+  VecX gradient() override;
+  void assemble_hessian(SparseAssembler& A, HessianKind kind) override;
+  double max_step(const VecX& x, const VecX& dx) override;
+  void accept() override;
+  Eigen::MatrixXd rigid_modes() override;
+  std::vector<EnergyPart> energy_parts() override;
+  int active_pairs() const override { return knot_.active_pairs(); }
+  double parameter() const override { return load_.parameter(); }
+  void set_parameter(double mu) override;
+  VecX parameter_gradient() override { return load_.parameter_gradient(num_dofs()); }
+  double parameter_derivative() override { return load_.parameter_derivative(); }
+  double displacement() override { return load_.displacement(); }
+  double reaction() override { return load_.reaction(); }
+  double load_energy() override { return load_.energy(); }
+  ControlledLoad& load() { return load_; }
+
+ private:
+  Objective& knot_;
+  ControlledLoad& load_;
+  SparseAssembler inner_;
+  VecX x_;
+};
+
+}  // namespace ek

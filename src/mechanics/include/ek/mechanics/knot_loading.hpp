@@ -1,0 +1,103 @@
+#pragma once
+/// A knot under load: the path of its equilibria as a device pulls two of
+/// its points apart, presses it between two plates, or applies a pair of
+/// forces (loads.hpp), followed by pseudo-arclength continuation
+/// (continuation.hpp); where the path turns back at a limit point and loses
+/// stability, the knot snaps: the state it falls into under the load, and
+/// that state relaxed without it.
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ek/geometry/types.hpp"
+#include "ek/mechanics/continuation.hpp"
+#include "ek/solver/relax.hpp"
+
+namespace ek {
+
+/// What the device does.
+enum class LoadKind {
+  Pull,    ///< displacement control: two vertices pulled to a distance
+  Plates,  ///< displacement control: two parallel plates closed to a gap
+  Force,   ///< load control: opposite forces on two vertices
+};
+std::string to_string(LoadKind kind);           ///< "pull", "plates", "force"
+LoadKind parse_load_kind(const std::string& text);  ///< InputError for another text
+
+struct KnotLoadOptions {
+  /// The model (twist-free: no link, no full model, no slab): material, d̂,
+  /// ω, the tolerance (the correctors' gradient tolerance) as for relax().
+  RelaxOptions relax;
+  LoadKind kind = LoadKind::Pull;
+  /// pull, force: the two vertices (0-based, distinct); unset: the pair
+  /// farthest apart in the relaxed start (its diameter)
+  std::optional<std::array<int, 2>> vertices;
+  /// [parameter] start of the parameter: the distance, gap or force; unset:
+  /// the start's distance of i and j (pull), its extent along the normal
+  /// plus the reach of the plates' barrier on each side (plates), 0 (force)
+  std::optional<double> from;
+  double to = 0.0;                     ///< [parameter] where the path ends
+  /// plates: their unit normal; unset: the start's axis of least extent
+  /// (the smallest principal axis of its vertices)
+  std::optional<Vec3> normal;
+  /// [EI/ℓ³] the pull's spring stiffness k (ℓ the mean rest edge length):
+  /// far stiffer than a knot along a pull, so the distance follows the control
+  double pull_stiffness = 100.0;
+  /// [1] the plates' barrier: its reach in wire radii and its stiffness in
+  /// units of the contact stiffness ω
+  double plates_reach = 1.0;
+  double plates_stiffness = 1.0;
+  int steps = 40;                      ///< [1] the first arclength step is |to − from| / steps
+  int max_points = 400;                ///< [1] points of the path at most
+  bool stop_at_snap = true;            ///< end the path at its first snap (else go on from the state it snapped into)
+  int eigen_count = 4;                 ///< [1] lowest eigenpairs at each point (the index)
+  /// [ℓ] a minimiser landing farther than this RMS vertex distance from the
+  /// predictor (at the smallest step) is a snap
+  double snap_jump = 0.1;
+  void validate() const;               ///< InputError for impossible values
+};
+
+/// Where the knot snapped: the stable branch it followed ended (at a fold
+/// of the load path or where the branch lost its stability) and the
+/// minimiser, at the smallest step, fell into another stable state.
+struct Snap {
+  int point = 0;                  ///< [1] the path point of the state it fell into (PathEvent::Snap)
+  double parameter = 0.0;         ///< [parameter] the last parameter of the branch that ended
+  double reaction = 0.0;          ///< [force] the device's force there: the push that flips the state
+  double jump = 0.0;              ///< [length] RMS vertex distance from the branch's last state to the new one
+  double energy_drop = 0.0;       ///< [energy] E_knot + E_load released by the jump (dissipated)
+  Points loaded;                  ///< n by 3: the stable state it falls into under the load
+  double loaded_energy = 0.0;     ///< [energy] E_knot + E_load there
+  Points released;                ///< n by 3: that state relaxed without the load
+  std::string released_status;    ///< RelaxResult::status()
+  double released_energy = 0.0;   ///< [energy]
+  bool alexander_preserved = true;
+};
+
+struct KnotLoadResult {
+  LoadPath path;
+  std::string parameter_name;     ///< "distance", "gap" or "force"
+  double start_energy = 0.0;      ///< [energy] the start relaxed without load
+  /// [energy] ∫ ∂E/∂μ dμ along the path (trapezoids; a snap is a jump at
+  /// nearly fixed μ and does no work): for a displacement control, the
+  /// change of E_knot + E_load plus the energy the snaps dissipated
+  double work = 0.0;
+  double dissipated = 0.0;        ///< [energy] Σ of the snaps' energy drops
+  bool alexander_preserved = true;  ///< at every path point
+  std::vector<Snap> snaps;
+  Vec3 normal = Vec3::UnitZ();    ///< plates: the normal used
+  std::array<int, 2> vertices{-1, -1};  ///< pull, force: the vertices used
+  double pull_stiffness = 0.0;    ///< [energy/length²] the pull's k
+};
+
+/// Loads `start` (n by 3, simple; rest lengths `rest`, n) as `options` say:
+/// relaxes it without load first, then follows its stable equilibria from
+/// `from` to `to` (continuation.hpp with the model's Newton solver as the
+/// corrector); where the branch ends the knot snaps into another stable
+/// state and, unless stop_at_snap, the path goes on from there. InputError
+/// for bad options or a start the model refuses (touching itself, outside the
+/// plates at `from`).
+KnotLoadResult load_knot(const Points& start, const VecX& rest, const KnotLoadOptions& options);
+
+}  // namespace ek

@@ -1,0 +1,343 @@
+#include "ek/mechanics/continuation.hpp"
+
+#include <Eigen/SparseLU>
+#include <chrono>
+#include <cmath>
+
+#include "ek/core/errors.hpp"
+#include "ek/solver/eigen_analysis.hpp"
+#include "ek/solver/saddle.hpp"
+
+namespace ek {
+
+void ContinuationOptions::validate() const {
+  require_input(std::isfinite(target), "continuation: the target must be finite");
+  require_input(!step || (*step > 0.0 && std::isfinite(*step)), "continuation: the step must be positive");
+  require_input(min_step_factor > 0.0 && min_step_factor < 1.0, "continuation: min_step_factor must be in (0, 1)");
+  require_input(max_step_factor >= 1.0, "continuation: max_step_factor must be >= 1");
+  require_input(max_points >= 1 && corrector_iterations >= 1, "continuation: max_points and corrector_iterations >= 1");
+  require_input(gradient_tolerance > 0.0 && index_threshold > 0.0 && eigen_count >= 0,
+                "continuation: tolerance and index threshold must be positive, eigen_count >= 0");
+  require_input(max_jump > 0.0, "continuation: max_jump must be positive");
+  if (minimizer) minimizer->validate();
+}
+
+std::string to_string(PathEvent e) {
+  switch (e) {
+    case PathEvent::Regular: return "regular";
+    case PathEvent::LimitPoint: return "limit-point";
+    case PathEvent::Bifurcation: return "bifurcation";
+    case PathEvent::Snap: return "snap";
+  }
+  return "?";
+}
+
+std::string to_string(PathStatus s) {
+  switch (s) {
+    case PathStatus::Reached: return "reached";
+    case PathStatus::MaxPoints: return "max-points";
+    case PathStatus::Stalled: return "stalled";
+    case PathStatus::Stopped: return "stopped";
+  }
+  return "?";
+}
+
+// ---- the loaded knot -----------------------------------------------------------
+
+LoadedKnot::LoadedKnot(Objective& knot, ControlledLoad& load) : knot_(knot), load_(load) {
+  x_ = knot_.dofs();
+  load_.set_dofs(x_);
+}
+
+void LoadedKnot::set_dofs(const VecX& x) {
+  x_ = x;
+  knot_.set_dofs(x);
+  load_.set_dofs(x);
+}
+
+VecX LoadedKnot::gradient() {
+  VecX g = knot_.gradient();
+  load_.add_gradient(g);
+  return g;
+}
+
+void LoadedKnot::assemble_hessian(SparseAssembler& A, HessianKind kind) {
+  knot_.assemble_hessian(inner_, kind);
+  const auto& K = inner_.matrix();
+  A.begin(num_dofs());
+  A.segment(0, inner_.pattern_version());  // the copy's positions follow the knot's pattern
+  for (int col = 0; col < K.outerSize(); ++col)
+    for (Eigen::SparseMatrix<double, Eigen::ColMajor, int>::InnerIterator it(K, col); it; ++it)
+      A.add(it.row(), col, it.value());
+  A.segment(1, load_.hessian_structure());
+  load_.add_hessian(A, kind);
+  A.end();
+}
+
+double LoadedKnot::max_step(const VecX& x, const VecX& dx) {
+  return std::min(knot_.max_step(x, dx), load_.max_step(x, dx));
+}
+
+void LoadedKnot::accept() {
+  knot_.accept();
+  load_.accept();
+}
+
+std::vector<EnergyPart> LoadedKnot::energy_parts() {
+  std::vector<EnergyPart> parts = knot_.energy_parts();
+  load_.add_energy_parts(parts);
+  return parts;
+}
+
+void LoadedKnot::set_parameter(double mu) { load_.set_parameter(mu); }
+
+Eigen::MatrixXd LoadedKnot::rigid_modes() {
+  if (!load_.plates()) return knot_.rigid_modes();
+  // the plates keep the translations in their plane and the rotation about their normal
+  const Points P = as_points(x_.head(x_.size() / 3 * 3));
+  const Vec3 a = load_.normal(), c = P.colwise().mean().transpose();
+  const Vec3 u = a.unitOrthogonal(), v = a.cross(u);
+  Eigen::MatrixXd Q = Eigen::MatrixXd::Zero(num_dofs(), 3);
+  for (Eigen::Index i = 0; i < P.rows(); ++i) {
+    Q.block<3, 1>(3 * i, 0) = u;
+    Q.block<3, 1>(3 * i, 1) = v;
+    Q.block<3, 1>(3 * i, 2) = a.cross(P.row(i).transpose() - c);
+  }
+  Eigen::HouseholderQR<Eigen::MatrixXd> qr(Q);
+  return qr.householderQ() * Eigen::MatrixXd::Identity(num_dofs(), 3);
+}
+
+// ---- path following --------------------------------------------------------------
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+using SpMat = Eigen::SparseMatrix<double>;
+
+/// The exact Hessian with the rigid directions made regular (H + κ QQᵀ, κ
+/// the mean |H_ii|), factorised by a sparse LU; solutions have no rigid part.
+class HessianSolver {
+ public:
+  explicit HessianSolver(ParameterizedObjective& f) {
+    SparseAssembler A;
+    f.assemble_hessian(A, HessianKind::Exact);
+    upper_ = A.matrix();
+    SpMat H = upper_.selfadjointView<Eigen::Upper>();
+    Q_ = f.rigid_modes();
+    if (Q_.cols() > 0) H += (H.diagonal().cwiseAbs().mean() * Q_ * Q_.transpose()).sparseView();
+    H.makeCompressed();
+    lu_.compute(H);
+    ok_ = lu_.info() == Eigen::Success;
+  }
+  bool ok() const { return ok_; }
+  VecX solve(const VecX& r) {
+    VecX x = lu_.solve(r);
+    if (Q_.cols() > 0) x -= Q_ * (Q_.transpose() * x);
+    return x;
+  }
+  const Eigen::SparseMatrix<double, Eigen::ColMajor, int>& upper() const { return upper_; }
+  const Eigen::MatrixXd& rigid() const { return Q_; }
+
+ private:
+  Eigen::SparseMatrix<double, Eigen::ColMajor, int> upper_;
+  Eigen::MatrixXd Q_;
+  Eigen::SparseLU<SpMat> lu_;
+  bool ok_ = false;
+};
+
+struct Tangent {
+  VecX x;
+  double mu = 0.0;
+};
+
+class Tracer {
+ public:
+  Tracer(ParameterizedObjective& f, const ContinuationOptions& o) : f_(f), o_(o), w2_(1.0 / f.num_dofs()) {}
+
+  /// Moves (f's dofs, μ) to (x, μ) if the state is admissible there.
+  bool move(const VecX& x, double mu) {
+    f_.set_parameter(mu);
+    f_.set_dofs(x);
+    return std::isfinite(f_.energy());
+  }
+
+  /// Newton on G = 0 and the arclength condition (or with μ fixed when
+  /// `tangent` is null), from f's dofs; every step collision-free.
+  bool correct(const Tangent* tangent, const VecX& xp, double mup, int& iterations) {
+    for (iterations = 0; iterations < o_.corrector_iterations; ++iterations) {
+      VecX x = f_.dofs();
+      double mu = f_.parameter();
+      const VecX G = f_.gradient();
+      const double N = tangent ? w2_ * tangent->x.dot(x - xp) + tangent->mu * (mu - mup) : 0.0;
+      if (G.norm() <= o_.gradient_tolerance && std::abs(N) <= 1e-12 * (1.0 + std::abs(mup))) return true;
+      HessianSolver H(f_);
+      if (!H.ok()) return false;
+      VecX dx = H.solve(-G);
+      double dmu = 0.0;
+      if (tangent) {
+        const VecX b = H.solve(-f_.parameter_gradient());
+        dmu = -(N + w2_ * tangent->x.dot(dx)) / (w2_ * tangent->x.dot(b) + tangent->mu);
+        dx += dmu * b;
+      }
+      if (!step(x, mu, dx, dmu, G.norm())) return false;
+    }
+    return f_.gradient().norm() <= o_.gradient_tolerance;
+  }
+
+  /// The stable path's corrector: E(·; μ) minimised from f's dofs (μ fixed).
+  /// Its distance from `xp` in `jump`: |Δx| / √(dofs/3), the RMS vertex
+  /// distance when the dofs are vertices (|Δx| for fewer than 3 dofs).
+  bool minimize(const VecX& xp, int& iterations, double& jump) {
+    NewtonSolver solver(*o_.minimizer);
+    const NewtonReport r = solver.minimize(f_);
+    iterations = r.iterations;
+    jump = (f_.dofs() - xp).norm() / std::sqrt(std::max(1.0, f_.num_dofs() / 3.0));
+    return r.status == SolverStatus::ConvergedStable;
+  }
+
+  /// The unit tangent at f's point, oriented along `previous` (or towards increasing μ).
+  std::optional<Tangent> tangent(const Tangent* previous) {
+    HessianSolver H(f_);
+    if (!H.ok()) return std::nullopt;
+    Tangent t{H.solve(-f_.parameter_gradient()), 1.0};
+    const double norm = std::sqrt(w2_ * t.x.squaredNorm() + 1.0);
+    t.x /= norm;
+    t.mu /= norm;
+    const double along = previous ? w2_ * t.x.dot(previous->x) + t.mu * previous->mu : t.mu;
+    if (along < 0.0) {
+      t.x = -t.x;
+      t.mu = -t.mu;
+    }
+    return t;
+  }
+
+  /// The point's measures, stability included.
+  PathPoint measure(int iterations) {
+    PathPoint p;
+    p.dofs = f_.dofs();
+    p.parameter = f_.parameter();
+    p.energy = f_.energy();
+    p.gradient_norm = f_.gradient().norm();
+    p.parameter_derivative = f_.parameter_derivative();
+    p.corrector_iterations = iterations;
+    p.displacement = f_.displacement();
+    p.reaction = f_.reaction();
+    p.load_energy = f_.load_energy();
+    if (o_.eigen_count > 0) stability(p);
+    return p;
+  }
+
+ private:
+  /// x + t·dx, μ + t·dμ with t the collision-free fraction, halved until
+  /// the state is admissible (e.g. between the plates) and ||G|| decreases
+  /// (||G(t)|| <= (1 − 10⁻⁴ t)·||G(0)||, a merit line search: a full Newton
+  /// step along a soft sliding mode can overshoot into the contact barrier).
+  bool step(const VecX& x, double mu, const VecX& dx, double dmu, double g0) {
+    for (double t = std::min(1.0, f_.max_step(x, dx)); t > 1e-6; t *= 0.5) {
+      if (move(x + t * dx, mu + t * dmu) && f_.gradient().norm() <= (1.0 - 1e-4 * t) * g0) {
+        f_.accept();
+        return true;
+      }
+    }
+    move(x, mu);
+    return false;
+  }
+
+  void stability(PathPoint& p) {
+    SparseAssembler A;
+    f_.assemble_hessian(A, HessianKind::Exact);
+    const Eigen::MatrixXd Q = f_.rigid_modes();
+    const int count = std::min(o_.eigen_count, max_modes(f_.num_dofs(), static_cast<int>(Q.cols())));
+    const LowestModes m = lowest_modes(A.matrix(), Q, count, -o_.index_threshold, o_.index_threshold);
+    if (!m.converged) return;
+    p.lowest_eigenvalue = m.values(0);
+    p.lowest_mode = m.vectors.col(0);
+    p.index = static_cast<int>((m.values.array() < -o_.index_threshold).count());
+    p.stable = p.index == 0;
+  }
+
+  ParameterizedObjective& f_;
+  const ContinuationOptions& o_;
+  double w2_;
+};
+
+}  // namespace
+
+LoadPath follow_path(ParameterizedObjective& f, const ContinuationOptions& o,
+                     const std::function<bool(const PathPoint&)>& on_point) {
+  o.validate();
+  const auto t0 = Clock::now();
+  LoadPath path;
+  Tracer tr(f, o);
+  const double mu0 = f.parameter();
+  const double first = o.step.value_or(std::max(std::abs(o.target - mu0), 1e-12) / 40.0);
+  const auto finish = [&](PathStatus s) {
+    path.status = s;
+    path.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    return path;
+  };
+  const auto record = [&](PathPoint p) {  // false: the caller stops the path
+    path.points.push_back(p);
+    return !on_point || on_point(path.points.back());
+  };
+  int its = 0;
+  if (!tr.move(f.dofs(), mu0) || !tr.correct(nullptr, f.dofs(), mu0, its)) return finish(PathStatus::Stalled);
+  std::optional<Tangent> t = tr.tangent(nullptr);
+  if (!t) return finish(PathStatus::Stalled);
+  if ((o.target - mu0) * t->mu < 0.0) {
+    t->x = -t->x;
+    t->mu = -t->mu;
+  }
+  PathPoint p = tr.measure(its);
+  p.tangent_parameter = t->mu;
+  if (!record(p)) return finish(PathStatus::Stopped);
+  double ds = first;
+  while (static_cast<int>(path.points.size()) < o.max_points) {
+    const VecX xk = path.points.back().dofs;
+    const double muk = path.points.back().parameter;
+    // the last step lands on the target with μ fixed there
+    const bool towards = (o.target - muk) * t->mu > 0.0;
+    const bool last = towards && std::abs(ds * t->mu) >= std::abs(o.target - muk);
+    const double h = last ? (o.target - muk) / t->mu : ds;
+    const VecX xp = xk + h * t->x;
+    const double mup = last ? o.target : muk + h * t->mu;
+    const double safe = f.max_step(xk, xp - xk);
+    bool ok = safe >= 1.0 && tr.move(xp, mup);
+    bool snapped = false;
+    if (ok) {
+      f.accept();
+      if (o.minimizer) {
+        double jump = 0.0;
+        ok = tr.minimize(xp, its, jump);
+        // a jump at the smallest step is a snap; above it the step is halved
+        snapped = ok && jump > o.max_jump && std::min(ds, h) * 0.5 < o.min_step_factor * first;
+        ok = ok && (jump <= o.max_jump || snapped);
+      } else {
+        ok = tr.correct(last ? nullptr : &*t, xp, mup, its);
+      }
+    }
+    if (!ok) {
+      tr.move(xk, muk);
+      f.accept();
+      ds = std::min(ds, h) * 0.5;
+      if (ds < o.min_step_factor * first) return finish(PathStatus::Stalled);
+      continue;
+    }
+    const std::optional<Tangent> next = tr.tangent(&*t);
+    if (!next) return finish(PathStatus::Stalled);
+    PathPoint q = tr.measure(its);
+    q.tangent_parameter = next->mu;
+    const PathPoint& prev = path.points.back();
+    if (snapped) q.event = PathEvent::Snap;
+    else if (next->mu * t->mu < 0.0) q.event = PathEvent::LimitPoint;
+    else if (q.index >= 0 && prev.index >= 0 && q.index != prev.index) q.event = PathEvent::Bifurcation;
+    if (!record(q)) return finish(PathStatus::Stopped);
+    t = next;
+    if (last) return finish(PathStatus::Reached);
+    if (snapped) ds = first;
+    else if (its <= (o.minimizer ? 8 : 3)) ds = std::min(ds * 1.5, o.max_step_factor * first);
+  }
+  return finish(PathStatus::MaxPoints);
+}
+
+}  // namespace ek
