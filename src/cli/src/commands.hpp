@@ -26,4 +26,5 @@ int cmd_transition(int argc, char** argv);
 int cmd_transitions(int argc, char** argv);
 int cmd_path(int argc, char** argv);
 int cmd_connect(int argc, char** argv);
+int cmd_load(int argc, char** argv);
 }  // namespace ek::cli

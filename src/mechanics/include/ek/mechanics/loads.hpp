@@ -125,7 +125,7 @@ class PlatesLoad : public ControlledLoad {
   void set_parameter(double mu) override { g_ = mu; }
   VecX parameter_gradient(int dofs) const override;
   double parameter_derivative() const override;
-  double reaction() const override { return -parameter_derivative(); }
+  double reaction() const override { return 0.0 - parameter_derivative(); }
   double displacement() const override { return g_; }
   std::string parameter_name() const override { return "gap"; }
   bool plates() const override { return true; }
