@@ -2,7 +2,8 @@
 // between plates until it snaps, its folder agreeing with the JSON summary
 // (path.csv's rows and columns, the curves of the start, the end and the
 // snap), the knot type of every written curve; a pull that goes on through
-// its snaps with the work balanced; bad
+// its snaps with the work balanced; a start without equilibrium as one
+// line with exit status 1 and nothing written; bad
 // input as one line with exit status 2 and an existing output kept.
 #include <gtest/gtest.h>
 
@@ -111,4 +112,17 @@ TEST(LoadCli, BadInputIsOneLineAndExitTwo) {
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << ": " << r.err;
   }
   EXPECT_TRUE(fs::is_empty(dir + "/exists"));
+}
+
+// Plates starting at a gap of 0.7, inside the relaxed trefoil's extent plus
+// reach (0.80) yet with the curve between them: no equilibrium is found at
+// the start, which is one line on stderr, exit status 1, nothing written.
+TEST(LoadCli, AStartWithoutEquilibriumIsOneLineAndExitOne) {
+  const std::string dir = temp_dir("load_cli_stalled");
+  const std::string state = trefoil(dir);
+  const auto r = run("load " + state + " --plates --from 0.7 --to 0.35 -o " + dir + "/out");
+  EXPECT_EQ(r.status, 1) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find("no equilibrium under the load at its start (gap 0.7"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir + "/out"));
 }

@@ -205,6 +205,14 @@ int cmd_load(int argc, char** argv) {
   std::optional<DatasetReader> reader;
   if (!c.dataset.empty()) reader.emplace(c.dataset);
   const KnotLoadResult r = load_knot(state, rest, c.options);
+  if (r.path.points.empty()) {
+    std::cerr << "knots load: no equilibrium under the load at its start (" << r.parameter_name << " "
+              << fmt(r.from) << "): the path " << to_string(r.path.status)
+              << " before its first point; start where the relaxed knot rests under the load (without --from the "
+                 "load starts touching it); nothing is written"
+              << std::endl;
+    return 1;
+  }
   if (!r.alexander_preserved) throw TopologyError("load: the knot type changed along the path; nothing is written");
   const Json summary = summary_json(c, r, reader ? &*reader : nullptr);
   write_outputs(c, r, summary);

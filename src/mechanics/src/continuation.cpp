@@ -261,6 +261,44 @@ class Tracer {
   double w2_;
 };
 
+/// A predictor step: the point (x, μ) predicted, its length h (the step
+/// that was halved on failure) and whether it lands on the target.
+struct Step {
+  VecX x;
+  double mu = 0.0;
+  double h = 0.0;
+  bool last = false;
+};
+
+/// Pseudo-arclength predictor: h = Δs along the unit tangent, or the step
+/// that lands on the target when that is shorter.
+Step arclength_step(const Tangent& t, const VecX& xk, double muk, double ds, double target) {
+  const bool towards = (target - muk) * t.mu > 0.0;
+  Step s;
+  s.last = towards && std::abs(ds * t.mu) >= std::abs(target - muk);
+  s.h = s.last ? (target - muk) / t.mu : ds;
+  s.x = xk + s.h * t.x;
+  s.mu = s.last ? target : muk + s.h * t.mu;
+  return s;
+}
+
+/// Stable-path predictor: a stable branch is a graph over μ (H positive
+/// definite), so μ moves by Δs towards the target and x by Δμ·dx/dμ, with
+/// dx/dμ = −H⁻¹ ∂g/∂μ = t.x / t.mu (independent of the tangent's
+/// orientation); the predicted move is capped at max_jump (RMS per vertex),
+/// the minimizer doing the rest.
+Step stable_step(const Tangent& t, const VecX& xk, double muk, double ds, const ContinuationOptions& o) {
+  Step s;
+  s.last = std::abs(o.target - muk) <= ds;
+  s.h = s.last ? std::abs(o.target - muk) : ds;
+  s.mu = s.last ? o.target : muk + std::copysign(ds, o.target - muk);
+  VecX dx = (t.x / t.mu) * (s.mu - muk);
+  const double rms = dx.norm() / std::sqrt(std::max(1.0, static_cast<double>(dx.size()) / 3.0));
+  if (rms > o.max_jump) dx *= o.max_jump / rms;
+  s.x = xk + dx;
+  return s;
+}
+
 }  // namespace
 
 LoadPath follow_path(ParameterizedObjective& f, const ContinuationOptions& o,
@@ -296,11 +334,11 @@ LoadPath follow_path(ParameterizedObjective& f, const ContinuationOptions& o,
     const VecX xk = path.points.back().dofs;
     const double muk = path.points.back().parameter;
     // the last step lands on the target with μ fixed there
-    const bool towards = (o.target - muk) * t->mu > 0.0;
-    const bool last = towards && std::abs(ds * t->mu) >= std::abs(o.target - muk);
-    const double h = last ? (o.target - muk) / t->mu : ds;
-    const VecX xp = xk + h * t->x;
-    const double mup = last ? o.target : muk + h * t->mu;
+    const Step st = o.minimizer ? stable_step(*t, xk, muk, ds, o) : arclength_step(*t, xk, muk, ds, o.target);
+    const bool last = st.last;
+    const double h = st.h;
+    const VecX& xp = st.x;
+    const double mup = st.mu;
     const double safe = f.max_step(xk, xp - xk);
     bool ok = safe >= 1.0 && tr.move(xp, mup);
     bool snapped = false;
@@ -329,7 +367,7 @@ LoadPath follow_path(ParameterizedObjective& f, const ContinuationOptions& o,
     q.tangent_parameter = next->mu;
     const PathPoint& prev = path.points.back();
     if (snapped) q.event = PathEvent::Snap;
-    else if (next->mu * t->mu < 0.0) q.event = PathEvent::LimitPoint;
+    else if (!o.minimizer && next->mu * t->mu < 0.0) q.event = PathEvent::LimitPoint;
     else if (q.index >= 0 && prev.index >= 0 && q.index != prev.index) q.event = PathEvent::Bifurcation;
     if (!record(q)) return finish(PathStatus::Stopped);
     t = next;

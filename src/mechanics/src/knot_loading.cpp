@@ -50,18 +50,6 @@ Vec3 least_extent_axis(const Points& P) {
   return eig.eigenvectors().col(0);
 }
 
-/// The two vertices farthest apart.
-std::array<int, 2> diameter_pair(const Points& X) {
-  std::array<int, 2> best{0, 1};
-  double d2 = -1.0;
-  for (Eigen::Index a = 0; a < X.rows(); ++a)
-    for (Eigen::Index b = a + 1; b < X.rows(); ++b)
-      if (const double d = (X.row(a) - X.row(b)).squaredNorm(); d > d2) {
-        d2 = d;
-        best = {static_cast<int>(a), static_cast<int>(b)};
-      }
-  return best;
-}
 
 /// The load of `o` on the relaxed start `X` (its parameter set to `from`).
 std::unique_ptr<ControlledLoad> make_load(const Points& X, const VecX& rest, const KnotLoadOptions& o,
@@ -123,6 +111,28 @@ Snap snap_at(int k, const LoadPath& path, const KnotSystem& sys, const VecX& res
 
 }  // namespace
 
+std::array<int, 2> diameter_pair(const Points& X) {
+  std::array<int, 2> best{0, 1};
+  double d2 = -1.0;
+  for (Eigen::Index a = 0; a < X.rows(); ++a)
+    for (Eigen::Index b = a + 1; b < X.rows(); ++b)
+      if (const double d = (X.row(a) - X.row(b)).squaredNorm(); d > d2) {
+        d2 = d;
+        best = {static_cast<int>(a), static_cast<int>(b)};
+      }
+  return best;
+}
+
+double path_work(const LoadPath& path, size_t end) {
+  const auto& pts = path.points;
+  double work = 0.0;
+  for (size_t k = 1; k < std::min(end, pts.size()); ++k)
+    if (pts[k].event != PathEvent::Snap)
+      work += 0.5 * (pts[k - 1].parameter_derivative + pts[k].parameter_derivative) *
+              (pts[k].parameter - pts[k - 1].parameter);
+  return work;
+}
+
 KnotLoadResult load_knot(const Points& start, const VecX& rest, const KnotLoadOptions& o) {
   o.validate();
   RelaxOptions ro = o.relax;
@@ -135,6 +145,7 @@ KnotLoadResult load_knot(const Points& start, const VecX& rest, const KnotLoadOp
   double from = 0.0;
   const std::unique_ptr<ControlledLoad> load = make_load(relaxed.positions, rest, o, out, from);
   out.parameter_name = load->parameter_name();
+  out.from = from;
   LoadedKnot f(sys.objective(), *load);
   f.set_parameter(from);
   ContinuationOptions co;
@@ -152,15 +163,12 @@ KnotLoadResult load_knot(const Points& start, const VecX& rest, const KnotLoadOp
   });
   const auto& pts = out.path.points;
   for (size_t k = 1; k < pts.size(); ++k) {
-    if (pts[k].event == PathEvent::Snap) {
-      out.snaps.push_back(snap_at(static_cast<int>(k), out.path, sys, rest, o, alexander0));
-      out.dissipated += out.snaps.back().energy_drop;
-      if (!out.snaps.back().alexander_preserved) out.alexander_preserved = false;
-      continue;  // a jump at (nearly) fixed μ: no work
-    }
-    out.work += 0.5 * (pts[k - 1].parameter_derivative + pts[k].parameter_derivative) *
-                (pts[k].parameter - pts[k - 1].parameter);
+    if (pts[k].event != PathEvent::Snap) continue;
+    out.snaps.push_back(snap_at(static_cast<int>(k), out.path, sys, rest, o, alexander0));
+    out.dissipated += out.snaps.back().energy_drop;
+    if (!out.snaps.back().alexander_preserved) out.alexander_preserved = false;
   }
+  out.work = path_work(out.path, pts.size());
   return out;
 }
 

@@ -62,7 +62,10 @@ struct ContinuationOptions {
   double gradient_tolerance = 1e-8;  ///< [energy/length] a corrector has converged when ||G|| <= this
   int eigen_count = 4;               ///< [1] lowest eigenpairs computed at each point (0: no stability)
   double index_threshold = 1e-9;     ///< [energy/length²] eigenvalues below −this count as negative
-  /// The stable path instead of the arclength corrector: when set, each
+  /// The stable path instead of the arclength corrector: when set, the
+  /// step is taken in μ (Δs towards the target; a stable branch is a graph
+  /// over μ), the predictor is x + Δμ·dx/dμ with dx/dμ = −H⁻¹ ∂G/∂μ and its
+  /// move capped at `max_jump`, and each
   /// point minimises E(·; μ_p) from the predictor (NewtonSolver with these
   /// options: line search, shifts of indefinite Hessians, the CCD), so the
   /// path follows stable equilibria only. A minimiser that lands farther

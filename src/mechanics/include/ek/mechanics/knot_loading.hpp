@@ -76,8 +76,11 @@ struct Snap {
 };
 
 struct KnotLoadResult {
+  /// The stable path; no points (status stalled) when no equilibrium under
+  /// the load was found at its start `from`.
   LoadPath path;
   std::string parameter_name;     ///< "distance", "gap" or "force"
+  double from = 0.0;              ///< [length or energy/length] the control at the path's start
   double start_energy = 0.0;      ///< [energy] the start relaxed without load
   /// [energy] ∫ ∂E/∂μ dμ along the path (trapezoids; a snap is a jump at
   /// nearly fixed μ and does no work): for a displacement control, the
@@ -90,6 +93,13 @@ struct KnotLoadResult {
   std::array<int, 2> vertices{-1, -1};  ///< pull, force: the vertices used
   double pull_stiffness = 0.0;    ///< [energy/length²] the pull's k
 };
+
+/// The two vertices of X (n by 3) farthest apart (the default pull's pair).
+std::array<int, 2> diameter_pair(const Points& X);
+
+/// ∫ ∂E/∂μ dμ over the path's points [0, end) by trapezoids, a snap (a jump
+/// at nearly fixed μ) doing no work: KnotLoadResult::work for end = all.
+double path_work(const LoadPath& path, size_t end);
 
 /// Loads `start` (n by 3, simple; rest lengths `rest`, n) as `options` say:
 /// relaxes it without load first, then follows its stable equilibria from
