@@ -51,6 +51,7 @@ void bind_lattice(py::module_& m);
 void bind_contact(py::module_& m);
 void bind_solver(py::module_& m);
 void bind_analysis(py::module_& m);
+void bind_mechanics(py::module_& m);
 void bind_dataset(py::module_& m);
 
 }  // namespace ek::python

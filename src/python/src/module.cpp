@@ -12,8 +12,8 @@ the last to the first). Keyword arguments are named as the command-line
 options (docs/cli.md) in snake_case; results are Result objects whose
 fields are the JSON keys of the matching command. Bad input raises
 ValueError with the command's message; a change of knot type raises
-TopologyError. relax() and sample() release the GIL, so a thread pool runs
-them in parallel.)doc";
+TopologyError. relax(), sample() and load() release the GIL, so a thread
+pool runs them in parallel.)doc";
   using namespace ek::python;
   bind_core(m);
   bind_geometry(m);
@@ -23,5 +23,6 @@ them in parallel.)doc";
   bind_contact(m);
   bind_solver(m);
   bind_analysis(m);
+  bind_mechanics(m);
   bind_dataset(m);
 }

@@ -1,0 +1,206 @@
+// mechanics: a knot under load, its path of stable equilibria and its snaps.
+#include <cmath>
+#include <limits>
+
+#include "common.hpp"
+#include "ek/core/errors.hpp"
+#include "ek/dataset/dataset_search.hpp"
+#include "ek/geometry/polyline.hpp"
+#include "ek/mechanics/knot_loading.hpp"
+
+namespace ek::python {
+namespace {
+
+/// The data set's equilibrium closest to x (ICP, as `knots load --dataset`), or null.
+Json match_json(const DatasetReader* reader, const Points& x) {
+  if (!reader) return nullptr;
+  DatasetSearchOptions so;
+  so.max_results = 1;
+  const DatasetSearchResult r = search_dataset(*reader, x, so);
+  if (r.hits.empty()) return nullptr;
+  Json j;
+  j["knot"] = r.hits[0].knot;
+  j["index"] = r.hits[0].equilibrium;
+  j["distance"] = json_number(r.hits[0].distance);
+  return j;
+}
+
+/// The summary of `knots load --json` without the file keys (input, output).
+/// A path without a point (its start did not converge: stalled) has null
+/// end_energy and end_parameter.
+Json load_json(const KnotLoadOptions& o, const KnotLoadResult& r, const Json& start_match,
+               const std::vector<Json>& released_matches) {
+  const auto& pts = r.path.points;
+  const auto at = [](const PathPoint* p, double PathPoint::*field) {
+    return p ? json_number(p->*field) : Json(nullptr);
+  };
+  const PathPoint* last = pts.empty() ? nullptr : &pts.back();
+  Json j;
+  j["load"] = to_string(o.kind);
+  j["parameter"] = r.parameter_name;
+  j["from"] = json_number(r.from);
+  j["to"] = json_number(o.to);
+  j["vertices"] = o.kind == LoadKind::Plates ? Json(nullptr) : Json(r.vertices);
+  j["normal"] = o.kind == LoadKind::Plates ? Json({r.normal(0), r.normal(1), r.normal(2)}) : Json(nullptr);
+  j["pull_stiffness"] = o.kind == LoadKind::Pull ? json_number(r.pull_stiffness) : Json(nullptr);
+  j["status"] = to_string(r.path.status);
+  j["points"] = pts.size();
+  j["start_energy"] = json_number(r.start_energy);
+  j["end_energy"] = at(last, &PathPoint::energy);
+  j["end_parameter"] = at(last, &PathPoint::parameter);
+  j["work"] = json_number(r.work);
+  j["dissipated"] = json_number(r.dissipated);
+  j["alexander_preserved"] = r.alexander_preserved;
+  j["start_match"] = start_match;
+  j["snaps"] = Json::array();
+  for (size_t k = 0; k < r.snaps.size(); ++k) {
+    const Snap& s = r.snaps[k];
+    Json sj;
+    sj["point"] = s.point;
+    sj["parameter"] = json_number(s.parameter);
+    sj["reaction"] = json_number(s.reaction);
+    sj["jump"] = json_number(s.jump);
+    sj["energy_drop"] = json_number(s.energy_drop);
+    sj["loaded_energy"] = json_number(s.loaded_energy);
+    sj["released_status"] = s.released_status;
+    sj["released_energy"] = json_number(s.released_energy);
+    sj["released_match"] = released_matches[k];
+    j["snaps"].push_back(sj);
+  }
+  j["seconds"] = json_number(r.path.seconds);
+  return j;
+}
+
+/// The path's columns (those of path.csv) as numpy arrays, and its curves.
+Result path_result(const LoadPath& path, Eigen::Index n) {
+  const auto& pts = path.points;
+  const auto m = static_cast<py::ssize_t>(pts.size());
+  py::array_t<double> parameter(m), displacement(m), reaction(m), stiffness(m), energy(m), load_energy(m),
+      gradient_norm(m), lowest_eigenvalue(m);
+  py::array_t<int> index(m), corrector_iterations(m);
+  py::array_t<bool> stable(m);
+  py::list event;
+  py::array_t<double> curves({m, static_cast<py::ssize_t>(n), py::ssize_t{3}});
+  for (py::ssize_t k = 0; k < m; ++k) {
+    const PathPoint& p = pts[static_cast<size_t>(k)];
+    parameter.mutable_at(k) = p.parameter;
+    displacement.mutable_at(k) = p.displacement;
+    reaction.mutable_at(k) = p.reaction;
+    const PathPoint* q = k > 0 ? &pts[static_cast<size_t>(k) - 1] : nullptr;
+    stiffness.mutable_at(k) = q && p.event != PathEvent::Snap && p.displacement != q->displacement
+                                  ? (p.reaction - q->reaction) / (p.displacement - q->displacement)
+                                  : std::numeric_limits<double>::quiet_NaN();
+    energy.mutable_at(k) = p.energy;
+    load_energy.mutable_at(k) = p.load_energy;
+    gradient_norm.mutable_at(k) = p.gradient_norm;
+    index.mutable_at(k) = p.index;
+    lowest_eigenvalue.mutable_at(k) = p.lowest_eigenvalue;
+    stable.mutable_at(k) = p.stable;
+    event.append(to_string(p.event));
+    corrector_iterations.mutable_at(k) = p.corrector_iterations;
+    Eigen::Map<Points>(curves.mutable_data(k), n, 3) = as_points(p.dofs.head(3 * n));
+  }
+  Result r{"path", py::dict()};
+  r.fields["parameter"] = parameter;
+  r.fields["displacement"] = displacement;
+  r.fields["reaction"] = reaction;
+  r.fields["stiffness"] = stiffness;
+  r.fields["energy"] = energy;
+  r.fields["load_energy"] = load_energy;
+  r.fields["gradient_norm"] = gradient_norm;
+  r.fields["index"] = index;
+  r.fields["lowest_eigenvalue"] = lowest_eigenvalue;
+  r.fields["stable"] = stable;
+  r.fields["event"] = event;
+  r.fields["corrector_iterations"] = corrector_iterations;
+  r.fields["points"] = curves;
+  return r;
+}
+
+Result load_state(const py::handle& state, const std::string& kind, double to,
+                  std::optional<std::array<int, 2>> vertices, std::optional<double> from,
+                  std::optional<std::array<double, 3>> normal, int steps, int max_points, bool go_on,
+                  std::optional<double> rest_length, std::optional<std::string> dataset) {
+  KnotLoadOptions o;
+  o.kind = parse_load_kind(kind);
+  require_input(!vertices || o.kind != LoadKind::Plates, "load: vertices apply to pull and force only");
+  require_input(!normal || o.kind == LoadKind::Plates, "--normal applies to --plates only");
+  require_input(!rest_length || (*rest_length > 0.0 && std::isfinite(*rest_length)), "--rest-length must be positive");
+  o.vertices = vertices;
+  o.from = from;
+  o.to = to;
+  if (normal) o.normal = Vec3((*normal)[0], (*normal)[1], (*normal)[2]);
+  o.steps = steps;
+  o.max_points = max_points;
+  o.stop_at_snap = !go_on;
+  o.validate();
+  const Points P = curve_arg(state, "state");
+  const VecX rest = rest_length ? VecX::Constant(P.rows(), *rest_length) : edge_lengths(P);
+  std::optional<DatasetReader> reader;
+  if (dataset) reader.emplace(*dataset);
+  KnotLoadResult r;
+  Json start_match;
+  std::vector<Json> released_matches;
+  {
+    py::gil_scoped_release release;
+    r = load_knot(P, rest, o);
+    if (r.alexander_preserved) {
+      const DatasetReader* dr = reader ? &*reader : nullptr;
+      if (!r.path.points.empty())
+        start_match = match_json(dr, as_points(r.path.points.front().dofs.head(3 * P.rows())));
+      for (const Snap& s : r.snaps) released_matches.push_back(match_json(dr, s.released));
+    }
+  }
+  if (!r.alexander_preserved) throw TopologyError("load: the knot type changed along the path");
+  const Json j = load_json(o, r, start_match, released_matches);
+  Result result = result_from_json(j, "load");
+  py::list snaps;
+  for (size_t k = 0; k < r.snaps.size(); ++k) {
+    Result s = result_from_json(j["snaps"][k], "snap");
+    s.fields["loaded"] = to_array(r.snaps[k].loaded);
+    s.fields["released"] = to_array(r.snaps[k].released);
+    snaps.append(py::cast(std::move(s)));
+  }
+  result.fields["snaps"] = snaps;
+  result.fields["path"] = py::cast(path_result(r.path, P.rows()));
+  return result;
+}
+
+}  // namespace
+
+void bind_mechanics(py::module_& m) {
+  m.def("load", &load_state, py::arg("state"), py::arg("kind"), py::arg("to"), py::kw_only(),
+        py::arg("vertices") = py::none(), py::arg("from_") = py::none(), py::arg("normal") = py::none(),
+        py::arg("steps") = KnotLoadOptions{}.steps, py::arg("max_points") = KnotLoadOptions{}.max_points,
+        py::arg("go_on") = false, py::arg("rest_length") = py::none(), py::arg("dataset") = py::none(),
+        R"doc(A knot under load (docs/models.md, "Knots under load"), as `knots load`: the closed
+polygon state, (n, 3), is relaxed without load, then its stable equilibria are followed
+as the control moves from from_ to `to`; where the branch ends the knot snaps into
+another stable state. kind: "pull" (vertices I and J pulled apart by a stiff spring;
+the parameter is their distance), "plates" (two parallel plates close on the knot; the
+gap) or "force" (opposite forces on I and J; the force). vertices: (I, J), 0-based, for
+pull and force (None: the relaxed state's two vertices farthest apart). from_ (`from` is a
+Python keyword): where the control starts (None: the relaxed state's distance of I and J,
+its extent along the normal plus the plates' reach on each side, or force 0). normal:
+the plates' normal, 3 floats (None: the relaxed state's axis of least extent). steps: the
+first step is |to - from| / steps. max_points: points of the path at most. go_on: go on
+after a snap from the state it fell into (False: stop at the first). rest_length: of
+every edge (None: the state's own edge lengths). dataset: a data set file; the start and
+each snap's released state are matched to its closest equilibrium (ICP).
+
+Fields: the JSON keys of `knots load` (load, parameter, from, to, vertices, normal,
+pull_stiffness, status, points, start_energy, end_energy, end_parameter, work,
+dissipated, alexander_preserved, start_match, snaps, seconds); each snap a Result with
+point, parameter, reaction, jump, energy_drop, loaded_energy, released_status,
+released_energy, released_match, and loaded and released, (n, 3): the state it fell into
+under the load and that state relaxed without it. path: a Result of arrays, one entry per
+point (the columns of path.csv): parameter, displacement, reaction, stiffness (NaN at the
+first point and at a snap), energy, load_energy, gradient_norm, index, lowest_eigenvalue,
+stable, event (a list of "regular", "snap", ...), corrector_iterations, and points,
+(points, n, 3), the equilibrium at each. A path whose start did not converge has status
+"stalled", no point, and end_energy and end_parameter None. A change of knot type
+raises TopologyError.
+Releases the GIL while it computes.)doc");
+}
+
+}  // namespace ek::python
