@@ -11,6 +11,7 @@
 #include "generalization_summary.hpp"
 #include "hausdorff_summary.hpp"
 #include "jumping_knots_summary.hpp"
+#include "loads_summary.hpp"
 #include "milnor_summary.hpp"
 #include "multistability_summary.hpp"
 #include "periodic_braids_summary.hpp"
@@ -170,6 +171,12 @@ TEST(Summaries, OtherSummariesRoundTrip) {
   EXPECT_EQ(sr.verified_saddles.at(0).folder, "state1_search3");
   EXPECT_DOUBLE_EQ(sr.verified_saddles.at(0).other_similarity, 0.9998);
   EXPECT_EQ(ordered_json(sd).begin().key(), "scale");
+  LoadsSummary ld;
+  ld.plates_to = 4.0;
+  ld.flips = 2;
+  EXPECT_EQ(round_trip(ld).plates_to, 4.0);
+  EXPECT_EQ(round_trip(ld).flips, 2);
+  EXPECT_EQ(ordered_json(ld).begin().key(), "scale");
   TimeVsErrorSummary t;
   t.michell = {{400, 2.6, 1e-4}};
   EXPECT_EQ(round_trip(t).michell.at(0).n, 400);
