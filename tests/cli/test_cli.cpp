@@ -11,6 +11,7 @@
 #include "cli_runner.hpp"
 #include "ek/core/config.hpp"
 #include "ek/geometry/curve_io.hpp"
+#include "ek/geometry/link.hpp"
 #include "output.hpp"
 #include "testing.hpp"
 
@@ -134,6 +135,43 @@ TEST(Cli, BadInputExitsWithStatus2AndOneLine) {
   expect_bad_input("embed 3_1 --tilt nan -o " + dir + "/x.obj", "--tilt: 'nan' is not a finite number");
   expect_bad_input("embed 3_1 --tilt 90 --strand-spacing 1.5 -o " + dir + "/x.obj", "too large for a tilted coil");
   expect_bad_input("embed 3_1 -o " + dir + "/x.ply", "unknown curve format");
+  std::filesystem::remove_all(dir);
+}
+
+// A link file (the (2, 4) torus link: two (1, 2) curves on a torus, one l
+// loop each): each component's invariants, the linking numbers ±2 as
+// integers, the clearance between components; a link whose components cross
+// is bad input.
+TEST(Cli, InvariantsOfALink) {
+  const std::string dir = temp_dir("link_invariants");
+  ek::Link link(2, ek::Points(120, 3));
+  for (int c = 0; c < 2; ++c)
+    for (int i = 0; i < 120; ++i) {
+      const double t = 2.0 * M_PI * i / 120, theta = 2.0 * t + c * M_PI;
+      link[static_cast<size_t>(c)].row(i) << (2.0 + std::cos(theta)) * std::cos(t),
+          (2.0 + std::cos(theta)) * std::sin(t), std::sin(theta);
+    }
+  ek::write_link(dir + "/t24.obj", link);
+  const auto r = run("invariants " + dir + "/t24.obj --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = r.json();
+  EXPECT_EQ(j.at("components"), 2);
+  EXPECT_EQ(j.at("vertices"), 240);
+  ASSERT_EQ(j.at("component").size(), 2u);
+  for (const auto& c : j.at("component")) EXPECT_EQ(c.at("alexander"), std::vector<int>{1});
+  const int lk = j.at("linking_numbers")[0][1];
+  EXPECT_EQ(std::abs(lk), 2);
+  EXPECT_EQ(j.at("linking_numbers")[1][0], lk);
+  EXPECT_EQ(j.at("linking_numbers")[0][0], 0);
+  EXPECT_LT(j.at("linking_error").get<double>(), 1e-9);
+  // at each angle φ the components are opposite on the tube's circle of radius 1: 2 apart at most
+  EXPECT_GT(j.at("component_clearance").get<double>(), 0.5);
+  EXPECT_LE(j.at("component_clearance").get<double>(), 2.0);
+  const auto text = run("invariants " + dir + "/t24.obj");
+  ASSERT_EQ(text.status, 0) << text.err;
+  EXPECT_NE(text.out.find("components:      2"), std::string::npos) << text.out;
+  std::ofstream(dir + "/cross.txt") << "0 0 0\n2 0 0\n2 2 0\n0 2 0\n\n1 0 -1\n1 0 1\n1 -2 1\n1 -2 -1\n";
+  expect_bad_input("invariants " + dir + "/cross.txt", "components 1 and 2 touch or cross");
   std::filesystem::remove_all(dir);
 }
 

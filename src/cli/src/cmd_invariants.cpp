@@ -4,21 +4,54 @@
 #include "args.hpp"
 #include "commands.hpp"
 #include "ek/geometry/curve_io.hpp"
+#include "ek/geometry/link.hpp"
 #include "ek/knots/invariants.hpp"
 #include "ek/knots/json.hpp"
 #include "output.hpp"
 
 namespace ek::cli {
+namespace {
+
+/// A link's invariants: each component's, the linking numbers, the clearance between components.
+int print_link(const std::string& file, const LinkInvariants& l, bool json) {
+  if (json) {
+    Json j;
+    j["file"] = file;
+    j.update(link_invariants_json(l));
+    print_json(j);
+    return 0;
+  }
+  std::cout << "components:      " << l.components.size() << "\n";
+  for (size_t k = 0; k < l.components.size(); ++k) {
+    const CurveInvariants& c = l.components[k];
+    std::cout << "component " << k + 1 << ":     " << c.vertices << " vertices, length " << fmt(c.length)
+              << ", Alexander " << c.alexander.to_string() << ", writhe " << fmt(c.writhe) << "\n";
+  }
+  std::cout << "linking numbers:";
+  for (Eigen::Index a = 0; a < l.linking_numbers.rows(); ++a) {
+    std::cout << (a == 0 ? " " : "\n                 ");
+    for (Eigen::Index b = 0; b < l.linking_numbers.cols(); ++b) std::cout << (b ? " " : "") << l.linking_numbers(a, b);
+  }
+  std::cout << " (largest distance of the Gauss sums to integers " << fmt(l.linking_error, 2) << ")\n"
+            << "clearance between components: " << fmt(l.component_clearance) << "\n";
+  return 0;
+}
+
+}  // namespace
 
 int cmd_invariants(int argc, char** argv) {
   std::string file;
   bool json = false;
   ArgParser args("invariants", "FILE [--json]");
-  args.positional("FILE", &file, "closed curve, .obj (v and l lines) or .txt (x y z per line)");
+  args.positional("FILE", &file,
+                  "closed curve or link, .obj (v and l lines, one l loop per component) or .txt (x y z per line, "
+                  "a blank line between components)");
   args.flag("--json", &json, "print one JSON object");
   if (!args.parse(argc, argv)) return 0;
 
-  const Points P = read_curve(file);
+  const Link link = read_link(file);
+  if (link.size() > 1) return print_link(file, link_invariants(link), json);
+  const Points& P = link[0];
   const CurveInvariants c = curve_invariants(P);
   if (json) {
     Json j;

@@ -39,4 +39,27 @@ Json invariants_json(const CurveInvariants& c) {
   return j;
 }
 
+Json link_invariants_json(const LinkInvariants& l) {
+  Json j;
+  j["components"] = l.components.size();
+  int vertices = 0;
+  Json each = Json::array();
+  for (const CurveInvariants& c : l.components) {
+    vertices += c.vertices;
+    each.push_back(invariants_json(c));
+  }
+  j["vertices"] = vertices;
+  j["component"] = each;
+  Json rows = Json::array();
+  for (Eigen::Index a = 0; a < l.linking_numbers.rows(); ++a) {
+    Json row = Json::array();
+    for (Eigen::Index b = 0; b < l.linking_numbers.cols(); ++b) row.push_back(l.linking_numbers(a, b));
+    rows.push_back(row);
+  }
+  j["linking_numbers"] = rows;
+  j["linking_error"] = json_number(l.linking_error);
+  j["component_clearance"] = json_number(l.component_clearance);
+  return j;
+}
+
 }  // namespace ek

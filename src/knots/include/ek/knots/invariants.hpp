@@ -3,6 +3,7 @@
 /// invariants` report them (and the Python module's knot() and invariants()).
 #include <cstdint>
 
+#include "ek/geometry/link.hpp"
 #include "ek/geometry/polyline.hpp"
 #include "ek/geometry/types.hpp"
 #include "ek/knots/polynomial.hpp"
@@ -28,5 +29,19 @@ struct CurveInvariants {
 /// The invariants of the closed polygon P (n by 3, a simple polygon: the
 /// Alexander polynomial needs a generic projection; InputError otherwise).
 CurveInvariants curve_invariants(const Points& P);
+
+/// What `knots invariants` measures on a link of m >= 2 components.
+struct LinkInvariants {
+  std::vector<CurveInvariants> components;  ///< each component's, in the file's order
+  Eigen::MatrixXd linking;                  ///< [1] m by m, Lk(i, j) as exact Gauss sums (link.hpp), zero diagonal
+  Eigen::MatrixXi linking_numbers;          ///< [1] m by m, `linking` rounded
+  double linking_error = 0.0;               ///< [1] max |linking − linking_numbers|: a sanity check, ~1e-12
+  double component_clearance = 0.0;         ///< [length] smallest distance between two components
+};
+
+/// The invariants of a link (validate_link: disjoint components, each a
+/// simple polygon). Throws InputError for a link of one component (use
+/// curve_invariants) and as curve_invariants does.
+LinkInvariants link_invariants(const Link& link);
 
 }  // namespace ek

@@ -19,4 +19,9 @@ Json knot_info_json(const KnotRecord& knot, const KnotTable& table);
 /// determinant, writhe, total_curvature, clearance.
 Json invariants_json(const CurveInvariants& invariants);
 
+/// `knots invariants` of a link after `file`: components (m), vertices (in
+/// all), component (m objects as invariants_json), linking_numbers (m by m
+/// integers), linking_error, component_clearance.
+Json link_invariants_json(const LinkInvariants& invariants);
+
 }  // namespace ek
