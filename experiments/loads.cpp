@@ -198,7 +198,7 @@ void run_one(const Args& a, int id, const Run& r, Csv& loads, Csv& snaps, result
 int main(int argc, char** argv) {
   return run_experiment(argc, argv, "exp_loads", "Knots under load: the puzzle pairs pressed and pulled.",
                         [](const Args& a) {
-    announce(a, "exp_loads", "the puzzle pairs pressed between plates and pulled", by_scale(a, 40.0, 600.0, 1800.0));
+    announce(a, "exp_loads", "the puzzle pairs pressed between plates and pulled", by_scale(a, 40.0, 900.0, 2700.0));
     std::filesystem::create_directories(a.out + "/curves");
     std::filesystem::create_directories(a.out + "/paths");
     const std::vector<Pair> pairs = read_pairs(a, by_scale(a, 1, 4, 12));

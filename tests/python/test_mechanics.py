@@ -81,8 +81,9 @@ def test_pressed_trefoil_snaps_once_and_springs_back(state, pressed):
     # the plates start at the relaxed state's extent along the normal plus one wire radius on each side,
     # close monotonically, push ever harder (negative secant stiffness), and keep every vertex between them
     p = r.path
-    centre = p.points[0].mean(axis=0)
-    depth = np.abs((p.points - centre) @ np.asarray(r.normal))  # (points, n)
+    heights = p.points @ np.asarray(r.normal)  # (points, n): the plates are centred on the start's extent
+    middle = 0.5 * (heights[0].max() + heights[0].min())
+    depth = np.abs(heights - middle)
     assert r["from"] == pytest.approx(2.0 * (depth[0].max() + RADIUS), rel=1e-12)
     assert np.all(np.diff(p.parameter[:-1]) < 0.0)
     assert np.all(p.reaction[1:] > 0.0)

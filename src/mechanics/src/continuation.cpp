@@ -1,5 +1,6 @@
 #include "ek/mechanics/continuation.hpp"
 
+#include <Eigen/Geometry>
 #include <Eigen/SparseLU>
 #include <chrono>
 #include <cmath>
@@ -145,6 +146,17 @@ class HessianSolver {
   bool ok_ = false;
 };
 
+/// The RMS distance per vertex from the predictor xp to the landing x after
+/// the best rigid motion of the first `vertices` positions (Eigen::umeyama,
+/// without scaling); with no vertices, |x − xp| / √(dofs/3).
+double shape_jump(const VecX& x, const VecX& xp, Eigen::Index vertices) {
+  if (vertices < 3) return (x - xp).norm() / std::sqrt(std::max(1.0, static_cast<double>(x.size()) / 3.0));
+  const Eigen::Map<const Eigen::Matrix3Xd> to(x.data(), 3, vertices), from(xp.data(), 3, vertices);
+  const Eigen::Matrix4d T = Eigen::umeyama(to, from, false);
+  const Eigen::Matrix3Xd moved = (T.topLeftCorner<3, 3>() * to).colwise() + T.topRightCorner<3, 1>();
+  return std::sqrt((moved - from).squaredNorm() / static_cast<double>(vertices));
+}
+
 struct Tangent {
   VecX x;
   double mu = 0.0;
@@ -191,7 +203,7 @@ class Tracer {
     NewtonSolver solver(*o_.minimizer);
     const NewtonReport r = solver.minimize(f_);
     iterations = r.iterations;
-    jump = (f_.dofs() - xp).norm() / std::sqrt(std::max(1.0, f_.num_dofs() / 3.0));
+    jump = shape_jump(f_.dofs(), xp, f_.rigid_vertices());
     return r.status == SolverStatus::ConvergedStable;
   }
 
@@ -285,17 +297,14 @@ Step arclength_step(const Tangent& t, const VecX& xk, double muk, double ds, dou
 /// Stable-path predictor: a stable branch is a graph over μ (H positive
 /// definite), so μ moves by Δs towards the target and x by Δμ·dx/dμ, with
 /// dx/dμ = −H⁻¹ ∂g/∂μ = t.x / t.mu (independent of the tangent's
-/// orientation); the predicted move is capped at max_jump (RMS per vertex),
-/// the minimizer doing the rest.
+/// orientation); near a fold, where dx/dμ grows, the CCD's safe step and the
+/// minimizer's jump halve Δs.
 Step stable_step(const Tangent& t, const VecX& xk, double muk, double ds, const ContinuationOptions& o) {
   Step s;
   s.last = std::abs(o.target - muk) <= ds;
   s.h = s.last ? std::abs(o.target - muk) : ds;
   s.mu = s.last ? o.target : muk + std::copysign(ds, o.target - muk);
-  VecX dx = (t.x / t.mu) * (s.mu - muk);
-  const double rms = dx.norm() / std::sqrt(std::max(1.0, static_cast<double>(dx.size()) / 3.0));
-  if (rms > o.max_jump) dx *= o.max_jump / rms;
-  s.x = xk + dx;
+  s.x = xk + (t.x / t.mu) * (s.mu - muk);
   return s;
 }
 

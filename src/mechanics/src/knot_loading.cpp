@@ -72,11 +72,13 @@ std::unique_ptr<ControlledLoad> make_load(const Points& X, const VecX& rest, con
     return std::make_unique<ForceLoad>(i, j, from);
   }
   out.normal = o.normal ? o.normal->normalized() : least_extent_axis(X);
-  const Vec3 c = X.colwise().mean().transpose();
+  // centred on the knot's extent along the normal, so that by default both plates touch it at the start
+  const Vec3 centroid = X.colwise().mean().transpose();
+  const VecX s = (X.rowwise() - centroid.transpose()) * out.normal;
+  const Vec3 c = centroid + 0.5 * (s.maxCoeff() + s.minCoeff()) * out.normal;
+  const double extent = 0.5 * (s.maxCoeff() - s.minCoeff());
   const ResolvedModel model = resolve_model(o.relax, ell);
   const double reach = o.plates_reach * o.relax.material.radius;
-  double extent = 0.0;
-  for (Eigen::Index k = 0; k < X.rows(); ++k) extent = std::max(extent, std::abs(out.normal.dot(X.row(k).transpose() - c)));
   from = o.from.value_or(2.0 * (extent + reach));
   auto plates = std::make_unique<PlatesLoad>(c, out.normal, from, reach, o.plates_stiffness * model.contact_stiffness);
   plates->set_dofs(as_vector(X));

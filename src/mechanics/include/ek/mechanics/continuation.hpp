@@ -49,6 +49,11 @@ class ParameterizedObjective : public Objective {
   virtual double displacement() { return parameter(); }
   virtual double reaction() { return parameter_derivative(); }
   virtual double load_energy() { return 0.0; }
+  /// Vertices whose positions lead the dofs (x0 y0 z0 x1 ...): the stable
+  /// path measures a minimiser's jump after the best rigid motion of them
+  /// (a knot pushed or turned whole by a load has not snapped); 0: the
+  /// plain RMS of all dofs.
+  virtual Eigen::Index rigid_vertices() const { return 0; }
 };
 
 struct ContinuationOptions {
@@ -73,7 +78,7 @@ struct ContinuationOptions {
   /// landing is kept as a snap (PathEvent::Snap: the stable state it jumped
   /// to, past a fold or a subcritical bifurcation).
   std::optional<NewtonOptions> minimizer;
-  double max_jump = 1.0;             ///< [length] |Δx|/√(dofs/3) from the predictor (minimizer only; the RMS vertex distance)
+  double max_jump = 1.0;             ///< [length] the RMS vertex distance from the predictor after the best rigid motion (rigid_vertices(); minimizer only)
   void validate() const;             ///< InputError for impossible values
 };
 
@@ -151,6 +156,7 @@ class LoadedKnot : public ParameterizedObjective {
   double displacement() override { return load_.displacement(); }
   double reaction() override { return load_.reaction(); }
   double load_energy() override { return load_.energy(); }
+  Eigen::Index rigid_vertices() const override { return num_dofs() / 3; }  // twist-free: the dofs are positions
   ControlledLoad& load() { return load_; }
 
  private:
