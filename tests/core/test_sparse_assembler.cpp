@@ -97,6 +97,34 @@ TEST(SparseAssembler, StoresUpperTriangleOnly) {
   EXPECT_DOUBLE_EQ(A.matrix().coeff(2, 0), 0.0);
 }
 
+// set_offset() shifts later adds (a block of the dofs adding at its own
+// indices), on the recording and on the replay pass; begin() resets it.
+TEST(SparseAssembler, OffsetShiftsAddsIntoTheirBlock) {
+  SparseAssembler A;
+  for (int pass = 0; pass < 2; ++pass) {
+    A.begin(5);
+    A.segment(0, 7);
+    A.add(0, 1, 1.0);
+    A.set_offset(3);
+    A.add(0, 1, 2.0);
+    A.add(1, 1, 3.0);
+    A.set_offset(0);
+    A.add(4, 4, 5.0);
+    A.end();
+    EXPECT_DOUBLE_EQ(A.matrix().coeff(0, 1), 1.0) << pass;
+    EXPECT_DOUBLE_EQ(A.matrix().coeff(3, 4), 2.0) << pass;
+    EXPECT_DOUBLE_EQ(A.matrix().coeff(4, 4), 8.0) << pass;
+    EXPECT_EQ(A.matrix().nonZeros(), 3) << pass;
+  }
+  A.begin(5);
+  A.set_offset(2);
+  A.end();
+  A.begin(5);
+  A.add(0, 0, 1.0);  // begin() reset the offset
+  A.end();
+  EXPECT_DOUBLE_EQ(A.matrix().coeff(0, 0), 1.0);
+}
+
 TEST(SparseAssembler, MisuseThrows) {
   SparseAssembler A;
   EXPECT_THROW(A.end(), std::invalid_argument);

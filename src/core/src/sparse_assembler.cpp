@@ -11,6 +11,7 @@ void SparseAssembler::begin(Index dofs) {
   require(!in_pass_, "SparseAssembler::begin: previous pass not ended");
   require(dofs >= 0, "SparseAssembler::begin: negative size");
   in_pass_ = true;
+  offset_ = 0;
   replay_ok_ = (dofs == dofs_ && H_.rows() == dofs);
   dofs_ = dofs;
   current_ = -1;

@@ -36,6 +36,10 @@ class SparseAssembler {
   /// Subsequent add() calls belong to segment `id` (0, 1, 2, ... in the same
   /// order every pass) whose sequence of positions is identified by `structure`.
   void segment(int id, std::uint64_t structure);
+  /// Subsequent add() calls are shifted by `offset` rows and columns (a
+  /// term over a block of the dofs, such as one component of a link, adds
+  /// at its own indices); 0 by default and after begin().
+  void set_offset(Index offset) { offset_ = offset; }
   /// Adds v at (i, j); stored at (min, max). Inline: the replay path (the
   /// common case) is one store into the cached value slot.
   void add(Index i, Index j, double v) {
@@ -47,7 +51,7 @@ class SparseAssembler {
         return;
       }
     }
-    add_slow(i, j, v);
+    add_slow(i + offset_, j + offset_, v);
   }
   /// Adds a dense symmetric local matrix H at global indices idx (H is k by k,
   /// idx has k entries; negative indices are skipped).
@@ -92,6 +96,7 @@ class SparseAssembler {
     // that fell back to recording those before it did
     size_t written_slots() const { return replay ? cursor : written; }
   };
+  Index offset_ = 0;
   using Matrix = Eigen::SparseMatrix<double, Eigen::ColMajor, Index>;
   void add_slow(Index i, Index j, double v);
   // The steps of end(): whether every segment replayed its pattern whole; and
