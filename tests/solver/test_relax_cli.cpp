@@ -1,6 +1,7 @@
 // `knots relax`: the command-line contract of the solver (docs/cli.md).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -114,5 +115,45 @@ TEST(RelaxCli, BadInputIsOneMessageAndStatusTwo) {
     const auto r = run("relax " + args);
     EXPECT_EQ(r.status, 2) << args << ": " << r.err;
     EXPECT_FALSE(r.err.empty()) << args;
+  }
+}
+
+// A link from the command line: the Borromean rings embedded from their
+// braid word (σ1σ2⁻¹)³ as three components, relaxed (converged stable,
+// every component still an unknot, every linking number still 0, the
+// components brought into contact), the relaxed file's invariants the
+// same; the knot-only options refused on a link; a knot's word embeds as
+// the knot.
+TEST(RelaxCli, BorromeanRingsFromTheirBraidWordRelaxAsALink) {
+  const std::string dir = temp_dir("relax_link");
+  auto e = run("embed --braid 1,-2,1,-2,1,-2 -n 240 -o " + dir + "/b.obj --json");
+  ASSERT_EQ(e.status, 0) << e.err;
+  EXPECT_EQ(e.json().at("components"), 3);
+  EXPECT_EQ(e.json().at("linking_numbers"), nlohmann::json::parse("[[0,0,0],[0,0,0],[0,0,0]]"));
+  const auto r = run("relax " + dir + "/b.obj -o " + dir + "/relaxed.obj --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = r.json();
+  EXPECT_EQ(j.at("status"), "converged-stable");
+  EXPECT_EQ(j.at("components"), 3);
+  EXPECT_EQ(j.at("alexander"), nlohmann::json::parse("[[1],[1],[1]]"));
+  EXPECT_TRUE(j.at("alexander_preserved").get<bool>() && j.at("linking_preserved").get<bool>());
+  EXPECT_LT(j.at("min_distance").get<double>(), 0.4);  // d̂: the rings press on each other
+  EXPECT_EQ(j.at("output"), dir + "/relaxed.obj");
+  const auto inv = run("invariants " + dir + "/relaxed.obj --json");
+  ASSERT_EQ(inv.status, 0) << inv.err;
+  EXPECT_EQ(inv.json().at("linking_numbers"), nlohmann::json::parse("[[0,0,0],[0,0,0],[0,0,0]]"));
+  EXPECT_EQ(inv.json().at("components"), 3);
+  const auto bad = run("relax " + dir + "/b.obj --planar 1");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.err.find("apply to a knot, not to a link of 3 components"), std::string::npos) << bad.err;
+  const auto trefoil = run("embed --braid 1,1,1 -o " + dir + "/t.obj --json");
+  ASSERT_EQ(trefoil.status, 0) << trefoil.err;
+  EXPECT_EQ(trefoil.json().at("alexander"), nlohmann::json::parse("[1,-1,1]"));
+  for (const std::string& args : {"embed 3_1 --braid 1,1,1 -o " + dir + "/x.obj", "embed --strands 3 3_1 -o " + dir + "/x.obj",
+                                  "embed --braid 1,1 --from pd -o " + dir + "/x.obj", "embed -o " + dir + "/x.obj",
+                                  "embed --braid 1,0,1 -o " + dir + "/x.obj"}) {
+    const auto b = run(args);
+    EXPECT_EQ(b.status, 2) << args;
+    EXPECT_EQ(std::count(b.err.begin(), b.err.end(), '\n'), 1) << args << ": " << b.err;
   }
 }

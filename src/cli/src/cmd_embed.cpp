@@ -1,4 +1,4 @@
-// knots embed NAME --from braid|pd [--style coil|cylinder] [-n N] -o FILE [--edge-length L] [--strand-spacing S]
+// knots embed NAME|--braid WORD [--strands S] --from braid|pd [--style coil|cylinder] [-n N] -o FILE [--edge-length L] [--strand-spacing S]
 //             [--crossing-height H] [--crossing-offset H] [--tilt DEG] [--json]
 #include <cmath>
 #include <iostream>
@@ -9,19 +9,62 @@
 #include "ek/core/errors.hpp"
 #include "ek/embedding/embedding.hpp"
 #include "ek/geometry/curve_io.hpp"
+#include "ek/geometry/link.hpp"
 #include "ek/embedding/json.hpp"
 #include "output.hpp"
 
 namespace ek::cli {
 
+namespace {
+
+/// A braid word's closure of several components: written as a link, summarised.
+int embed_link(const BraidWord& word, const EmbeddingOptions& opt, const std::string& out, bool json) {
+  const LinkEmbedding e = embed_braid_link(word, opt);
+  write_link(out, e.components);
+  int vertices = 0;
+  for (const Points& P : e.components) vertices += static_cast<int>(P.rows());
+  if (json) {
+    Json j;
+    j["name"] = "braid " + to_string(word);
+    j["from"] = "braid";
+    j["components"] = e.components.size();
+    j["vertices"] = vertices;
+    j["edge_length"] = json_number(e.edge_length);
+    j["max_edge_deviation"] = json_number(e.max_edge_deviation);
+    Json rows = Json::array();
+    for (Eigen::Index a = 0; a < e.linking_numbers.rows(); ++a) {
+      Json row = Json::array();
+      for (Eigen::Index b = 0; b < e.linking_numbers.cols(); ++b) row.push_back(e.linking_numbers(a, b));
+      rows.push_back(row);
+    }
+    j["linking_numbers"] = rows;
+    j["output"] = out;
+    print_json(j);
+    return 0;
+  }
+  std::cout << "wrote " << out << ": the closure of " << to_string(word) << ", a link of " << e.components.size()
+            << " components, " << vertices << " vertices, mean edge length " << fmt(e.edge_length) << "\n";
+  return 0;
+}
+
+}  // namespace
+
 int cmd_embed(int argc, char** argv) {
-  std::string name, from = "braid", style = "coil", out;
+  std::string from = "braid", style = "coil", out, braid;
+  std::vector<std::string> names;
+  int strands = 0;
   EmbeddingOptions opt;
   bool json = false;
   ArgParser args("embed",
-                 "NAME --from braid|pd [--style coil|cylinder] [-n N] -o FILE [--edge-length L] [--strand-spacing S] "
-                 "[--crossing-height H] [--crossing-offset H] [--tilt DEG] [--json]");
-  args.positional("NAME", &name, "knot name as in the table");
+                 "NAME|--braid WORD [--strands S] --from braid|pd [--style coil|cylinder] [-n N] -o FILE "
+                 "[--edge-length L] [--strand-spacing S] [--crossing-height H] [--crossing-offset H] [--tilt DEG] "
+                 "[--json]");
+  args.rest("NAME", &names, "knot name as in the table");
+  args.option("--braid", &braid,
+              "instead of NAME: a braid word, letters ±1, ±2, ... separated by commas (σ_i⁻¹ is -i; the table's "
+              "{1;-2;...} also), whose "
+              "closure is a knot or a link (a link is written with one component per cycle of the word)");
+  args.option("--strands", &strands, "with --braid: the number of strands (default: 1 + the largest |letter|)");
   args.option("--from", &from, "braid (closed braid coil, default) or pd (planar drawing of the PD code)");
   args.option("--style", &style,
               "braid: coil (strands side by side in a plane, default) or cylinder (strands stacked along the "
@@ -43,10 +86,29 @@ int cmd_embed(int argc, char** argv) {
   args.option("-o,--output", &out, "output curve file (.obj or .txt); written atomically");
   args.flag("--json", &json, "print a JSON summary");
   if (!args.parse(argc, argv)) return 0;
+  if (names.size() > 1) throw InputError("one NAME at most, got '" + names[1] + "' too");
+  if (names.empty() == braid.empty()) throw InputError(names.empty() ? "missing argument NAME (or --braid WORD)"
+                                                                     : "give NAME or --braid WORD, not both");
+  if (strands != 0 && braid.empty()) throw InputError("--strands applies to --braid only");
+  if (!braid.empty() && from != "braid") throw InputError("--from applies to NAME only");
   if (out.empty()) throw InputError("missing -o FILE");
   opt.braid_tilt = tilt_deg * M_PI / 180.0;
   opt.braid_style = parse_braid_style(style);
   check_writable(out);
+  if (!braid.empty()) {
+    const bool braced = braid.find_first_not_of(" \t") != std::string::npos && braid[braid.find_first_not_of(" \t")] == '{';
+    const BraidWord word = parse_braid_word(braced ? braid : "{" + braid + "}", strands);
+    if (closure_components(word) > 1) return embed_link(word, opt, out, json);
+    const Embedding e = embed_braid(word, opt);
+    write_curve(out, e.points);
+    if (json) print_json(embedding_json("braid " + to_string(word), e, out));
+    else
+      std::cout << "wrote " << out << ": the closure of " << to_string(word) << ", " << e.points.rows()
+                << " vertices, edge length " << fmt(e.edge_length) << ", clearance " << fmt(e.clearance)
+                << ", Alexander " << e.alexander->to_string() << "\n";
+    return 0;
+  }
+  const std::string& name = names[0];
   const KnotRecord& knot = KnotTable::global().at(name);
   const Embedding e = embed_knot(knot, parse_embedding_source(from), opt);
   write_curve(out, e.points);

@@ -10,6 +10,8 @@
 #include "ek/core/atomic_file.hpp"
 #include "ek/core/errors.hpp"
 #include "ek/geometry/curve_io.hpp"
+#include "ek/geometry/link.hpp"
+#include "ek/solver/link_relax.hpp"
 #include "ek/solver/json.hpp"
 #include "ek/solver/relax_request.hpp"
 #include "output.hpp"
@@ -31,7 +33,9 @@ bool parse_relax(int argc, char** argv, RelaxCommand& c) {
                           "[--young E] [--poisson NU] [--contact-stiffness W] [--continuation F[,F...]] [--full-model] "
                           "[--method M] [--coarse-levels L] [--factorization F] [--eigen] "
                           "[--stop-at-saddle] [--trace FILE.csv] [--verbose] [--json]");
-  args.positional("FILE", &c.file, "closed curve (.obj or .txt); its edge lengths are the rest lengths");
+  args.positional("FILE", &c.file,
+                  "closed curve or link (.obj or .txt, docs/cli.md 'Curve files'); its edge lengths are the rest "
+                  "lengths");
   args.option("-o,--output", &c.out, "write the equilibrium here (.obj or .txt), atomically");
   args.option("--link", &r.link, "prescribe the link Lk = Tw + Wr (full model with Theta fixed); default: Theta free");
   args.option("--planar", &r.planar, "keep every vertex in the slab |z| < H (barrier)");
@@ -95,11 +99,76 @@ void print_result(const RelaxCommand& c, const RelaxResult& r) {
   if (!c.out.empty() && r.alexander_preserved) std::cout << "wrote " << c.out << "\n";
 }
 
+/// The JSON keys of `knots relax` on a link (docs/cli.md).
+Json link_result_json(const RelaxCommand& c, const Link& link, const LinkRelaxResult& r) {
+  Json j;
+  j["file"] = c.file;
+  j["components"] = link.size();
+  int vertices = 0;
+  for (const Points& P : link) vertices += static_cast<int>(P.rows());
+  j["vertices"] = vertices;
+  j["status"] = r.status();
+  j["iterations"] = r.report.iterations;
+  j["seconds"] = json_number(r.report.seconds);
+  j["energy"] = json_number(r.energy);
+  j["gradient_norm"] = json_number(r.report.gradient_norm);
+  j["min_distance"] = json_number(r.min_distance);
+  Json alexander = Json::array();
+  for (const AlexanderPolynomial& a : r.alexander) alexander.push_back(a.coefficients);
+  j["alexander"] = alexander;
+  Json rows = Json::array();
+  for (Eigen::Index a = 0; a < r.linking_numbers.rows(); ++a) {
+    Json row = Json::array();
+    for (Eigen::Index b = 0; b < r.linking_numbers.cols(); ++b) row.push_back(r.linking_numbers(a, b));
+    rows.push_back(row);
+  }
+  j["linking_numbers"] = rows;
+  j["alexander_preserved"] = r.alexander_preserved;
+  j["linking_preserved"] = r.linking_preserved;
+  if (!c.out.empty() && r.status() != "topology-changed") j["output"] = c.out;
+  return j;
+}
+
+/// `knots relax` on a link of several components: relax_link() (the twist-free
+/// model, Newton at n with the method's Newton settings).
+int relax_link_file(const RelaxCommand& c, const Link& link) {
+  const RelaxRequest& q = c.request;
+  if (q.link || q.planar || q.release || q.full_model || q.eigen || q.stop_at_saddle || !c.trace.empty())
+    throw InputError("--link, --planar, --release, --full-model, --eigen, --stop-at-saddle and --trace apply to a "
+                     "knot, not to a link of " + std::to_string(link.size()) + " components");
+  const LinkRelaxResult r = relax_link(link, q.options());
+  const bool kept = r.alexander_preserved && r.linking_preserved;
+  if (!c.out.empty() && kept) write_link(c.out, r.positions);
+  if (c.json) {
+    print_json(link_result_json(c, link, r));
+  } else {
+    std::cout << "components:   " << link.size() << "\n"
+              << "status:       " << r.status() << " (" << r.report.iterations << " iterations, "
+              << fmt(r.report.seconds, 4) << " s)\n"
+              << "energy:       " << fmt(r.energy) << "\n"
+              << "gradient:     " << fmt(r.report.gradient_norm, 4) << "\n"
+              << "closest:      " << fmt(r.min_distance, 6) << "\n"
+              << "topology:     " << (kept ? "every component's Alexander polynomial and every linking number kept"
+                                           : "CHANGED: the result is rejected")
+              << "\n";
+    if (!c.out.empty() && kept) std::cout << "wrote " << c.out << "\n";
+  }
+  if (!kept) {
+    std::cerr << "knots relax: topology error: a component's Alexander polynomial or a linking number changed; "
+                 "no output written"
+              << std::endl;
+    return 1;
+  }
+  return r.converged() ? 0 : 1;
+}
+
 }  // namespace
 
 int cmd_relax(int argc, char** argv) {
   RelaxCommand c;
   if (!parse_relax(argc, argv, c)) return 0;
+  if (!c.out.empty()) check_writable(c.out);
+  if (const Link link = read_link(c.file); link.size() > 1) return relax_link_file(c, link);
   const RelaxOptions opt = c.request.options();
   if (!c.out.empty()) check_writable(c.out);
   if (!c.trace.empty()) check_writable(c.trace);

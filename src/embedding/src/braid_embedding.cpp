@@ -5,7 +5,9 @@
 
 #include "common.hpp"
 #include "ek/core/errors.hpp"
+#include "ek/geometry/link.hpp"
 #include "ek/geometry/polyline.hpp"
+#include "ek/geometry/resample.hpp"
 #include "ek/knots/alexander.hpp"
 
 namespace ek {
@@ -19,15 +21,17 @@ struct StrandSample {
   double lift = 0.0;      ///< [1] +sin πu for the over strand of a letter, -sin πu under, 0 elsewhere
 };
 
-/// Follows the strand from position 1 through the word until it returns
-/// (s turns for a knot): K samples per letter slot, the two strands of a
-/// letter exchanging positions along `step` (a smooth step [0,1] -> [0,1]).
-/// σ_i (letter +i): the strand coming from position i passes over.
-std::vector<StrandSample> strand_walk(const BraidWord& word, int K, const std::function<double(double)>& step) {
+/// Follows the strand from position `start` through the word until it
+/// returns there (s turns for a knot, from position 1): K samples per letter
+/// slot, the two strands of a letter exchanging positions along `step` (a
+/// smooth step [0,1] -> [0,1]). σ_i (letter +i): the strand coming from
+/// position i passes over.
+std::vector<StrandSample> strand_walk(const BraidWord& word, int K, const std::function<double(double)>& step,
+                                      int start = 1) {
   const int s = word.strands, L = word.length();
   std::vector<StrandSample> out;
   out.reserve(static_cast<size_t>(s * L * K));
-  int pos = 1;
+  int pos = start;
   for (int turn = 0; turn < s; ++turn) {
     for (int j = 0; j < L; ++j) {
       const int letter = word.letters[static_cast<size_t>(j)];
@@ -43,10 +47,32 @@ std::vector<StrandSample> strand_walk(const BraidWord& word, int K, const std::f
       }
       pos = target;
     }
-    if (pos == 1) break;
+    if (pos == start) break;
   }
-  require(pos == 1, "braid embedding: strand did not close");
+  require(pos == start, "braid embedding: strand did not close");
   return out;
+}
+
+/// The first position of each cycle of the braid's permutation, in order
+/// (one per component of the closure).
+std::vector<int> cycle_starts(const BraidWord& word) {
+  std::vector<int> after(static_cast<size_t>(word.strands) + 1);
+  for (int p = 1; p <= word.strands; ++p) {
+    int pos = p;
+    for (const int letter : word.letters) {
+      const int i = std::abs(letter);
+      if (pos == i || pos == i + 1) pos = pos == i ? i + 1 : i;
+    }
+    after[static_cast<size_t>(p)] = pos;
+  }
+  std::vector<int> starts;
+  std::vector<char> seen(static_cast<size_t>(word.strands) + 1, 0);
+  for (int p = 1; p <= word.strands; ++p) {
+    if (seen[static_cast<size_t>(p)]) continue;
+    starts.push_back(p);
+    for (int q = p; !seen[static_cast<size_t>(q)]; q = after[static_cast<size_t>(q)]) seen[static_cast<size_t>(q)] = 1;
+  }
+  return starts;
 }
 
 Points to_points(const std::vector<Vec3>& pts) {
@@ -56,7 +82,7 @@ Points to_points(const std::vector<Vec3>& pts) {
 }
 
 /// The coil (radial position offset a, lift b), turned by the tilt about the core circle r = 1.
-Points coil_layout(const BraidWord& word, const EmbeddingOptions& o) {
+Points coil_layout(const BraidWord& word, const EmbeddingOptions& o, int start = 1) {
   const int s = word.strands, L = word.length();
   const double R = 1.0, slot = 2.0 * M_PI * R / L;
   const double delta = o.strand_spacing.value_or(std::min(0.5 * slot, 0.6 * R / s));
@@ -69,7 +95,7 @@ Points coil_layout(const BraidWord& word, const EmbeddingOptions& o) {
   const double ct = std::cos(o.braid_tilt), st = std::sin(o.braid_tilt);
   const auto smoothstep = [](double u) { return u * u * (3.0 - 2.0 * u); };
   std::vector<Vec3> pts;
-  for (const StrandSample& q : strand_walk(word, o.samples_per_letter, smoothstep)) {
+  for (const StrandSample& q : strand_walk(word, o.samples_per_letter, smoothstep, start)) {
     const double a = (q.position - 0.5 * (s + 1)) * delta, b = h * q.lift;
     const double r = R + a * ct - b * st, z = a * st + b * ct;
     pts.emplace_back(r * std::cos(q.phi), r * std::sin(q.phi), z);
@@ -79,13 +105,13 @@ Points coil_layout(const BraidWord& word, const EmbeddingOptions& o) {
 
 /// The cylinder r = 1: heights (position - (s+1)/2)·δ, radial offsets -h·lift
 /// (h in the dense curve's units).
-Points cylinder_points(const BraidWord& word, const EmbeddingOptions& o, double h) {
+Points cylinder_points(const BraidWord& word, const EmbeddingOptions& o, double h, int start = 1) {
   const int s = word.strands, L = word.length();
   const double R = 1.0;
   const double delta = o.strand_spacing.value_or(2.0 * M_PI * R / L);
   const auto cosine_step = [](double u) { return 0.5 * (1.0 - std::cos(M_PI * u)); };
   std::vector<Vec3> pts;
-  for (const StrandSample& q : strand_walk(word, o.samples_per_letter, cosine_step)) {
+  for (const StrandSample& q : strand_walk(word, o.samples_per_letter, cosine_step, start)) {
     const double r = R - h * q.lift, z = (q.position - 0.5 * (s + 1)) * delta;
     pts.emplace_back(r * std::cos(q.phi), r * std::sin(q.phi), z);
   }
@@ -94,15 +120,51 @@ Points cylinder_points(const BraidWord& word, const EmbeddingOptions& o, double 
 
 /// The cylinder with the crossing offset given in output edge lengths: the
 /// dense curve's scale is that of the resampling (its length over n).
-Points cylinder_layout(const BraidWord& word, const EmbeddingOptions& o) {
+Points cylinder_layout(const BraidWord& word, const EmbeddingOptions& o, int start = 1) {
   require_input(o.cylinder_crossing_offset > 0.0 && std::isfinite(o.cylinder_crossing_offset),
                 "braid embedding: the cylinder's crossing offset must be positive");
   require_input(o.braid_tilt == 0.0, "braid embedding: the tilt applies to the coil only");
-  const double unit_edge = curve_length(cylinder_points(word, o, 0.0)) / o.vertices;
+  double length = 0.0;  // of the whole closure: every component's edges on one scale
+  for (const int c : cycle_starts(word)) length += curve_length(cylinder_points(word, o, 0.0, c));
+  const double unit_edge = length / o.vertices;
   const double h = o.cylinder_crossing_offset * unit_edge;
   require_input(h < 0.5, "braid embedding: the cylinder's crossing offset is too large for " +
                              std::to_string(o.vertices) + " vertices");
-  return cylinder_points(word, o, h);
+  return cylinder_points(word, o, h, start);
+}
+
+/// The dense closed curve of the component starting at position `start`.
+Points dense_component(const BraidWord& word, const EmbeddingOptions& o, int start) {
+  return o.braid_style == BraidStyle::Coil ? coil_layout(word, o, start) : cylinder_layout(word, o, start);
+}
+
+/// Lk(i, j) from the braid word: half the sum of the signs of the letters
+/// whose two strands belong to components i and j (σ_k: +1, σ_k⁻¹: −1).
+Eigen::MatrixXi braid_linking_numbers(const BraidWord& word, const std::vector<int>& starts) {
+  const auto m = static_cast<Eigen::Index>(starts.size());
+  std::vector<int> component(static_cast<size_t>(word.strands) + 1, -1);
+  for (Eigen::Index c = 0; c < m; ++c) {  // every position a cycle visits at the word's start
+    int pos = starts[static_cast<size_t>(c)];
+    do {
+      component[static_cast<size_t>(pos)] = static_cast<int>(c);
+      for (const int letter : word.letters) {
+        const int i = std::abs(letter);
+        if (pos == i || pos == i + 1) pos = pos == i ? i + 1 : i;
+      }
+    } while (pos != starts[static_cast<size_t>(c)]);
+  }
+  Eigen::MatrixXi twice = Eigen::MatrixXi::Zero(m, m);
+  std::vector<int> at = component;  // the component at each position as the word is read
+  for (const int letter : word.letters) {
+    const auto i = static_cast<size_t>(std::abs(letter));
+    const int a = at[i], b = at[i + 1];
+    if (a != b) {
+      twice(a, b) += letter > 0 ? 1 : -1;
+      twice(b, a) += letter > 0 ? 1 : -1;
+    }
+    std::swap(at[i], at[i + 1]);
+  }
+  return twice / 2;
 }
 
 }  // namespace
@@ -113,6 +175,47 @@ BraidStyle parse_braid_style(const std::string& text) {
   if (text == "coil") return BraidStyle::Coil;
   if (text == "cylinder") return BraidStyle::Cylinder;
   throw InputError("unknown braid style '" + text + "' (expected coil or cylinder)");
+}
+
+LinkEmbedding embed_braid_link(const BraidWord& word, const EmbeddingOptions& o) {
+  validate(o);
+  require_input(word.length() > 0 && word.strands >= 1, "braid embedding: empty braid word");
+  const std::vector<int> starts = cycle_starts(word);
+  std::vector<Points> dense;
+  double total = 0.0;
+  for (const int c : starts) {
+    dense.push_back(dense_component(word, o, c));
+    total += curve_length(dense.back());
+  }
+  LinkEmbedding e;
+  double h = 0.0;
+  std::vector<EquilateralResult> parts;
+  for (const Points& D : dense) {
+    const int m = std::max(4, static_cast<int>(std::lround(o.vertices * curve_length(D) / total)));
+    try {
+      parts.push_back(resample_equilateral(D, m));
+    } catch (const std::invalid_argument&) {
+      throw InputError("braid embedding: cannot place " + std::to_string(m) +
+                       " equal edges along a component; use more vertices");
+    }
+    h += parts.back().edge_length / static_cast<double>(starts.size());
+  }
+  const double scale = o.edge_length / h;
+  for (const EquilateralResult& p : parts) {
+    e.components.push_back(p.points * scale);
+    const VecX edges = edge_lengths(e.components.back());
+    e.max_edge_deviation = std::max(e.max_edge_deviation, (edges.array() - o.edge_length).abs().maxCoeff());
+  }
+  e.edge_length = o.edge_length;
+  e.linking_numbers = braid_linking_numbers(word, starts);
+  validate_link(e.components, "braid embedding");
+  if (o.verify) {
+    const Eigen::MatrixXi got = linking_matrix(e.components).array().round().cast<int>();
+    if (got != e.linking_numbers)
+      throw InputError("braid embedding with " + std::to_string(o.vertices) +
+                       " vertices does not keep the braid's linking numbers; use more vertices");
+  }
+  return e;
 }
 
 Embedding embed_braid(const BraidWord& word, const EmbeddingOptions& o) {

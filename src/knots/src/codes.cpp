@@ -222,6 +222,15 @@ int closure_components(const BraidWord& word) {
 }
 
 BraidWord parse_braid(const std::string& text, int strands) {
+  const BraidWord word = parse_braid_word(text, strands);
+  const int comps = closure_components(word);
+  if (comps != 1)
+    throw InputError("braid word '" + text + "': its closure has " + std::to_string(comps) +
+                     " components (a link), not one (a knot)");
+  return word;
+}
+
+BraidWord parse_braid_word(const std::string& text, int strands) {
   const std::string what = "braid word";
   auto values = parse_flat(text, what, '{', '}');
   if (values.empty()) throw InputError(what + " '" + text + "': empty word");
@@ -245,10 +254,6 @@ BraidWord parse_braid(const std::string& text, int strands) {
   } else {
     word.strands = static_cast<int>(max_abs) + 1;
   }
-  const int comps = closure_components(word);
-  if (comps != 1)
-    throw InputError(what + " '" + text + "': its closure has " + std::to_string(comps) +
-                     " components (a link), not one (a knot)");
   return word;
 }
 

@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "ek/geometry/link.hpp"
 #include "ek/geometry/types.hpp"
 #include "ek/knots/codes.hpp"
 #include "ek/knots/polynomial.hpp"
@@ -107,6 +108,25 @@ struct Embedding {
 /// The output has options.vertices equal edges of options.edge_length
 /// (the dense curve resampled by arc length).
 Embedding embed_braid(const BraidWord& word, const EmbeddingOptions& options = {});
+
+/// A link's embedding: one closed polygon per component.
+struct LinkEmbedding {
+  Link components;           ///< one n_c by 3 polygon per cycle of the braid's permutation, in order of their first position
+  double edge_length = 0.0;  ///< [length] the mean edge length (options.edge_length)
+  double max_edge_deviation = 0.0;  ///< [length] max | |e_i| − edge_length | over all components
+  Eigen::MatrixXi linking_numbers;  ///< [1] m by m, from the braid word (half the signed letters between two components)
+};
+
+/// The closure of a braid word of any number of components, laid out as
+/// embed_braid() lays out a knot (coil or cylinder; the same options): one
+/// component per cycle of the word's permutation, starting at its lowest
+/// position; about options.vertices vertices in all, shared by the
+/// components in proportion to their lengths, every component's edges
+/// equal and the components scaled together so that their mean edge is
+/// options.edge_length. With options.verify the linking numbers of the
+/// polygons (link.hpp) are checked against the word's. Throws InputError
+/// when the components touch or the check fails (use more vertices).
+LinkEmbedding embed_braid_link(const BraidWord& word, const EmbeddingOptions& options = {});
 
 /// PD code realised from a planar straight-line drawing: the 4-valent plane
 /// graph of the diagram (faces traced from the PD's counterclockwise rotation

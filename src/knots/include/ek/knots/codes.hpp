@@ -64,6 +64,10 @@ PDCode parse_pd(const std::string& text);
 /// components.
 BraidWord parse_braid(const std::string& text, int strands = 0);
 
+/// Parses a braid word as parse_braid() does, its closure a knot or a link
+/// (closure_components() tells how many components).
+BraidWord parse_braid_word(const std::string& text, int strands = 0);
+
 /// Parses the table's braid field: a single word "{1;-2;1;-2}" or a list of
 /// alternative words "[{...};{...}]" (KnotInfo lists two for some knots).
 std::vector<BraidWord> parse_braid_list(const std::string& text);
