@@ -31,13 +31,7 @@ int embed_link(const BraidWord& word, const EmbeddingOptions& opt, const std::st
     j["vertices"] = vertices;
     j["edge_length"] = json_number(e.edge_length);
     j["max_edge_deviation"] = json_number(e.max_edge_deviation);
-    Json rows = Json::array();
-    for (Eigen::Index a = 0; a < e.linking_numbers.rows(); ++a) {
-      Json row = Json::array();
-      for (Eigen::Index b = 0; b < e.linking_numbers.cols(); ++b) row.push_back(e.linking_numbers(a, b));
-      rows.push_back(row);
-    }
-    j["linking_numbers"] = rows;
+    j["linking_numbers"] = integer_matrix_json(e.linking_numbers);
     j["output"] = out;
     print_json(j);
     return 0;

@@ -100,31 +100,10 @@ void print_result(const RelaxCommand& c, const RelaxResult& r) {
 }
 
 /// The JSON keys of `knots relax` on a link (docs/cli.md).
-Json link_result_json(const RelaxCommand& c, const Link& link, const LinkRelaxResult& r) {
+Json link_result_json(const RelaxCommand& c, const LinkRelaxResult& r) {
   Json j;
   j["file"] = c.file;
-  j["components"] = link.size();
-  int vertices = 0;
-  for (const Points& P : link) vertices += static_cast<int>(P.rows());
-  j["vertices"] = vertices;
-  j["status"] = r.status();
-  j["iterations"] = r.report.iterations;
-  j["seconds"] = json_number(r.report.seconds);
-  j["energy"] = json_number(r.energy);
-  j["gradient_norm"] = json_number(r.report.gradient_norm);
-  j["min_distance"] = json_number(r.min_distance);
-  Json alexander = Json::array();
-  for (const AlexanderPolynomial& a : r.alexander) alexander.push_back(a.coefficients);
-  j["alexander"] = alexander;
-  Json rows = Json::array();
-  for (Eigen::Index a = 0; a < r.linking_numbers.rows(); ++a) {
-    Json row = Json::array();
-    for (Eigen::Index b = 0; b < r.linking_numbers.cols(); ++b) row.push_back(r.linking_numbers(a, b));
-    rows.push_back(row);
-  }
-  j["linking_numbers"] = rows;
-  j["alexander_preserved"] = r.alexander_preserved;
-  j["linking_preserved"] = r.linking_preserved;
+  j.update(link_relax_json(r));
   if (!c.out.empty() && r.status() != "topology-changed") j["output"] = c.out;
   return j;
 }
@@ -140,7 +119,7 @@ int relax_link_file(const RelaxCommand& c, const Link& link) {
   const bool kept = r.alexander_preserved && r.linking_preserved;
   if (!c.out.empty() && kept) write_link(c.out, r.positions);
   if (c.json) {
-    print_json(link_result_json(c, link, r));
+    print_json(link_result_json(c, r));
   } else {
     std::cout << "components:   " << link.size() << "\n"
               << "status:       " << r.status() << " (" << r.report.iterations << " iterations, "

@@ -50,13 +50,7 @@ Json link_invariants_json(const LinkInvariants& l) {
   }
   j["vertices"] = vertices;
   j["component"] = each;
-  Json rows = Json::array();
-  for (Eigen::Index a = 0; a < l.linking_numbers.rows(); ++a) {
-    Json row = Json::array();
-    for (Eigen::Index b = 0; b < l.linking_numbers.cols(); ++b) row.push_back(l.linking_numbers(a, b));
-    rows.push_back(row);
-  }
-  j["linking_numbers"] = rows;
+  j["linking_numbers"] = integer_matrix_json(l.linking_numbers);
   j["linking_error"] = json_number(l.linking_error);
   j["component_clearance"] = json_number(l.component_clearance);
   return j;

@@ -5,6 +5,8 @@
 #include "ek/geometry/curve_io.hpp"
 #include "ek/solver/energy.hpp"
 #include "ek/solver/json.hpp"
+#include "ek/solver/link_relax.hpp"
+#include "ek/geometry/link.hpp"
 #include "ek/solver/relax_request.hpp"
 
 namespace ek::python {
@@ -31,9 +33,63 @@ Result relax_points(const py::handle& points, const RelaxRequest& request, const
   return result;
 }
 
+Result relax_link_components(const py::list& components, const RelaxRequest& request,
+                             const std::optional<std::string>& output) {
+  Link link;
+  for (const py::handle& c : components) link.push_back(curve_arg(c, "components"));
+  if (output) check_writable(*output);
+  LinkRelaxResult r;
+  {
+    py::gil_scoped_release release;
+    r = relax_link(link, request.options());
+  }
+  if (r.status() == "topology-changed")
+    throw TopologyError("relax: a component's Alexander polynomial or a linking number changed");
+  if (output) write_link(*output, r.positions);
+  Result result = result_from_json(link_relax_json(r), "relax_link");
+  if (output) result.fields["output"] = *output;
+  py::list out;
+  for (const Points& P : r.positions) out.append(to_array(P));
+  result.fields["points"] = out;
+  return result;
+}
+
 }  // namespace
 
 void bind_solver(py::module_& m) {
+  m.def(
+      "relax_link",
+      [](const py::list& components, std::optional<std::string> output, std::optional<double> tol, int max_iter,
+         double radius, double young, double poisson, std::optional<double> contact_stiffness,
+         std::vector<double> continuation, std::string method) {
+        RelaxRequest q;
+        q.tol = tol;
+        q.max_iter = max_iter;
+        q.radius = radius;
+        q.young = young;
+        q.poisson = poisson;
+        q.contact_stiffness = contact_stiffness;
+        q.continuation = std::move(continuation);
+        q.method = std::move(method);
+        return relax_link_components(components, q, output);
+      },
+      py::arg("components"), py::kw_only(), py::arg("output") = py::none(), py::arg("tol") = py::none(),
+      py::arg("max_iter") = RelaxRequest{}.max_iter, py::arg("radius") = RelaxRequest{}.radius,
+      py::arg("young") = RelaxRequest{}.young, py::arg("poisson") = RelaxRequest{}.poisson,
+      py::arg("contact_stiffness") = py::none(), py::arg("continuation") = std::vector<double>{},
+      py::arg("method") = RelaxRequest{}.method,
+      R"doc(Relaxes a link, a list of at least 2 closed polygons (n_c, 3) (their edge lengths are the
+rest lengths), as `knots relax` relaxes a link file (docs/models.md, "Links"): one twist-free
+rod per component, contact between all edges, Newton at n with the method's Newton settings.
+Options as the command's: output (a link file, written atomically), tol, max_iter, radius,
+young, poisson, contact_stiffness, continuation, method.
+
+Fields: the JSON keys of `knots relax` on a link (components, vertices, status, iterations,
+seconds, energy, gradient_norm, min_distance, alexander, linking_numbers,
+alexander_preserved, linking_preserved), output when given, and points, the list of the
+components' equilibria. A change of a component's knot type or of a linking number raises
+TopologyError. Releases the GIL while it relaxes.)doc");
+
   m.def(
       "energy",
       [](const py::handle& points, double radius, double young, double poisson, std::optional<double> link,

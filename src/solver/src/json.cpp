@@ -95,4 +95,25 @@ Json relax_json(const RelaxResult& r, const std::string& method) {
   return j;
 }
 
+Json link_relax_json(const LinkRelaxResult& r) {
+  Json j;
+  j["components"] = r.positions.size();
+  int vertices = 0;
+  for (const Points& P : r.positions) vertices += static_cast<int>(P.rows());
+  j["vertices"] = vertices;
+  j["status"] = r.status();
+  j["iterations"] = r.report.iterations;
+  j["seconds"] = json_number(r.report.seconds);
+  j["energy"] = json_number(r.energy);
+  j["gradient_norm"] = json_number(r.report.gradient_norm);
+  j["min_distance"] = json_number(r.min_distance);
+  Json alexander = Json::array();
+  for (const AlexanderPolynomial& a : r.alexander) alexander.push_back(a.coefficients);
+  j["alexander"] = alexander;
+  j["linking_numbers"] = integer_matrix_json(r.linking_numbers);
+  j["alexander_preserved"] = r.alexander_preserved;
+  j["linking_preserved"] = r.linking_preserved;
+  return j;
+}
+
 }  // namespace ek

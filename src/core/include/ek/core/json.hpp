@@ -3,6 +3,7 @@
 /// prints and that the Python module returns as result objects (their keys
 /// are the documented contract of docs/cli.md). Each module's json.hpp
 /// describes its own results with these types.
+#include <Eigen/Core>
 #include <nlohmann/json.hpp>
 
 namespace ek {
@@ -12,5 +13,8 @@ using Json = nlohmann::ordered_json;
 
 /// A double for JSON: finite values as numbers, NaN and ±inf as null.
 Json json_number(double x);
+
+/// An integer matrix as an array of rows (linking numbers, ...).
+Json integer_matrix_json(const Eigen::MatrixXi& matrix);
 
 }  // namespace ek

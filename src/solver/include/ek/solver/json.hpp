@@ -6,6 +6,7 @@
 
 #include "ek/core/json.hpp"
 #include "ek/solver/energy.hpp"
+#include "ek/solver/link_relax.hpp"
 #include "ek/solver/newton.hpp"
 #include "ek/solver/relax.hpp"
 
@@ -33,5 +34,12 @@ Json curve_energy_json(const CurveEnergy& energy);
 /// continuation_reports (with continuation), slab_report and slab_energy
 /// (after a release) when they apply.
 Json relax_json(const RelaxResult& result, const std::string& method);
+
+/// `knots relax` on a link: components, vertices, status, iterations,
+/// seconds, energy, gradient_norm, min_distance (null when no pair is
+/// within reach of the contact), alexander (each component's, of the
+/// input), linking_numbers (of the input), alexander_preserved,
+/// linking_preserved.
+Json link_relax_json(const LinkRelaxResult& result);
 
 }  // namespace ek
