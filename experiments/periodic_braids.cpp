@@ -34,8 +34,10 @@
 #include "ek/core/parallel.hpp"
 #include "ek/embedding/embedding.hpp"
 #include "ek/geometry/curve_io.hpp"
+#include "ek/geometry/link.hpp"
 #include "ek/geometry/polyline.hpp"
 #include "ek/knots/alexander.hpp"
+#include "ek/solver/link_relax.hpp"
 #include "ek/solver/relax.hpp"
 #include "ek/solver/symmetric.hpp"
 #include "experiment.hpp"
@@ -307,6 +309,46 @@ void write_tables(const Args& a, const std::vector<results::PeriodicMember>& out
   cp.commit();
 }
 
+/// A member whose closure is a link, relaxed as a link from the coil
+/// (multicovered_circle(), one component per cycle): its topology, energy,
+/// 3D-ness and p-fold symmetry about the axis of least extent through the
+/// centroid, with a (p+1)-fold control.
+results::PeriodicLinkMember run_link(const Args& a, const PeriodicBraid& m) {
+  const LinkEmbedding e = embed_braid_link(m.word(), multicovered_circle(kVerticesPerPeriod * m.p, m.strands));
+  const LinkRelaxResult r = relax_link(e.components);
+  results::PeriodicLinkMember out;
+  out.family = m.family;
+  out.p = m.p;
+  out.components = static_cast<int>(r.positions.size());
+  out.status = r.status();
+  out.energy = r.energy;
+  out.alexander_preserved = r.alexander_preserved;
+  out.linking_preserved = r.linking_preserved;
+  for (Eigen::Index i = 0; i < r.linking_numbers.rows(); ++i)
+    for (Eigen::Index j = 0; j < r.linking_numbers.cols(); ++j) out.linking_numbers.push_back(r.linking_numbers(i, j));
+  out.min_distance = r.min_distance;
+  Points all(0, 3);
+  for (const Points& P : r.positions) {
+    all.conservativeResize(all.rows() + P.rows(), 3);
+    all.bottomRows(P.rows()) = P;
+  }
+  out.vertices = static_cast<int>(all.rows());
+  out.threedim = threedim(all);
+  const Vec3 c = all.colwise().mean().transpose();
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(all.rowwise() - c.transpose(), Eigen::ComputeThinV);
+  const Vec3 axis = svd.matrixV().col(2);  // the axis of least extent
+  out.symmetry_error = rotational_symmetry_error(r.positions, c, axis, m.p);
+  out.control_error = rotational_symmetry_error(r.positions, c, axis, m.p + 1);
+  out.curve = "curves/" + m.family + "_p" + std::to_string(m.p) + "_link.obj";
+  write_link(a.out + "/" + out.curve, r.positions);
+  std::ostringstream line;  // one write: the links run in parallel
+  line << "  " << m.label() << " (link of " << out.components << "): " << out.status << ", E " << out.energy
+       << ", 3D-ness " << out.threedim << ", " << m.p << "-fold symmetry error " << out.symmetry_error << " (control "
+       << out.control_error << ")\n";
+  std::cout << line.str() << std::flush;
+  return out;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -337,6 +379,9 @@ int main(int argc, char** argv) {
     });
     write_tables(a, outs, rows);
     sum.members = outs;
+    const std::vector<PeriodicBraid> links = periodic_link_members();
+    sum.links.resize(links.size());
+    parallel_for(links.size(), a.jobs, [&](size_t q) { sum.links[q] = run_link(a, links[q]); });
     write_summary(a, sum);
   });
 }

@@ -30,13 +30,27 @@ struct PeriodicBraid {
   std::string label() const { return family + " p=" + std::to_string(p); }
 };
 
-/// The knots of both families; `skipped` receives "family p=P: C components".
-inline std::vector<PeriodicBraid> periodic_family(std::vector<std::string>& skipped) {
-  std::vector<PeriodicBraid> all, knots;
+/// Both families, p = 2..8 and 2..7.
+inline std::vector<PeriodicBraid> periodic_braids() {
+  std::vector<PeriodicBraid> all;
   for (int p = 2; p <= 8; ++p)
     all.push_back({"s1s2i", 3, p, {1, -2}, p == 2 ? "4_1" : p == 4 ? "8_18" : p == 5 ? "10_123" : ""});
   for (int p = 2; p <= 7; ++p) all.push_back({"s1s2is3", 4, p, {1, -2, 3}, p == 3 ? "9_40" : ""});
-  for (const PeriodicBraid& m : all) {
+  return all;
+}
+
+/// The members of both families whose closure is a link (several components).
+inline std::vector<PeriodicBraid> periodic_link_members() {
+  std::vector<PeriodicBraid> links;
+  for (const PeriodicBraid& m : periodic_braids())
+    if (closure_components(m.word()) > 1) links.push_back(m);
+  return links;
+}
+
+/// The knots of both families; `skipped` receives "family p=P: C components".
+inline std::vector<PeriodicBraid> periodic_family(std::vector<std::string>& skipped) {
+  std::vector<PeriodicBraid> knots;
+  for (const PeriodicBraid& m : periodic_braids()) {
     const int c = closure_components(m.word());
     if (c == 1) knots.push_back(m);
     else skipped.push_back(m.label() + ": " + std::to_string(c) + " components");

@@ -151,6 +151,27 @@ EK_JSON_FIELDS(PeriodicMember, family, p, knot, status, energy, alexander_preser
                polygon_error_deg, relative_rotation_deg, expected_rotation_deg, curve, start_threedim, equilibrium,
                equilibrium_paper, transient, symmetric_critical_point, three_d_search)
 
+/// A member whose closure is a link (paper §8.5: links), relaxed as a link
+/// from the coil (one component per cycle of the braid's permutation).
+struct PeriodicLinkMember {
+  std::string family;
+  int p = 0;
+  int components = 0;               ///< [1]
+  int vertices = 0;                 ///< [1] in all
+  std::string status;               ///< LinkRelaxResult::status()
+  double energy = 0.0;              ///< [energy]
+  bool alexander_preserved = false;  ///< every component's polynomial kept
+  bool linking_preserved = false;    ///< every linking number kept
+  std::vector<int> linking_numbers;  ///< [1] components × components, row by row (from the braid word)
+  double min_distance = 0.0;        ///< [length] closest edge pair within reach of the contact (NaN: none)
+  double threedim = 0.0;            ///< [1] 3D-ness of all vertices together
+  double symmetry_error = 0.0;      ///< [1] p-fold, about the axis of least extent through the centroid
+  double control_error = 0.0;       ///< [1] (p+1)-fold about the same axis
+  std::string curve;                ///< link file, relative to the experiment's folder
+};
+EK_JSON_FIELDS(PeriodicLinkMember, family, p, components, vertices, status, energy, alexander_preserved,
+               linking_preserved, linking_numbers, min_distance, threedim, symmetry_error, control_error, curve)
+
 struct PeriodicBraidsSummary {
   std::string scale;
   double crossing_gap = 0.0;        ///< [length] kCrossingGap
@@ -159,7 +180,9 @@ struct PeriodicBraidsSummary {
   std::vector<PeriodicMember> members;
   /// Braids of the families whose closure is not a knot (skipped), e.g. "s1s2i p=3: 3 components".
   std::vector<std::string> skipped;
+  /// The skipped members relaxed as links, in the order of `skipped`.
+  std::vector<PeriodicLinkMember> links;
 };
-EK_JSON_FIELDS(PeriodicBraidsSummary, scale, crossing_gap, radius, threedim_threshold, members, skipped)
+EK_JSON_FIELDS(PeriodicBraidsSummary, scale, crossing_gap, radius, threedim_threshold, members, skipped, links)
 
 }  // namespace ek::results

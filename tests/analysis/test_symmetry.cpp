@@ -140,3 +140,28 @@ TEST(Symmetry, CoilCrossingsFormTwoRotatedPolygons) {
     EXPECT_EQ(crossing_polygons(P, c, Vec3::UnitZ(), p, 0.9).crossings, 0) << p;
   }
 }
+
+// A link's p-fold symmetry: three rings at 120° about z (each ring in a
+// vertical plane through the axis, its centre 3 from it) map onto one another
+// under the rotation by 2π/3 (error 0 to round-off, with rings of 60
+// vertices), not under 2π/4 or 2π/2; the one-component link agrees with the
+// curve's error.
+TEST(Symmetry, ThreeRingsAboutAnAxisAreThreeFoldSymmetric) {
+  Link rings;
+  for (int k = 0; k < 3; ++k) {
+    const double phi = 2.0 * M_PI * k / 3.0;
+    const Vec3 radial(std::cos(phi), std::sin(phi), 0.0);
+    Points P(60, 3);
+    for (int i = 0; i < 60; ++i) {
+      const double t = 2.0 * M_PI * i / 60;
+      P.row(i) = (3.0 * radial + std::cos(t) * radial + std::sin(t) * Vec3::UnitZ()).transpose();
+    }
+    rings.push_back(P);
+  }
+  EXPECT_LT(rotational_symmetry_error(rings, Vec3::Zero(), Vec3::UnitZ(), 3), 1e-12);
+  EXPECT_GT(rotational_symmetry_error(rings, Vec3::Zero(), Vec3::UnitZ(), 4), 0.05);
+  EXPECT_GT(rotational_symmetry_error(rings, Vec3::Zero(), Vec3::UnitZ(), 2), 0.05);
+  const Points T = fixtures::torus_knot(300, 2, 3);
+  EXPECT_EQ(rotational_symmetry_error(Link{T}, Vec3::Zero(), Vec3::UnitZ(), 4),
+            rotational_symmetry_error(T, Vec3::Zero(), Vec3::UnitZ(), 4));
+}

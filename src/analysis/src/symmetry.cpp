@@ -45,6 +45,28 @@ double rotational_symmetry_error(const Points& P, const Vec3& c, const Vec3& axi
   return sum / static_cast<double>(n) / rg;
 }
 
+double rotational_symmetry_error(const Link& link, const Vec3& c, const Vec3& axis, int p) {
+  require(p >= 2, "rotational_symmetry_error: p must be at least 2");
+  require(!link.empty(), "rotational_symmetry_error: a link needs a component");
+  const Eigen::AngleAxisd R(2.0 * M_PI / p, axis.normalized());
+  double rg = 0.0, sum = 0.0;
+  Eigen::Index vertices = 0;
+  for (const Points& P : link)
+    for (Eigen::Index i = 0; i < P.rows(); ++i, ++vertices) rg += (P.row(i).transpose() - c).squaredNorm();
+  rg = std::sqrt(rg / static_cast<double>(vertices));
+  if (rg == 0.0) return 0.0;
+  for (const Points& P : link)
+    for (Eigen::Index i = 0; i < P.rows(); ++i) {
+      const Vec3 q = c + R * (P.row(i).transpose() - c);
+      double best = 1e300;
+      for (const Points& Q : link)
+        for (Eigen::Index j = 0; j < Q.rows(); ++j)
+          best = std::min(best, point_segment_distance_squared(q, Q.row(j).transpose(), Q.row((j + 1) % Q.rows()).transpose()));
+      sum += std::sqrt(best);
+    }
+  return sum / static_cast<double>(vertices) / rg;
+}
+
 SymmetryAxis find_symmetry_axis(const Points& P, int p, const SymmetryAxisOptions& o) {
   require(o.step > 0.0 && o.max_tilt >= 0.0, "find_symmetry_axis: step must be > 0 and max_tilt >= 0");
   SymmetryAxis out;

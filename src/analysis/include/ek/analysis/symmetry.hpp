@@ -11,6 +11,7 @@
 /// a, from u = a.unitOrthogonal() towards v = a × u.
 #include <vector>
 
+#include "ek/geometry/link.hpp"
 #include "ek/geometry/types.hpp"
 
 namespace ek {
@@ -24,6 +25,11 @@ namespace ek {
 /// where dist(·, P) is the distance to the polygon (its edges). 0 for a curve
 /// that the rotation maps onto itself; scale-free. O(n²). p >= 2, n >= 3.
 double rotational_symmetry_error(const Points& P, const Vec3& center, const Vec3& axis, int p);
+
+/// The same for a link (link.hpp): every vertex of every component rotated,
+/// its distance taken to the nearest edge of any component (the rotation may
+/// map a component onto another), r_g over all vertices. O(N²).
+double rotational_symmetry_error(const Link& link, const Vec3& center, const Vec3& axis, int p);
 
 /// The grid searched by find_symmetry_axis().
 struct SymmetryAxisOptions {
