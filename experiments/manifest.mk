@@ -5,7 +5,7 @@ PAPER_EXPERIMENTS := dataset milnor planarity multistability adaptive periodic_b
 STUDY_EXPERIMENTS := periodic_links
 BENCH_EXPERIMENTS := time_vs_error bench_solver
 COMPARE_EXPERIMENTS := compare_methods
-PAPER_FIGURES := fig09_milnor fig_planarity fig02_equilibria_4_1 fig06_clustering_7_7 fig08_equilibria_8_1 fig_adaptive fig16_periodic_braids fig12_jumping_knots fig14_puzzles fig05_hausdorff fig07_filters fig10_cross_topology fig15_generalization fig_saddles fig_transitions fig_loads
+PAPER_FIGURES := fig09_milnor fig_planarity fig02_equilibria_4_1 fig06_clustering_7_7 fig08_equilibria_8_1 fig_adaptive fig16_periodic_braids fig16_links fig12_jumping_knots fig14_puzzles fig05_hausdorff fig07_filters fig10_cross_topology fig15_generalization fig_saddles fig_transitions fig_loads
 
 # an experiment reruns when its summary.json is older than its inputs' summaries
 $(RESULTS)/milnor/summary.json: $(RESULTS)/dataset/summary.json
@@ -26,6 +26,7 @@ figures/out/fig06_clustering_7_7.png: figures/fig06_clustering_7_7.py $(RESULTS)
 figures/out/fig08_equilibria_8_1.png: figures/fig08_equilibria_8_1.py $(RESULTS)/multistability/summary.json
 figures/out/fig_adaptive.png: figures/fig_adaptive.py $(RESULTS)/adaptive/summary.json
 figures/out/fig16_periodic_braids.png: figures/fig16_periodic_braids.py $(RESULTS)/periodic_braids/summary.json
+figures/out/fig16_links.png: figures/fig16_links.py $(RESULTS)/periodic_braids/summary.json
 figures/out/fig12_jumping_knots.png: figures/fig12_jumping_knots.py $(RESULTS)/jumping_knots/summary.json
 figures/out/fig14_puzzles.png: figures/fig14_puzzles.py $(RESULTS)/puzzles/summary.json
 figures/out/fig05_hausdorff.png: figures/fig05_hausdorff.py $(RESULTS)/hausdorff/summary.json

@@ -2,7 +2,7 @@
 curves, saving PNG and PDF. Figure scripts read only the experiments'
 results files (results/<scale>/<experiment>/...), through the readers here:
 read_summary (summary.json), read_csv with flag (CSV tables), read_obj
-(curves), load_equilibria and dataset_material (data sets). The files'
+(curves), read_link (links), load_equilibria and dataset_material (data sets). The files'
 schemas are documented in docs/results.md; thresholds and the wire radius
 come from the results (the experiments write the values they applied).
 
@@ -77,6 +77,32 @@ def read_obj(path):
     lines), n by 3."""
     with open(need(path)) as f:
         return np.array([[float(x) for x in line.split()[1:4]] for line in f if line.startswith("v ")])
+
+
+def read_link(path):
+    """The components of a link file written by the experiments (OBJ "v" lines
+    and one closed "l" loop per component, docs/cli.md "Curve files"): a list
+    of n_c by 3 arrays, in the order of their first vertices."""
+    with open(need(path)) as f:
+        lines = f.read().splitlines()
+    vertices = np.array([[float(x) for x in line.split()[1:4]] for line in lines if line.startswith("v ")])
+    nxt = {}
+    for line in lines:
+        if line.startswith("l "):
+            idx = [int(t) - 1 for t in line.split()[1:]]
+            for i, j in zip(idx[:-1], idx[1:]):
+                nxt.setdefault(i, j)
+    components, seen = [], set()
+    for start in range(len(vertices)):
+        if start in seen:
+            continue
+        loop, v = [], start
+        while v not in seen:
+            seen.add(v)
+            loop.append(v)
+            v = nxt.get(v, start)
+        components.append(vertices[loop])
+    return components
 
 
 def save(fig, out, name):

@@ -171,11 +171,12 @@ def vertex_colors(P, color, cmap, vmax, dhat):
 
 # ---- the scene ------------------------------------------------------------------
 
-def scene(C, rho, rgb, extent):
+def scene(C, rho, rgb, extent, starts=None):
     """POV-Ray scene text: camera-frame points C (n by 3: right, up, towards
     the viewer), tube radius rho, vertex colours rgb, image extent
     (umin, umax, vmin, vmax). POV-Ray is left-handed (z into the screen), so
-    z = -w."""
+    z = -w. starts: the first vertex of each closed component (a link: the
+    components back to back); None: one closed curve."""
     umin, umax, vmin, vmax = extent
     cu, cv = 0.5 * (umin + umax), 0.5 * (vmin + vmax)
     depth = float(np.abs(C[:, 2]).max()) + 10.0 * rho + 1.0
@@ -192,11 +193,15 @@ def scene(C, rho, rgb, extent):
         "union {",
     ]
     n = len(C)
+    bounds = list(starts or [0]) + [n]
+    nxt = np.empty(n, dtype=int)  # the next vertex within each closed component
+    for a, b in zip(bounds[:-1], bounds[1:]):
+        nxt[a:b] = np.roll(np.arange(a, b), -1)
     pts = [f"<{c[0]:.6f}, {c[1]:.6f}, {-c[2]:.6f}>" for c in C]
     col = [f"srgb <{r:.4f}, {g:.4f}, {b:.4f}>" for r, g, b in rgb]
-    edge_rgb = 0.5 * (rgb + np.roll(rgb, -1, axis=0))
+    edge_rgb = 0.5 * (rgb + rgb[nxt])
     for i in range(n):
-        j = (i + 1) % n
+        j = nxt[i]
         r, g, b = edge_rgb[i]
         lines.append(f"cylinder {{ {pts[i]}, {pts[j]}, {rho:.6f} open "
                      f"texture {{ pigment {{ srgb <{r:.4f}, {g:.4f}, {b:.4f}> }} finish {{ F }} }} }}")
@@ -205,11 +210,12 @@ def scene(C, rho, rgb, extent):
     return "\n".join(lines) + "\n"
 
 
-def cache_key(C, rho, rgb, extent, width, height):
+def cache_key(C, rho, rgb, extent, width, height, starts=None):
     key = hashlib.sha256()
     for part in (RENDER_VERSION.encode(), np.ascontiguousarray(C, dtype=np.float64).tobytes(),
                  np.float64(rho).tobytes(), np.ascontiguousarray(rgb, dtype=np.float64).tobytes(),
-                 np.asarray(extent, dtype=np.float64).tobytes(), f"{width}x{height}".encode()):
+                 np.asarray(extent, dtype=np.float64).tobytes(), f"{width}x{height}".encode(),
+                 (b"" if starts is None else np.asarray(starts, dtype=np.int64).tobytes())):
         key.update(part)
     return key.hexdigest()[:32]
 
@@ -239,12 +245,13 @@ def run_povray(text, width, height, cached):
     return image
 
 
-def render_async(C, rho, rgb, extent, width, height):
+def render_async(C, rho, rgb, extent, width, height, starts=None):
     """A future of the RGBA image (height by width by 4) of the scene: read
     from the cache, or rendered by POV-Ray in a worker (POV-Ray's front end
     idles ~1 s per run, so several run at once)."""
     global _pool
-    cached = os.path.join(cache_dir, cache_key(C, rho, rgb, extent, width, height) + ".png") if cache_dir else None
+    cached = (os.path.join(cache_dir, cache_key(C, rho, rgb, extent, width, height, starts) + ".png")
+              if cache_dir else None)
     if cached and os.path.exists(cached):
         stats["cached"] += 1
         f = concurrent.futures.Future()
@@ -252,7 +259,7 @@ def render_async(C, rho, rgb, extent, width, height):
         return f
     if _pool is None:
         _pool = concurrent.futures.ThreadPoolExecutor(max_workers=WORKERS)
-    return _pool.submit(run_povray, scene(C, rho, rgb, extent), width, height, cached)
+    return _pool.submit(run_povray, scene(C, rho, rgb, extent, starts), width, height, cached)
 
 
 def finish():
@@ -309,6 +316,40 @@ def draw_curve(ax, P, *, radius, radius_scale=1.0, view="top", color="curvature"
     for s in ax.spines.values():
         s.set_visible(False)
     return sm
+
+
+def draw_link(ax, components, *, radius, colors, radius_scale=1.0, view="top", dpi=150, max_pixels=1400,
+              oversample=2.0):
+    """Draws a link (a list of closed curves, n_c by 3 each) as shaded tubes
+    of radius radius * radius_scale in one POV-Ray scene, so that the
+    components pass over and under one another as in a photograph; component
+    c in colors[c] (matplotlib colours); the view as draw_curve's, of all
+    vertices together (centred on their centroid)."""
+    parts = [np.asarray(P, dtype=float) for P in components]
+    if not parts or any(P.ndim != 2 or P.shape[1] != 3 or len(P) < 3 for P in parts):
+        raise ValueError("draw_link: expected a list of n by 3 arrays of points")
+    Q = np.vstack(parts)
+    Q = Q - Q.mean(axis=0)
+    starts = list(np.cumsum([0] + [len(P) for P in parts[:-1]]))
+    rgb = np.vstack([np.broadcast_to(np.asarray(matplotlib.colors.to_rgb(c)), (len(P), 3))
+                     for P, c in zip(parts, colors)])
+    C = Q @ view_rotation(Q, view).T
+    rho = radius * radius_scale
+    pad = 1.5 * rho
+    extent = (C[:, 0].min() - pad, C[:, 0].max() + pad, C[:, 1].min() - pad, C[:, 1].max() + pad)
+    span_u, span_v = extent[1] - extent[0], extent[3] - extent[2]
+    aw, ah = axes_pixels(ax, dpi)
+    scale = min(oversample * min(aw / span_u, ah / span_v), max_pixels / max(span_u, span_v))
+    width, height = max(16, int(round(span_u * scale))), max(16, int(round(span_v * scale)))
+    artist = ax.imshow(np.zeros((height, width, 4)), extent=extent, origin="upper", interpolation="antialiased")
+    _pending.append((artist, render_async(C, rho, rgb, extent, width, height, starts)))
+    ax.set_xlim(extent[0], extent[1])
+    ax.set_ylim(extent[2], extent[3])
+    ax.set_aspect("equal")
+    ax.set_xticks([])
+    ax.set_yticks([])
+    for s in ax.spines.values():
+        s.set_visible(False)
 
 
 def contact_legend(ax, **kwargs):
