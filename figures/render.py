@@ -296,8 +296,17 @@ def draw_curve(ax, P, *, radius, radius_scale=1.0, view="top", color="curvature"
         raise ValueError(f"draw_curve: expected an n by 3 array of points, got shape {P.shape}")
     Q = P - P.mean(axis=0) if center else P
     rgb, sm = vertex_colors(Q, color, cmap, vmax, dhat)
-    C = Q @ view_rotation(Q, view).T
-    rho = radius * radius_scale
+    place_render(ax, Q @ view_rotation(Q, view).T, radius * radius_scale, rgb, dpi, max_pixels, oversample)
+    return sm
+
+
+def place_render(ax, C, rho, rgb, dpi, max_pixels, oversample, starts=None):
+    """Puts the render of the camera-frame points C (tubes of radius rho,
+    vertex colours rgb; starts: the components' first vertices, None for one
+    curve) into ax as a placeholder image filled by finish(), and sets the
+    axes' limits to the image's extent (the projected curve plus the tube).
+    The image has oversample times the pixels the axes take at dpi, at most
+    max_pixels on its longer side."""
     pad = 1.5 * rho
     extent = (C[:, 0].min() - pad, C[:, 0].max() + pad, C[:, 1].min() - pad, C[:, 1].max() + pad)
     span_u, span_v = extent[1] - extent[0], extent[3] - extent[2]
@@ -307,7 +316,7 @@ def draw_curve(ax, P, *, radius, radius_scale=1.0, view="top", color="curvature"
     width, height = max(16, int(round(span_u * scale))), max(16, int(round(span_v * scale)))
     placeholder = np.zeros((height, width, 4))
     artist = ax.imshow(placeholder, extent=extent, origin="upper", interpolation="antialiased")
-    _pending.append((artist, render_async(C, rho, rgb, extent, width, height)))
+    _pending.append((artist, render_async(C, rho, rgb, extent, width, height, starts)))
     ax.set_xlim(extent[0], extent[1])
     ax.set_ylim(extent[2], extent[3])
     ax.set_aspect("equal")
@@ -315,7 +324,6 @@ def draw_curve(ax, P, *, radius, radius_scale=1.0, view="top", color="curvature"
     ax.set_yticks([])
     for s in ax.spines.values():
         s.set_visible(False)
-    return sm
 
 
 def draw_link(ax, components, *, radius, colors, radius_scale=1.0, view="top", dpi=150, max_pixels=1400,
@@ -333,23 +341,7 @@ def draw_link(ax, components, *, radius, colors, radius_scale=1.0, view="top", d
     starts = list(np.cumsum([0] + [len(P) for P in parts[:-1]]))
     rgb = np.vstack([np.broadcast_to(np.asarray(matplotlib.colors.to_rgb(c)), (len(P), 3))
                      for P, c in zip(parts, colors)])
-    C = Q @ view_rotation(Q, view).T
-    rho = radius * radius_scale
-    pad = 1.5 * rho
-    extent = (C[:, 0].min() - pad, C[:, 0].max() + pad, C[:, 1].min() - pad, C[:, 1].max() + pad)
-    span_u, span_v = extent[1] - extent[0], extent[3] - extent[2]
-    aw, ah = axes_pixels(ax, dpi)
-    scale = min(oversample * min(aw / span_u, ah / span_v), max_pixels / max(span_u, span_v))
-    width, height = max(16, int(round(span_u * scale))), max(16, int(round(span_v * scale)))
-    artist = ax.imshow(np.zeros((height, width, 4)), extent=extent, origin="upper", interpolation="antialiased")
-    _pending.append((artist, render_async(C, rho, rgb, extent, width, height, starts)))
-    ax.set_xlim(extent[0], extent[1])
-    ax.set_ylim(extent[2], extent[3])
-    ax.set_aspect("equal")
-    ax.set_xticks([])
-    ax.set_yticks([])
-    for s in ax.spines.values():
-        s.set_visible(False)
+    place_render(ax, Q @ view_rotation(Q, view).T, radius * radius_scale, rgb, dpi, max_pixels, oversample, starts)
 
 
 def contact_legend(ax, **kwargs):

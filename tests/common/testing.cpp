@@ -44,6 +44,15 @@ Points circle(int n, double R) {
   return P;
 }
 
+Points circle(int n, const Vec3& c, double r, const Vec3& u, const Vec3& v) {
+  Points P(n, 3);
+  for (int i = 0; i < n; ++i) {
+    const double t = 2.0 * M_PI * i / n;
+    P.row(i) = (c + r * (std::cos(t) * u + std::sin(t) * v)).transpose();
+  }
+  return P;
+}
+
 Points torus_knot(int n, int p, int q, double R, double r) {
   Points P(n, 3);
   for (int i = 0; i < n; ++i) {

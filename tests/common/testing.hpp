@@ -22,6 +22,10 @@ Points random_fourier_curve(int n, int modes, std::uint64_t seed, double amplitu
 /// Circle of radius R in the xy-plane, n vertices, centred at the origin.
 Points circle(int n, double R);
 
+/// Circle of centre c and radius r in the plane of the unit vectors u, v,
+/// n vertices, run from c + r·u towards c + r·v.
+Points circle(int n, const Vec3& c, double r, const Vec3& u, const Vec3& v);
+
 /// Torus knot T(p, q) on a torus with radii R (core) and r (tube), n vertices.
 Points torus_knot(int n, int p, int q, double R = 2.0, double r = 1.0);
 

@@ -19,16 +19,7 @@ using ek::fixtures::expect_input_error;
 
 namespace {
 
-/// n points of the circle centre c, radius r, in the plane of the unit
-/// vectors u, v, run from c + r·u towards c + r·v.
-Points circle(int n, const Vec3& c, double r, const Vec3& u, const Vec3& v) {
-  Points P(n, 3);
-  for (int i = 0; i < n; ++i) {
-    const double t = 2.0 * M_PI * i / n;
-    P.row(i) = (c + r * (std::cos(t) * u + std::sin(t) * v)).transpose();
-  }
-  return P;
-}
+using fixtures::circle;
 
 /// Component c (0 or 1) of the (2, 2k) torus link: the (1, k) curve
 /// φ = t, θ = k·t + c·π on the torus of radii R = 2, r = 1.

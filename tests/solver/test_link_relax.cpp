@@ -21,15 +21,7 @@ using namespace ek;
 
 namespace {
 
-/// n points of the circle centre c, radius r, in the plane of the unit vectors u, v.
-Points circle(int n, const Vec3& c, double r, const Vec3& u, const Vec3& v) {
-  Points P(n, 3);
-  for (int i = 0; i < n; ++i) {
-    const double t = 2.0 * M_PI * i / n;
-    P.row(i) = (c + r * (std::cos(t) * u + std::sin(t) * v)).transpose();
-  }
-  return P;
-}
+using fixtures::circle;
 
 /// A ring of radius 3 and a small ring (radius 0.35, within d̂ = 0.4 of the
 /// first) through it: contact active between the components.

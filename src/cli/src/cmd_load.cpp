@@ -12,9 +12,11 @@
 #include "commands.hpp"
 #include "ek/core/atomic_file.hpp"
 #include "ek/core/errors.hpp"
-#include "ek/dataset/dataset_search.hpp"
+#include "ek/dataset/dataset_file.hpp"
+#include "ek/dataset/json.hpp"
 #include "ek/geometry/curve_io.hpp"
 #include "ek/geometry/polyline.hpp"
+#include "ek/mechanics/json.hpp"
 #include "ek/mechanics/knot_loading.hpp"
 #include "folder_output.hpp"
 #include "output.hpp"
@@ -98,57 +100,17 @@ void resolve_load(LoadCommand& c) {
   o.validate();
 }
 
-/// The data set's equilibrium closest to x (ICP, as knots search), or null.
-Json match_json(const DatasetReader* reader, const Points& x) {
-  if (!reader) return nullptr;
-  DatasetSearchOptions so;
-  so.max_results = 1;
-  const DatasetSearchResult r = search_dataset(*reader, x, so);
-  if (r.hits.empty()) return nullptr;
-  Json j;
-  j["knot"] = r.hits[0].knot;
-  j["index"] = r.hits[0].equilibrium;
-  j["distance"] = number(r.hits[0].distance);
-  return j;
-}
-
 Json summary_json(const LoadCommand& c, const KnotLoadResult& r, const DatasetReader* reader) {
-  const auto& pts = r.path.points;
+  std::vector<Json> released;
+  for (const Snap& s : r.snaps) released.push_back(closest_equilibrium_json(reader, s.released));
   Json j;
   j["input"] = c.file;
-  j["load"] = to_string(c.options.kind);
-  j["parameter"] = r.parameter_name;
-  j["from"] = number(pts.front().parameter);
-  j["to"] = number(c.options.to);
-  j["vertices"] = c.options.kind == LoadKind::Plates ? Json(nullptr) : Json(r.vertices);
-  j["normal"] = c.options.kind == LoadKind::Plates ? Json({r.normal(0), r.normal(1), r.normal(2)}) : Json(nullptr);
-  j["pull_stiffness"] = c.options.kind == LoadKind::Pull ? number(r.pull_stiffness) : Json(nullptr);
-  j["status"] = to_string(r.path.status);
-  j["points"] = pts.size();
-  j["start_energy"] = number(r.start_energy);
-  j["end_energy"] = number(pts.back().energy);
-  j["end_parameter"] = number(pts.back().parameter);
-  j["work"] = number(r.work);
-  j["dissipated"] = number(r.dissipated);
-  j["alexander_preserved"] = r.alexander_preserved;
-  j["start_match"] = match_json(reader, as_points(pts.front().dofs));
-  j["snaps"] = Json::array();
-  for (size_t k = 0; k < r.snaps.size(); ++k) {
-    const Snap& s = r.snaps[k];
-    Json sj;
-    sj["point"] = s.point;
-    sj["parameter"] = number(s.parameter);
-    sj["reaction"] = number(s.reaction);
-    sj["jump"] = number(s.jump);
-    sj["energy_drop"] = number(s.energy_drop);
-    sj["loaded_energy"] = number(s.loaded_energy);
-    sj["released_status"] = s.released_status;
-    sj["released_energy"] = number(s.released_energy);
-    sj["released_match"] = match_json(reader, s.released);
-    j["snaps"].push_back(sj);
-  }
+  j.update(knot_load_json(c.options, r, closest_equilibrium_json(reader, as_points(r.path.points.front().dofs)),
+                          released));
+  const Json seconds = j["seconds"];
+  j.erase("seconds");
   j["output"] = c.out;
-  j["seconds"] = number(r.path.seconds);
+  j["seconds"] = seconds;
   return j;
 }
 

@@ -1,5 +1,7 @@
 #include "ek/dataset/json.hpp"
 
+#include "ek/dataset/dataset_search.hpp"
+
 namespace ek {
 
 Json clusters_json(const std::string& name, double cut, int equilibria, const std::vector<StateCluster>& clusters) {
@@ -38,6 +40,19 @@ Json describe_json(const DatasetReader& reader) {
   Json j;
   j["parameters"] = Json::parse(reader.metadata().json());
   j["knots"] = reader.knot_names();
+  return j;
+}
+
+Json closest_equilibrium_json(const DatasetReader* reader, const Points& x) {
+  if (!reader) return nullptr;
+  DatasetSearchOptions so;
+  so.max_results = 1;
+  const DatasetSearchResult r = search_dataset(*reader, x, so);
+  if (r.hits.empty()) return nullptr;
+  Json j;
+  j["knot"] = r.hits[0].knot;
+  j["index"] = r.hits[0].equilibrium;
+  j["distance"] = json_number(r.hits[0].distance);
   return j;
 }
 

@@ -4,72 +4,13 @@
 
 #include "common.hpp"
 #include "ek/core/errors.hpp"
-#include "ek/dataset/dataset_search.hpp"
+#include "ek/dataset/json.hpp"
 #include "ek/geometry/polyline.hpp"
+#include "ek/mechanics/json.hpp"
 #include "ek/mechanics/knot_loading.hpp"
 
 namespace ek::python {
 namespace {
-
-/// The data set's equilibrium closest to x (ICP, as `knots load --dataset`), or null.
-Json match_json(const DatasetReader* reader, const Points& x) {
-  if (!reader) return nullptr;
-  DatasetSearchOptions so;
-  so.max_results = 1;
-  const DatasetSearchResult r = search_dataset(*reader, x, so);
-  if (r.hits.empty()) return nullptr;
-  Json j;
-  j["knot"] = r.hits[0].knot;
-  j["index"] = r.hits[0].equilibrium;
-  j["distance"] = json_number(r.hits[0].distance);
-  return j;
-}
-
-/// The summary of `knots load --json` without the file keys (input, output).
-/// A path without a point (its start did not converge: stalled) has null
-/// end_energy and end_parameter.
-Json load_json(const KnotLoadOptions& o, const KnotLoadResult& r, const Json& start_match,
-               const std::vector<Json>& released_matches) {
-  const auto& pts = r.path.points;
-  const auto at = [](const PathPoint* p, double PathPoint::*field) {
-    return p ? json_number(p->*field) : Json(nullptr);
-  };
-  const PathPoint* last = pts.empty() ? nullptr : &pts.back();
-  Json j;
-  j["load"] = to_string(o.kind);
-  j["parameter"] = r.parameter_name;
-  j["from"] = json_number(r.from);
-  j["to"] = json_number(o.to);
-  j["vertices"] = o.kind == LoadKind::Plates ? Json(nullptr) : Json(r.vertices);
-  j["normal"] = o.kind == LoadKind::Plates ? Json({r.normal(0), r.normal(1), r.normal(2)}) : Json(nullptr);
-  j["pull_stiffness"] = o.kind == LoadKind::Pull ? json_number(r.pull_stiffness) : Json(nullptr);
-  j["status"] = to_string(r.path.status);
-  j["points"] = pts.size();
-  j["start_energy"] = json_number(r.start_energy);
-  j["end_energy"] = at(last, &PathPoint::energy);
-  j["end_parameter"] = at(last, &PathPoint::parameter);
-  j["work"] = json_number(r.work);
-  j["dissipated"] = json_number(r.dissipated);
-  j["alexander_preserved"] = r.alexander_preserved;
-  j["start_match"] = start_match;
-  j["snaps"] = Json::array();
-  for (size_t k = 0; k < r.snaps.size(); ++k) {
-    const Snap& s = r.snaps[k];
-    Json sj;
-    sj["point"] = s.point;
-    sj["parameter"] = json_number(s.parameter);
-    sj["reaction"] = json_number(s.reaction);
-    sj["jump"] = json_number(s.jump);
-    sj["energy_drop"] = json_number(s.energy_drop);
-    sj["loaded_energy"] = json_number(s.loaded_energy);
-    sj["released_status"] = s.released_status;
-    sj["released_energy"] = json_number(s.released_energy);
-    sj["released_match"] = released_matches[k];
-    j["snaps"].push_back(sj);
-  }
-  j["seconds"] = json_number(r.path.seconds);
-  return j;
-}
 
 /// The path's columns (those of path.csv) as numpy arrays, and its curves.
 Result path_result(const LoadPath& path, Eigen::Index n) {
@@ -147,12 +88,12 @@ Result load_state(const py::handle& state, const std::string& kind, double to,
     if (r.alexander_preserved) {
       const DatasetReader* dr = reader ? &*reader : nullptr;
       if (!r.path.points.empty())
-        start_match = match_json(dr, as_points(r.path.points.front().dofs.head(3 * P.rows())));
-      for (const Snap& s : r.snaps) released_matches.push_back(match_json(dr, s.released));
+        start_match = closest_equilibrium_json(dr, as_points(r.path.points.front().dofs.head(3 * P.rows())));
+      for (const Snap& s : r.snaps) released_matches.push_back(closest_equilibrium_json(dr, s.released));
     }
   }
   if (!r.alexander_preserved) throw TopologyError("load: the knot type changed along the path");
-  const Json j = load_json(o, r, start_match, released_matches);
+  const Json j = knot_load_json(o, r, start_match, released_matches);
   Result result = result_from_json(j, "load");
   py::list snaps;
   for (size_t k = 0; k < r.snaps.size(); ++k) {

@@ -24,4 +24,9 @@ Json query_json(const QueryResult& result);
 /// not recorded), knots (names in table order).
 Json describe_json(const DatasetReader& reader);
 
+/// The data set's equilibrium closest to x (n by 3; ICP after the
+/// pre-filter, as `knots search`): knot, index, distance; null without a
+/// reader or a hit (`knots load --dataset`'s matches).
+Json closest_equilibrium_json(const DatasetReader* reader, const Points& x);
+
 }  // namespace ek
