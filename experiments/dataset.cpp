@@ -23,13 +23,17 @@ using namespace ek::exp;
 
 namespace {
 
-/// The adaptive rule's cost per crossing number in the paper10 run
-/// (2026-12-02, commits ba085f0 and 61493b4; docs/reproducing.md): mean
-/// samples per knot and seconds per relaxation (one thread; the runs up to
-/// 10_63 shared the 2 cores with builds and tests, which inflates their
+/// The adaptive rule's cost per crossing number: 3 to 10 in the paper10 run
+/// (2026-12-02, commits ba085f0 and 61493b4; docs/reproducing.md), 11 and
+/// 12 in the first two of 20 shards of the sample12 run (40 knots,
+/// 2026-12-03, commit 49f243a), weighted by the table's shares of BB and
+/// other knots (the sample holds every BB knot; they stop after 63–70
+/// samples, the others after 234 (11) and 333 (12)): mean samples per knot
+/// and seconds per relaxation (one thread; the paper10 runs up to 10_63
+/// shared the 2 cores with builds and tests, which inflates their
 /// seconds). The estimate printed before an adaptive run extrapolates it
 /// with estimate_run(); the paper's median of 90 samples per knot had
-/// underestimated that run 3.6-fold (the rule's cost is its mean, 160.6).
+/// underestimated the paper10 run 3.6-fold (the rule's cost is its mean).
 SamplingCost reference_adaptive_cost() {
   struct Row {
     int crossings, knots;
@@ -37,7 +41,8 @@ SamplingCost reference_adaptive_cost() {
   };
   constexpr Row rows[] = {{3, 1, 60.0, 0.347},   {4, 1, 90.0, 0.151},   {5, 2, 75.0, 0.329},
                           {6, 3, 66.67, 0.523},  {7, 7, 75.71, 0.506},  {8, 21, 96.67, 0.726},
-                          {9, 49, 158.16, 0.681}, {10, 165, 176.85, 0.505}};
+                          {9, 49, 158.16, 0.681}, {10, 165, 176.85, 0.505}, {11, 8, 229.2, 0.279},
+                          {12, 32, 318.0, 0.316}};
   SamplingCost c;
   for (const Row& r : rows) {
     c.knots += r.knots;
