@@ -50,7 +50,6 @@ Vec3 least_extent_axis(const Points& P) {
   return eig.eigenvectors().col(0);
 }
 
-
 /// The load of `o` on the relaxed start `X` (its parameter set to `from`).
 std::unique_ptr<ControlledLoad> make_load(const Points& X, const VecX& rest, const KnotLoadOptions& o,
                                           KnotLoadResult& out, double& from) {

@@ -120,6 +120,7 @@ void invariants(const Link& link, std::vector<AlexanderPolynomial>& alexanders, 
 
 struct LinkModel::Impl {
   RelaxOptions options;
+  double mean_edge;  ///< [length] of the first component: the model's ℓ
   ResolvedModel model;
   CurveTopology topology;
   LinkRodsTerm rods;
@@ -129,17 +130,10 @@ struct LinkModel::Impl {
 
   Impl(const Link& link, const RelaxOptions& o)
       : options(o),
-        model(resolve_model(o, curve_length(link[0]) / static_cast<double>(link[0].rows()))),
+        mean_edge(curve_length(link[0]) / static_cast<double>(link[0].rows())),
+        model(resolve_model(o, mean_edge)),
         topology(topology_of(link)),
         rods(link, o.material) {}
-
-  ContactOptions contact_options(double f) const {
-    ContactOptions co;
-    co.dhat = model.dhat;
-    co.stiffness = f * model.contact_stiffness;
-    co.hessian_margin = options.contact_hessian_margin;
-    return co;
-  }
 };
 
 LinkModel::LinkModel(const Link& link, const RelaxOptions& options) {
@@ -153,7 +147,9 @@ Objective& LinkModel::objective(double factor) {
   require(factor > 0.0, "LinkModel::objective: the contact stiffness factor must be positive");
   if (!impl_->objective || factor != impl_->factor) {
     impl_->objective.reset();
-    impl_->contact.emplace(impl_->topology, impl_->contact_options(factor));
+    ContactOptions co = contact_options(impl_->model, impl_->options);
+    co.stiffness *= factor;
+    impl_->contact.emplace(impl_->topology, co);
     impl_->objective = std::make_unique<LinkObjective>(impl_->rods, *impl_->contact);
     impl_->factor = factor;
   }
@@ -163,12 +159,18 @@ Objective& LinkModel::objective(double factor) {
 Link LinkModel::components() const { return impl_->rods.components(); }
 
 double LinkModel::min_distance() {
-  objective(impl_->objective ? impl_->factor : 1.0);
+  if (!impl_->contact) objective();
   impl_->contact->update(impl_->rods.positions());
   return impl_->contact->min_distance();
 }
 
 const ResolvedModel& LinkModel::model() const { return impl_->model; }
+
+NewtonOptions LinkModel::newton_options() const {
+  const int n = impl_->rods.num_dofs() / 3;
+  return ek::newton_options(impl_->options, impl_->model,
+                            cached_lambda_min(n, impl_->mean_edge, impl_->options.material, TwistModel::TwistFree));
+}
 
 bool LinkRelaxResult::converged() const {
   return report.status == SolverStatus::ConvergedStable || report.status == SolverStatus::ConvergedUnstable;
@@ -182,15 +184,7 @@ LinkRelaxResult relax_link(const Link& link, const RelaxOptions& options) {
   LinkModel m(link, options);
   LinkRelaxResult out;
   invariants(link, out.alexander, out.linking_numbers);
-  int n = 0;
-  for (const Points& P : link) n += static_cast<int>(P.rows());
-  const double mean_edge = curve_length(link[0]) / static_cast<double>(link[0].rows());
-  NewtonOptions no(options.newton);
-  no.gradient_tolerance = m.model().tolerance;
-  no.max_iterations = options.max_iterations;
-  no.stop_at_critical_point = options.stop_at_critical_point;
-  no.lambda_min = cached_lambda_min(n, mean_edge, options.material, TwistModel::TwistFree);
-  NewtonSolver solver(no);
+  NewtonSolver solver(m.newton_options());
   for (const double f : options.contact_continuation) out.continuation_reports.push_back(solver.minimize(m.objective(f)));
   Objective& objective = m.objective(1.0);
   out.report = solver.minimize(objective);

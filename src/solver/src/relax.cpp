@@ -76,6 +76,8 @@ ElasticRod make_rod(const Points& curve, const VecX& rest, const RelaxOptions& o
   return rod;
 }
 
+}  // namespace
+
 ContactOptions contact_options(const ResolvedModel& model, const RelaxOptions& options) {
   ContactOptions co;
   co.dhat = model.dhat;
@@ -92,6 +94,8 @@ NewtonOptions newton_options(const RelaxOptions& options, const ResolvedModel& m
   no.lambda_min = lambda_min;
   return no;
 }
+
+namespace {
 
 /// The phases: contact-stiffness continuation (each factor with a softer
 /// barrier; every accepted step is still collision-free, the barrier being

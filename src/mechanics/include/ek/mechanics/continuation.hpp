@@ -69,8 +69,7 @@ struct ContinuationOptions {
   double index_threshold = 1e-9;     ///< [energy/length²] eigenvalues below −this count as negative
   /// The stable path instead of the arclength corrector: when set, the
   /// step is taken in μ (Δs towards the target; a stable branch is a graph
-  /// over μ), the predictor is x + Δμ·dx/dμ with dx/dμ = −H⁻¹ ∂G/∂μ and its
-  /// move capped at `max_jump`, and each
+  /// over μ), the predictor is x + Δμ·dx/dμ with dx/dμ = −H⁻¹ ∂G/∂μ, and each
   /// point minimises E(·; μ_p) from the predictor (NewtonSolver with these
   /// options: line search, shifts of indefinite Hessians, the CCD), so the
   /// path follows stable equilibria only. A minimiser that lands farther

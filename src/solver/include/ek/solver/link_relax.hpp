@@ -51,7 +51,8 @@ struct LinkRelaxResult {
 /// The link's model at a configuration: its rods (rest lengths: the edges
 /// of the link given) and the contact between all its edges, as one
 /// Objective over [x_0 | x_1 | ...] whose rigid modes are the link's rigid
-/// motions. ω and d̂ are those relax_link() resolves from the options.
+/// motions. ω, d̂ and the tolerance are resolved from the options
+/// (resolve_model()) with ℓ the mean edge of the first component.
 class LinkModel {
  public:
   /// Throws InputError as relax_link() does.
@@ -66,6 +67,9 @@ class LinkModel {
   Link components() const;  ///< the current positions, one array per component
   double min_distance();    ///< [length] smallest distance of edges sharing no vertex
   const ResolvedModel& model() const;
+  /// The Newton options of the relaxation (newton_options() of relax.hpp),
+  /// λ_min that of the straight rod with the link's total vertex count.
+  NewtonOptions newton_options() const;
 
  private:
   struct Impl;

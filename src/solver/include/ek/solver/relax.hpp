@@ -131,6 +131,13 @@ struct ResolvedModel {
 /// Resolves the defaults of `options` for rest edges of mean length
 /// `mean_edge_length` [length] (> 0).
 ResolvedModel resolve_model(const RelaxOptions& options, double mean_edge_length);
+/// The contact options of the resolved model (d̂, ω) and of `options`
+/// (the Hessian pattern's margin), as relax() and relax_link() use them.
+ContactOptions contact_options(const ResolvedModel& model, const RelaxOptions& options);
+/// The Newton options of a relaxation: options.newton with the goal of
+/// `options` (the resolved tolerance, the iteration cap, stop at a critical
+/// point) and the straight rod's λ_min (the shift's scale).
+NewtonOptions newton_options(const RelaxOptions& options, const ResolvedModel& model, double lambda_min);
 /// ω that keeps the paper's relative penetration for another material:
 /// 1e3 · (E/2000) · (r/0.2)³ (contact_potential.hpp, "Stiffness scaling").
 double default_contact_stiffness(const RodMaterial& material);
