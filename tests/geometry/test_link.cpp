@@ -98,7 +98,9 @@ TEST(Link, RoundTripIsExactAndOneComponentIsACurve) {
     ASSERT_EQ(back.size(), 2u) << ext;
     EXPECT_EQ(back[0], link[0]) << ext;
     EXPECT_EQ(back[1], link[1]) << ext;
-    if (std::string(ext) == ".obj") EXPECT_THROW(read_curve(path), InputError) << "a link is not one curve";
+    if (std::string(ext) == ".obj") {
+      EXPECT_THROW(read_curve(path), InputError) << "a link is not one curve";
+    }
     const std::string one = ::testing::TempDir() + "link_one" + ext, curve = ::testing::TempDir() + "curve_one" + ext;
     write_link(one, Link{link[0]});
     write_curve(curve, link[0]);

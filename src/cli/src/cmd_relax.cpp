@@ -147,11 +147,11 @@ int cmd_relax(int argc, char** argv) {
   RelaxCommand c;
   if (!parse_relax(argc, argv, c)) return 0;
   if (!c.out.empty()) check_writable(c.out);
-  if (const Link link = read_link(c.file); link.size() > 1) return relax_link_file(c, link);
+  const Link link = read_link(c.file);  // a curve file is a link of one component
+  if (link.size() > 1) return relax_link_file(c, link);
   const RelaxOptions opt = c.request.options();
-  if (!c.out.empty()) check_writable(c.out);
   if (!c.trace.empty()) check_writable(c.trace);
-  const RelaxResult r = relax(read_curve(c.file), opt);
+  const RelaxResult r = relax(link.front(), opt);
   if (!c.out.empty() && r.alexander_preserved) write_curve(c.out, r.positions);
   if (!c.trace.empty()) write_trace_file(c.trace, r);
   if (c.json) print_json(result_json(c, r));

@@ -56,22 +56,8 @@ std::vector<StrandSample> strand_walk(const BraidWord& word, int K, const std::f
 /// The first position of each cycle of the braid's permutation, in order
 /// (one per component of the closure).
 std::vector<int> cycle_starts(const BraidWord& word) {
-  std::vector<int> after(static_cast<size_t>(word.strands) + 1);
-  for (int p = 1; p <= word.strands; ++p) {
-    int pos = p;
-    for (const int letter : word.letters) {
-      const int i = std::abs(letter);
-      if (pos == i || pos == i + 1) pos = pos == i ? i + 1 : i;
-    }
-    after[static_cast<size_t>(p)] = pos;
-  }
   std::vector<int> starts;
-  std::vector<char> seen(static_cast<size_t>(word.strands) + 1, 0);
-  for (int p = 1; p <= word.strands; ++p) {
-    if (seen[static_cast<size_t>(p)]) continue;
-    starts.push_back(p);
-    for (int q = p; !seen[static_cast<size_t>(q)]; q = after[static_cast<size_t>(q)]) seen[static_cast<size_t>(q)] = 1;
-  }
+  for (const std::vector<int>& cycle : closure_cycles(word)) starts.push_back(cycle.front());
   return starts;
 }
 
@@ -118,43 +104,40 @@ Points cylinder_points(const BraidWord& word, const EmbeddingOptions& o, double 
   return to_points(pts);
 }
 
-/// The cylinder with the crossing offset given in output edge lengths: the
-/// dense curve's scale is that of the resampling (its length over n).
-Points cylinder_layout(const BraidWord& word, const EmbeddingOptions& o, int start = 1) {
+/// The cylinder's crossing offset h in the dense curve's units: the offset
+/// given in output edge lengths, at the scale of the resampling (the whole
+/// closure's length over n, so that every component's edges share it).
+double cylinder_offset(const BraidWord& word, const EmbeddingOptions& o) {
   require_input(o.cylinder_crossing_offset > 0.0 && std::isfinite(o.cylinder_crossing_offset),
                 "braid embedding: the cylinder's crossing offset must be positive");
   require_input(o.braid_tilt == 0.0, "braid embedding: the tilt applies to the coil only");
-  double length = 0.0;  // of the whole closure: every component's edges on one scale
+  double length = 0.0;
   for (const int c : cycle_starts(word)) length += curve_length(cylinder_points(word, o, 0.0, c));
-  const double unit_edge = length / o.vertices;
-  const double h = o.cylinder_crossing_offset * unit_edge;
+  const double h = o.cylinder_crossing_offset * length / o.vertices;
   require_input(h < 0.5, "braid embedding: the cylinder's crossing offset is too large for " +
                              std::to_string(o.vertices) + " vertices");
-  return cylinder_points(word, o, h, start);
+  return h;
 }
 
-/// The dense closed curve of the component starting at position `start`.
-Points dense_component(const BraidWord& word, const EmbeddingOptions& o, int start) {
-  return o.braid_style == BraidStyle::Coil ? coil_layout(word, o, start) : cylinder_layout(word, o, start);
+/// The dense closed curve of each component, from its first position.
+std::vector<Points> dense_components(const BraidWord& word, const EmbeddingOptions& o, const std::vector<int>& starts) {
+  const double h = o.braid_style == BraidStyle::Cylinder ? cylinder_offset(word, o) : 0.0;
+  std::vector<Points> out;
+  for (const int c : starts)
+    out.push_back(o.braid_style == BraidStyle::Coil ? coil_layout(word, o, c) : cylinder_points(word, o, h, c));
+  return out;
 }
 
 /// Lk(i, j) from the braid word: half the sum of the signs of the letters
-/// whose two strands belong to components i and j (σ_k: +1, σ_k⁻¹: −1).
-Eigen::MatrixXi braid_linking_numbers(const BraidWord& word, const std::vector<int>& starts) {
-  const auto m = static_cast<Eigen::Index>(starts.size());
-  std::vector<int> component(static_cast<size_t>(word.strands) + 1, -1);
-  for (Eigen::Index c = 0; c < m; ++c) {  // every position a cycle visits at the word's start
-    int pos = starts[static_cast<size_t>(c)];
-    do {
-      component[static_cast<size_t>(pos)] = static_cast<int>(c);
-      for (const int letter : word.letters) {
-        const int i = std::abs(letter);
-        if (pos == i || pos == i + 1) pos = pos == i ? i + 1 : i;
-      }
-    } while (pos != starts[static_cast<size_t>(c)]);
-  }
+/// whose two strands belong to components i and j (σ_k: +1, σ_k⁻¹: −1),
+/// the components numbered as closure_cycles() orders them.
+Eigen::MatrixXi braid_linking_numbers(const BraidWord& word) {
+  const std::vector<std::vector<int>> cycles = closure_cycles(word);
+  const auto m = static_cast<Eigen::Index>(cycles.size());
+  std::vector<int> at(static_cast<size_t>(word.strands) + 1, -1);  // the component at each position as the word is read
+  for (size_t c = 0; c < cycles.size(); ++c)
+    for (const int pos : cycles[c]) at[static_cast<size_t>(pos)] = static_cast<int>(c);
   Eigen::MatrixXi twice = Eigen::MatrixXi::Zero(m, m);
-  std::vector<int> at = component;  // the component at each position as the word is read
   for (const int letter : word.letters) {
     const auto i = static_cast<size_t>(std::abs(letter));
     const int a = at[i], b = at[i + 1];
@@ -181,12 +164,9 @@ LinkEmbedding embed_braid_link(const BraidWord& word, const EmbeddingOptions& o)
   validate(o);
   require_input(word.length() > 0 && word.strands >= 1, "braid embedding: empty braid word");
   const std::vector<int> starts = cycle_starts(word);
-  std::vector<Points> dense;
+  const std::vector<Points> dense = dense_components(word, o, starts);
   double total = 0.0;
-  for (const int c : starts) {
-    dense.push_back(dense_component(word, o, c));
-    total += curve_length(dense.back());
-  }
+  for (const Points& D : dense) total += curve_length(D);
   LinkEmbedding e;
   double h = 0.0;
   std::vector<EquilateralResult> parts;
@@ -207,7 +187,7 @@ LinkEmbedding embed_braid_link(const BraidWord& word, const EmbeddingOptions& o)
     e.max_edge_deviation = std::max(e.max_edge_deviation, (edges.array() - o.edge_length).abs().maxCoeff());
   }
   e.edge_length = o.edge_length;
-  e.linking_numbers = braid_linking_numbers(word, starts);
+  e.linking_numbers = braid_linking_numbers(word);
   validate_link(e.components, "braid embedding");
   if (o.verify) {
     const Eigen::MatrixXi got = linking_matrix(e.components).array().round().cast<int>();
@@ -222,7 +202,7 @@ Embedding embed_braid(const BraidWord& word, const EmbeddingOptions& o) {
   validate(o);
   require_input(word.length() > 0 && word.strands >= 1, "braid embedding: empty braid word");
   require_input(closure_components(word) == 1, "braid embedding: the closure is not a knot");
-  const Points dense = o.braid_style == BraidStyle::Coil ? coil_layout(word, o) : cylinder_layout(word, o);
+  const Points dense = dense_components(word, o, {1}).front();
   const AlexanderPolynomial expected = alexander(word);
   return finish_embedding(dense, o, "braid", &expected);
 }

@@ -22,7 +22,7 @@ double component_distance(const Points& A, const Points& B) {
   return std::sqrt(d2);
 }
 
-void validate_link(const Link& link, const std::string& source) {
+double validate_link(const Link& link, const std::string& source) {
   if (link.empty()) throw InputError(source + ": a link needs at least one component");
   Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
   for (size_t c = 0; c < link.size(); ++c) {
@@ -31,13 +31,18 @@ void validate_link(const Link& link, const std::string& source) {
     hi = hi.cwiseMax(link[c].colwise().maxCoeff().transpose());
   }
   const double tolerance = 1e-9 * (hi - lo).norm();
+  double clearance = std::numeric_limits<double>::infinity();
   for (size_t a = 0; a < link.size(); ++a)
-    for (size_t b = a + 1; b < link.size(); ++b)
-      if (const double d = component_distance(link[a], link[b]); d <= tolerance) {
+    for (size_t b = a + 1; b < link.size(); ++b) {
+      const double d = component_distance(link[a], link[b]);
+      if (d <= tolerance) {
         std::ostringstream msg;
         msg << source << ": components " << a + 1 << " and " << b + 1 << " touch or cross (distance " << d << ")";
         throw InputError(msg.str());
       }
+      clearance = std::min(clearance, d);
+    }
+  return clearance;
 }
 
 double linking_number(const Points& A, const Points& B) {

@@ -203,7 +203,7 @@ PDCode parse_pd(const std::string& text) {
   return code;
 }
 
-int closure_components(const BraidWord& word) {
+std::vector<std::vector<int>> closure_cycles(const BraidWord& word) {
   std::vector<int> perm(static_cast<size_t>(word.strands));
   std::iota(perm.begin(), perm.end(), 0);
   // position -> strand after applying the letters left to right
@@ -212,14 +212,20 @@ int closure_components(const BraidWord& word) {
     std::swap(perm[static_cast<size_t>(i)], perm[static_cast<size_t>(i + 1)]);
   }
   std::vector<char> seen(perm.size(), 0);
-  int cycles = 0;
+  std::vector<std::vector<int>> cycles;
   for (size_t s = 0; s < perm.size(); ++s) {
     if (seen[s]) continue;
-    ++cycles;
-    for (size_t x = s; !seen[x]; x = static_cast<size_t>(perm[x])) seen[x] = 1;
+    cycles.emplace_back();
+    for (size_t x = s; !seen[x]; x = static_cast<size_t>(perm[x])) {
+      seen[x] = 1;
+      cycles.back().push_back(static_cast<int>(x) + 1);
+    }
+    std::sort(cycles.back().begin(), cycles.back().end());
   }
   return cycles;
 }
+
+int closure_components(const BraidWord& word) { return static_cast<int>(closure_cycles(word).size()); }
 
 BraidWord parse_braid(const std::string& text, int strands) {
   const BraidWord word = parse_braid_word(text, strands);

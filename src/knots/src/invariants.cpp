@@ -1,6 +1,5 @@
 #include "ek/knots/invariants.hpp"
 
-#include <limits>
 #include <stdexcept>
 
 #include "ek/core/errors.hpp"
@@ -32,16 +31,12 @@ CurveInvariants curve_invariants(const Points& P) {
 
 LinkInvariants link_invariants(const Link& link) {
   require_input(link.size() >= 2, "link invariants: a link needs at least 2 components");
-  validate_link(link, "link");
   LinkInvariants out;
+  out.component_clearance = validate_link(link, "link");
   for (const Points& P : link) out.components.push_back(curve_invariants(P));
   out.linking = linking_matrix(link);
   out.linking_numbers = out.linking.array().round().cast<int>();
   out.linking_error = (out.linking - out.linking_numbers.cast<double>()).cwiseAbs().maxCoeff();
-  out.component_clearance = std::numeric_limits<double>::infinity();
-  for (size_t a = 0; a < link.size(); ++a)
-    for (size_t b = a + 1; b < link.size(); ++b)
-      out.component_clearance = std::min(out.component_clearance, component_distance(link[a], link[b]));
   return out;
 }
 

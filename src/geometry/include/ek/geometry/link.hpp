@@ -41,7 +41,9 @@ void write_link(const std::string& path, const Link& link);
 /// (validate_closed_curve), and no two components touching (their smallest
 /// segment distance above 1e-9 times the link's bounding-box diagonal).
 /// Throws InputError naming `source`, the components and their distance.
-void validate_link(const Link& link, const std::string& source);
+/// Returns the smallest distance between two components [length]
+/// (+infinity for one component).
+double validate_link(const Link& link, const std::string& source);
 
 /// Smallest distance between a segment of polygon A and one of polygon B
 /// (n_A by 3, n_B by 3, both closed). O(n_A·n_B).

@@ -80,4 +80,9 @@ std::string to_string(const BraidWord& word);
 /// Number of components of the braid's closure (cycles of its permutation).
 int closure_components(const BraidWord& word);
 
+/// The cycles of the braid's permutation, one per component of its closure:
+/// each the sorted strand positions (1 .. strands) it occupies at the word's
+/// start, the cycles ordered by their lowest position.
+std::vector<std::vector<int>> closure_cycles(const BraidWord& word);
+
 }  // namespace ek
