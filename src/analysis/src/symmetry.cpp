@@ -26,23 +26,8 @@ Vec3 centroid(const Points& P) { return P.colwise().mean().transpose(); }
 }  // namespace
 
 double rotational_symmetry_error(const Points& P, const Vec3& c, const Vec3& axis, int p) {
-  require(p >= 2, "rotational_symmetry_error: p must be at least 2");
   require(P.rows() >= 3, "rotational_symmetry_error: a curve needs at least 3 vertices");
-  const Eigen::AngleAxisd R(2.0 * M_PI / p, axis.normalized());
-  const Eigen::Index n = P.rows();
-  double rg = 0.0;
-  for (Eigen::Index i = 0; i < n; ++i) rg += (P.row(i).transpose() - c).squaredNorm();
-  rg = std::sqrt(rg / static_cast<double>(n));
-  if (rg == 0.0) return 0.0;
-  double sum = 0.0;
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const Vec3 q = c + R * (P.row(i).transpose() - c);
-    double best = 1e300;
-    for (Eigen::Index j = 0; j < n; ++j)
-      best = std::min(best, point_segment_distance_squared(q, P.row(j).transpose(), P.row((j + 1) % n).transpose()));
-    sum += std::sqrt(best);
-  }
-  return sum / static_cast<double>(n) / rg;
+  return rotational_symmetry_error(Link{P}, c, axis, p);
 }
 
 double rotational_symmetry_error(const Link& link, const Vec3& c, const Vec3& axis, int p) {

@@ -126,8 +126,7 @@ void write_path_csv(const fs::path& file, const KnotLoadResult& r) {
   for (size_t k = 0; k < pts.size(); ++k) {
     const PathPoint& p = pts[k];
     out << k << "," << p.parameter << "," << p.displacement << "," << p.reaction << ",";
-    if (k > 0 && p.event != PathEvent::Snap && p.displacement != pts[k - 1].displacement)
-      out << (p.reaction - pts[k - 1].reaction) / (p.displacement - pts[k - 1].displacement);
+    if (const auto stiffness = secant_stiffness(r.path, k)) out << *stiffness;
     out << "," << p.energy << "," << p.load_energy << "," << p.gradient_norm << "," << p.index << ","
         << p.lowest_eigenvalue << "," << (p.stable ? "true" : "false") << "," << to_string(p.event) << ","
         << p.corrector_iterations << "\n";

@@ -124,6 +124,14 @@ std::array<int, 2> diameter_pair(const Points& X) {
   return best;
 }
 
+std::optional<double> secant_stiffness(const LoadPath& path, size_t k) {
+  const auto& pts = path.points;
+  if (k == 0 || k >= pts.size()) return std::nullopt;
+  const PathPoint &p = pts[k], &q = pts[k - 1];
+  if (p.event == PathEvent::Snap || p.displacement == q.displacement) return std::nullopt;
+  return (p.reaction - q.reaction) / (p.displacement - q.displacement);
+}
+
 double path_work(const LoadPath& path, size_t end) {
   const auto& pts = path.points;
   double work = 0.0;

@@ -27,10 +27,8 @@ Result path_result(const LoadPath& path, Eigen::Index n) {
     parameter.mutable_at(k) = p.parameter;
     displacement.mutable_at(k) = p.displacement;
     reaction.mutable_at(k) = p.reaction;
-    const PathPoint* q = k > 0 ? &pts[static_cast<size_t>(k) - 1] : nullptr;
-    stiffness.mutable_at(k) = q && p.event != PathEvent::Snap && p.displacement != q->displacement
-                                  ? (p.reaction - q->reaction) / (p.displacement - q->displacement)
-                                  : std::numeric_limits<double>::quiet_NaN();
+    stiffness.mutable_at(k) =
+        secant_stiffness(path, static_cast<size_t>(k)).value_or(std::numeric_limits<double>::quiet_NaN());
     energy.mutable_at(k) = p.energy;
     load_energy.mutable_at(k) = p.load_energy;
     gradient_norm.mutable_at(k) = p.gradient_norm;

@@ -97,6 +97,11 @@ struct KnotLoadResult {
 /// The two vertices of X (n by 3) farthest apart (the default pull's pair).
 std::array<int, 2> diameter_pair(const Points& X);
 
+/// The secant stiffness dF/dδ at path point k from point k − 1 (reaction
+/// over displacement) [energy/length²]; none at the first point, across a
+/// snap, or where the displacement did not change.
+std::optional<double> secant_stiffness(const LoadPath& path, size_t k);
+
 /// ∫ ∂E/∂μ dμ over the path's points [0, end) by trapezoids, a snap (a jump
 /// at nearly fixed μ) doing no work: KnotLoadResult::work for end = all.
 double path_work(const LoadPath& path, size_t end);
