@@ -17,10 +17,7 @@
 // run's start and each snap's states) and summary.json (docs/results.md).
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
-#include <map>
-#include <sstream>
 
 #include "ek/dataset/dataset_file.hpp"
 #include "ek/geometry/curve_io.hpp"
@@ -38,47 +35,24 @@ constexpr double kPlatesTo = 4.0;     ///< [r] the plates' final gap: two wires 
 constexpr double kPullStretch = 1.25;  ///< [1] the pull's final distance over the start's diameter
 constexpr double kReach = 0.99;       ///< [1] similarity naming a released state (as the transitions' reach)
 
-using Row = std::map<std::string, std::string>;
-
-/// The rows of a CSV file without quoted cells, as column → cell.
-std::vector<Row> read_rows(const std::string& path) {
-  std::ifstream in(path);
-  require_input(static_cast<bool>(in), "exp_loads: cannot read " + path + " (run its experiment first)");
-  const auto split = [](const std::string& line) {
-    std::vector<std::string> out;
-    std::stringstream s(line);
-    for (std::string item; std::getline(s, item, ',');) out.push_back(item);
-    if (!line.empty() && line.back() == ',') out.emplace_back();
-    return out;
-  };
-  std::string line;
-  std::getline(in, line);
-  const std::vector<std::string> header = split(line);
-  std::vector<Row> rows;
-  while (std::getline(in, line)) {
-    const std::vector<std::string> cells = split(line);
-    require_input(cells.size() == header.size(), "exp_loads: " + path + ": a row has the wrong number of cells");
-    Row r;
-    for (size_t k = 0; k < header.size(); ++k) r[header[k]] = cells[k];
-    rows.push_back(r);
-  }
-  return rows;
-}
-
 /// One puzzle pair: its row of puzzle_barriers.csv with the curves of puzzles.csv.
 struct Pair {
-  Row barrier;
+  CsvRow barrier;
   std::string curve_a, curve_b;
 };
 
 /// The first `count` rows of ../transitions/puzzle_barriers.csv with their curves.
 std::vector<Pair> read_pairs(const Args& a, int count) {
-  const std::vector<Row> barriers = read_rows(a.results + "/transitions/puzzle_barriers.csv");
-  const std::vector<Row> puzzles = read_rows(a.results + "/puzzles/puzzles.csv");
+  const std::vector<CsvRow> barriers =
+      read_csv_rows(a.results + "/transitions/puzzle_barriers.csv", "exp_loads",
+                    {"knot", "state_a", "state_b", "barrier_forward_scaled", "barrier_backward_scaled",
+                     "upper_bound_scaled", "dataset"});
+  const std::vector<CsvRow> puzzles = read_csv_rows(a.results + "/puzzles/puzzles.csv", "exp_loads",
+                                                    {"knot", "state_a", "state_b", "curve_a", "curve_b"});
   std::vector<Pair> out;
-  for (const Row& b : barriers) {
+  for (const CsvRow& b : barriers) {
     if (static_cast<int>(out.size()) >= count) break;
-    for (const Row& p : puzzles)
+    for (const CsvRow& p : puzzles)
       if (p.at("knot") == b.at("knot") && p.at("state_a") == b.at("state_a") && p.at("state_b") == b.at("state_b")) {
         out.push_back({b, p.at("curve_a"), p.at("curve_b")});
         break;
@@ -151,7 +125,7 @@ void write_path(const Args& a, int id, const KnotLoadResult& res) {
 /// One run: its row of loads.csv, its snaps' rows of snaps.csv, its files.
 void run_one(const Args& a, int id, const Run& r, Csv& loads, Csv& snaps, results::LoadsSummary& sum) {
   const Setup s = setup(a, r);
-  const Row& b = r.pair->barrier;
+  const CsvRow& b = r.pair->barrier;
   const KnotLoadResult res = load_knot(s.start, s.rest, s.options);
   const CurveSimilarity sim = knot_similarity(b.at("knot"));
   const std::string tag = "curves/run_" + std::to_string(id);

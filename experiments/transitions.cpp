@@ -15,10 +15,8 @@
 // graph (transitions_4_1_connected.h5, graph_pairs.csv).
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <set>
-#include <sstream>
 
 #include "ek/core/parse.hpp"
 #include "ek/dataset/dataset_file.hpp"
@@ -143,33 +141,14 @@ struct PuzzleRow {
 
 /// The rows of puzzles.csv (InputError when a needed column is missing or a cell is no number).
 std::vector<PuzzleRow> read_puzzles(const std::string& path) {
-  std::ifstream in(path);
-  require_input(static_cast<bool>(in), "exp_transitions: cannot read " + path);
-  const auto split = [](const std::string& line) {
-    std::vector<std::string> out;
-    std::stringstream s(line);
-    for (std::string item; std::getline(s, item, ',');) out.push_back(item);
-    if (!line.empty() && line.back() == ',') out.emplace_back();  // getline drops a trailing empty cell
-    return out;
-  };
-  std::string line;
-  std::getline(in, line);
-  const std::vector<std::string> header = split(line);
-  const auto column = [&](const std::string& name) {
-    const auto it = std::find(header.begin(), header.end(), name);
-    require_input(it != header.end(), "exp_transitions: " + path + " has no column '" + name + "'");
-    return static_cast<size_t>(it - header.begin());
-  };
-  const size_t knot = column("knot"), sa = column("state_a"), sb = column("state_b"), link = column("link"),
-               ca = column("curve_a"), cb = column("curve_b");
+  const std::string at = "exp_transitions: " + path;
   std::vector<PuzzleRow> rows;
-  while (std::getline(in, line)) {
-    const std::vector<std::string> c = split(line);
-    require_input(c.size() == header.size(), "exp_transitions: " + path + ": a row has the wrong number of cells");
-    const std::string at = "exp_transitions: " + path;
-    rows.push_back({c[knot], c[ca], c[cb], static_cast<int>(parse_integer(c[sa], at + ": state_a")),
-                    static_cast<int>(parse_integer(c[sb], at + ": state_b")), parse_number(c[link], at + ": link")});
-  }
+  for (const CsvRow& c : read_csv_rows(path, "exp_transitions", {"knot", "state_a", "state_b", "link", "curve_a",
+                                                                 "curve_b"}))
+    rows.push_back({c.at("knot"), c.at("curve_a"), c.at("curve_b"),
+                    static_cast<int>(parse_integer(c.at("state_a"), at + ": state_a")),
+                    static_cast<int>(parse_integer(c.at("state_b"), at + ": state_b")),
+                    parse_number(c.at("link"), at + ": link")});
   return rows;
 }
 

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <sstream>
 
@@ -176,6 +177,34 @@ std::string Csv::num(double x, int digits) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.*g", digits, x);
   return buf;
+}
+
+std::vector<CsvRow> read_csv_rows(const std::string& path, const std::string& who,
+                                  const std::vector<std::string>& required) {
+  std::ifstream in(path);
+  require_input(static_cast<bool>(in), who + ": cannot read " + path + " (run its experiment first)");
+  const auto split = [](const std::string& line) {
+    std::vector<std::string> out;
+    std::stringstream s(line);
+    for (std::string item; std::getline(s, item, ',');) out.push_back(item);
+    if (!line.empty() && line.back() == ',') out.emplace_back();  // getline drops a trailing empty cell
+    return out;
+  };
+  std::string line;
+  std::getline(in, line);
+  const std::vector<std::string> header = split(line);
+  for (const std::string& name : required)
+    require_input(std::find(header.begin(), header.end(), name) != header.end(),
+                  who + ": " + path + " has no column '" + name + "'");
+  std::vector<CsvRow> rows;
+  while (std::getline(in, line)) {
+    const std::vector<std::string> cells = split(line);
+    require_input(cells.size() == header.size(), who + ": " + path + ": a row has the wrong number of cells");
+    CsvRow r;
+    for (size_t k = 0; k < header.size(); ++k) r[header[k]] = cells[k];
+    rows.push_back(std::move(r));
+  }
+  return rows;
 }
 
 }  // namespace ek::exp

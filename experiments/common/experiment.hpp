@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -106,6 +107,16 @@ class Csv {
   std::string path_, text_;
   size_t columns_;
 };
+
+/// A row of a results table read back: column → cell.
+using CsvRow = std::map<std::string, std::string>;
+
+/// The rows of a results table written by Csv (no quoted cells; a trailing
+/// empty cell kept). InputError "<who>: ..." when the file cannot be read
+/// (its experiment has not run), lacks a column of `required`, or a row has
+/// the wrong number of cells.
+std::vector<CsvRow> read_csv_rows(const std::string& path, const std::string& who,
+                                  const std::vector<std::string>& required = {});
 
 /// Wall-clock seconds since the first call.
 double elapsed_seconds();
