@@ -324,6 +324,8 @@ results::PeriodicLinkMember run_link(const Args& a, const PeriodicBraid& m) {
   out.energy = r.energy;
   out.alexander_preserved = r.alexander_preserved;
   out.linking_preserved = r.linking_preserved;
+  out.conway_preserved = r.conway_preserved;
+  out.conway = r.conway.coefficients;
   for (Eigen::Index i = 0; i < r.linking_numbers.rows(); ++i)
     for (Eigen::Index j = 0; j < r.linking_numbers.cols(); ++j) out.linking_numbers.push_back(r.linking_numbers(i, j));
   out.min_distance = r.min_distance;

@@ -12,6 +12,7 @@
 #include "ek/analysis/symmetry.hpp"
 #include "ek/geometry/curve_io.hpp"
 #include "ek/geometry/link.hpp"
+#include "ek/knots/conway.hpp"
 
 #include "periodic_braids_summary.hpp"
 #include "results.hpp"
@@ -209,9 +210,11 @@ TEST(PaperPeriodicBraids, RecordedAxisReproducesTheSymmetryError) {
 // (Beyond Fig. 16, which shows knots only; §8.5: links.) The members whose
 // closure is a link, one per skipped entry ((σ1σ2⁻¹)^3, the Borromean rings,
 // and (σ1σ2⁻¹)^6; (σ1σ2⁻¹σ3)^p for even p), relaxed as links from the coil:
-// converged stable, every component's Alexander polynomial and every linking
-// number kept, and the stored link file has the recorded component count and
-// linking numbers, recomputed (exact: integers). The p-fold symmetry is
+// converged stable, every component's Alexander polynomial, every linking
+// number and the link's Conway polynomial kept; the stored link file has the
+// recorded component count, linking numbers and Conway polynomial,
+// recomputed (exact: integers), the polynomial equal to the braid word's by
+// the Burau formula, z⁴ for the Borromean rings (the unlink's is 0). The p-fold symmetry is
 // reported beside its (p+1)-fold control, not asserted.
 TEST(PaperPeriodicBraids, LinkMembersRelaxAndKeepTheirLinkType) {
   const auto s = ek::paper::summary<ek::results::PeriodicBraidsSummary>("periodic_braids");
@@ -219,8 +222,16 @@ TEST(PaperPeriodicBraids, LinkMembersRelaxAndKeepTheirLinkType) {
   for (const auto& l : s.links) {
     const std::string at = l.family + " p=" + std::to_string(l.p);
     EXPECT_EQ(l.status, "converged-stable") << at;
-    EXPECT_TRUE(l.alexander_preserved && l.linking_preserved) << at;
+    EXPECT_TRUE(l.alexander_preserved && l.linking_preserved && l.conway_preserved) << at;
     const ek::Link link = ek::read_link(ek::paper::results("periodic_braids") + "/" + l.curve);
+    EXPECT_EQ(ek::conway(link).coefficients, l.conway) << at;  // recomputed from the file
+    ek::BraidWord word{l.family == "s1s2i" ? 3 : 4, {}};
+    for (int k = 0; k < l.p; ++k)
+      for (int letter : l.family == "s1s2i" ? std::vector<int>{1, -2} : std::vector<int>{1, -2, 3})
+        word.letters.push_back(letter);
+    EXPECT_EQ(ek::conway(word).coefficients, l.conway) << at << ": the braid word's, by the Burau formula";
+    if (l.family == "s1s2i" && l.p == 3)
+      EXPECT_EQ(l.conway, (std::vector<std::int64_t>{0, 0, 0, 0, 1})) << "the Borromean rings, not the unlink";
     ASSERT_EQ(static_cast<int>(link.size()), l.components) << at;
     ASSERT_EQ(l.linking_numbers.size(), link.size() * link.size()) << at;
     const Eigen::MatrixXd L = ek::linking_matrix(link);

@@ -162,6 +162,8 @@ struct PeriodicLinkMember {
   double energy = 0.0;              ///< [energy]
   bool alexander_preserved = false;  ///< every component's polynomial kept
   bool linking_preserved = false;    ///< every linking number kept
+  bool conway_preserved = false;     ///< the link's Conway polynomial kept
+  std::vector<std::int64_t> conway;  ///< [1] the link's ∇, c_0, c_1, ... (ek/knots/conway.hpp)
   std::vector<int> linking_numbers;  ///< [1] components × components, row by row (from the braid word)
   double min_distance = 0.0;        ///< [length] closest edge pair within reach of the contact (NaN: none)
   double threedim = 0.0;            ///< [1] 3D-ness of all vertices together
@@ -170,7 +172,7 @@ struct PeriodicLinkMember {
   std::string curve;                ///< link file, relative to the experiment's folder
 };
 EK_JSON_FIELDS(PeriodicLinkMember, family, p, components, vertices, status, energy, alexander_preserved,
-               linking_preserved, linking_numbers, min_distance, threedim, symmetry_error, control_error, curve)
+               linking_preserved, conway_preserved, conway, linking_numbers, min_distance, threedim, symmetry_error, control_error, curve)
 
 struct PeriodicBraidsSummary {
   std::string scale;

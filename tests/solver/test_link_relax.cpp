@@ -116,8 +116,9 @@ TEST(LinkRelax, HopfLinkRelaxesToTwoRoundRings) {
                   circle(40, Vec3(5.0, 0.0, 0.0), 5.0, Vec3::UnitX(), Vec3::UnitZ())};
   const LinkRelaxResult r = relax_link(link);
   EXPECT_EQ(r.status(), "converged-stable");
-  EXPECT_TRUE(r.alexander_preserved && r.linking_preserved);
+  EXPECT_TRUE(r.alexander_preserved && r.linking_preserved && r.conway_preserved);
   EXPECT_EQ(r.linking_numbers(0, 1), -1);
+  EXPECT_EQ(r.conway.to_string(), "[0, 1]");
   for (const AlexanderPolynomial& a : r.alexander) EXPECT_EQ(a.to_string(), "[1]");
   const double alone = relax(link[0]).energy.total + relax(link[1]).energy.total;
   EXPECT_NEAR(r.energy, alone, 1e-9 * alone);

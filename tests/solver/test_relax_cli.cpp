@@ -137,12 +137,16 @@ TEST(RelaxCli, BorromeanRingsFromTheirBraidWordRelaxAsALink) {
   EXPECT_EQ(j.at("components"), 3);
   EXPECT_EQ(j.at("alexander"), nlohmann::json::parse("[[1],[1],[1]]"));
   EXPECT_TRUE(j.at("alexander_preserved").get<bool>() && j.at("linking_preserved").get<bool>());
+  EXPECT_EQ(j.at("conway"), nlohmann::json::parse("[0,0,0,0,1]"));  // not the unlink's 0
+  EXPECT_TRUE(j.at("conway_preserved").get<bool>());
   EXPECT_LT(j.at("min_distance").get<double>(), 0.4);  // d̂: the rings press on each other
   EXPECT_EQ(j.at("output"), dir + "/relaxed.obj");
   const auto inv = run("invariants " + dir + "/relaxed.obj --json");
   ASSERT_EQ(inv.status, 0) << inv.err;
   EXPECT_EQ(inv.json().at("linking_numbers"), nlohmann::json::parse("[[0,0,0],[0,0,0],[0,0,0]]"));
   EXPECT_EQ(inv.json().at("components"), 3);
+  EXPECT_EQ(inv.json().at("conway"), nlohmann::json::parse("[0,0,0,0,1]"));
+  EXPECT_EQ(inv.json().at("milnor_triple"), 1);  // |μ̄(123)|: the Borromean rings
   const auto bad = run("relax " + dir + "/b.obj --planar 1");
   EXPECT_EQ(bad.status, 2);
   EXPECT_NE(bad.err.find("apply to a knot, not to a link of 3 components"), std::string::npos) << bad.err;

@@ -12,7 +12,8 @@
 namespace ek::cli {
 namespace {
 
-/// A link's invariants: each component's, the linking numbers, the clearance between components.
+/// A link's invariants: each component's, the linking numbers, the Conway
+/// polynomial and |μ̄(123)|, the clearance between components.
 int print_link(const std::string& file, const LinkInvariants& l, bool json) {
   if (json) {
     Json j;
@@ -33,7 +34,9 @@ int print_link(const std::string& file, const LinkInvariants& l, bool json) {
     for (Eigen::Index b = 0; b < l.linking_numbers.cols(); ++b) std::cout << (b ? " " : "") << l.linking_numbers(a, b);
   }
   std::cout << " (largest distance of the Gauss sums to integers " << fmt(l.linking_error, 2) << ")\n"
-            << "clearance between components: " << fmt(l.component_clearance) << "\n";
+            << "Conway:          " << l.conway.to_string() << " (coefficients of z^0, z^1, ...; [] for a split link)\n";
+  if (l.milnor_triple) std::cout << "Milnor |mu(123)|: " << *l.milnor_triple << "\n";
+  std::cout << "clearance between components: " << fmt(l.component_clearance) << "\n";
   return 0;
 }
 

@@ -116,7 +116,7 @@ int relax_link_file(const RelaxCommand& c, const Link& link) {
     throw InputError("--link, --planar, --release, --full-model, --eigen, --stop-at-saddle and --trace apply to a "
                      "knot, not to a link of " + std::to_string(link.size()) + " components");
   const LinkRelaxResult r = relax_link(link, q.options());
-  const bool kept = r.alexander_preserved && r.linking_preserved;
+  const bool kept = r.topology_preserved();
   if (!c.out.empty() && kept) write_link(c.out, r.positions);
   if (c.json) {
     print_json(link_result_json(c, r));
@@ -127,7 +127,7 @@ int relax_link_file(const RelaxCommand& c, const Link& link) {
               << "energy:       " << fmt(r.energy) << "\n"
               << "gradient:     " << fmt(r.report.gradient_norm, 4) << "\n"
               << "closest:      " << fmt(r.min_distance, 6) << "\n"
-              << "topology:     " << (kept ? "every component's Alexander polynomial and every linking number kept"
+              << "topology:     " << (kept ? "every component's Alexander polynomial, every linking number and the Conway polynomial kept"
                                            : "CHANGED: the result is rejected")
               << "\n";
     if (!c.out.empty() && kept) std::cout << "wrote " << c.out << "\n";

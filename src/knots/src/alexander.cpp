@@ -55,9 +55,15 @@ AlexanderPolynomial alexander(GaussDiagram g) {
 AlexanderPolynomial alexander(const PDCode& pd) { return alexander(diagram_from_pd(pd)); }
 
 AlexanderPolynomial alexander(const BraidWord& braid) {
+  std::vector<std::int64_t> delta = alexander_coefficients(braid);
+  require(!delta.empty(), "alexander(braid): det(I - ψ) vanished; the closure is not a knot");
+  return normalize_alexander(std::move(delta));
+}
+
+std::vector<std::int64_t> alexander_coefficients(const BraidWord& braid) {
   const int n = braid.strands;
   require(n >= 1, "alexander: braid needs at least one strand");
-  if (n == 1) return normalize_alexander({1});
+  if (n == 1) return {1};
   const int d = n - 1;  // reduced Burau matrices are d by d
   const int L = braid.length();
   const int W = 2 * L + 1, off = L;  // coefficient slots per entry
@@ -148,9 +154,9 @@ AlexanderPolynomial alexander(const BraidWord& braid) {
   while (!det.empty() && det.back() == 0) det.pop_back();
   auto first_nz = std::find_if(det.begin(), det.end(), [](std::int64_t x) { return x != 0; });
   det.erase(det.begin(), first_nz);
-  require(!det.empty(), "alexander(braid): det(I - ψ) vanished; the closure is not a knot");
+  if (det.empty()) return {};
   std::vector<std::int64_t> cyclotomic(static_cast<size_t>(n), 1);  // 1 + t + ... + t^{n-1}
-  return normalize_alexander(exact_divide(det, cyclotomic));
+  return exact_divide(det, cyclotomic);
 }
 
 AlexanderPolynomial alexander(const Points& curve, const ProjectionOptions& options) {

@@ -60,6 +60,30 @@ GaussDiagram diagram_from_braid(const BraidWord& word) {
   return g;
 }
 
+LinkDiagram link_diagram_from_braid(const BraidWord& word) {
+  // As diagram_from_braid(), once per cycle: a strand leaving the word at
+  // position p re-enters it at p, so a component's traversal ends when its
+  // strand is back at its cycle's first position.
+  LinkDiagram d;
+  for (int letter : word.letters) d.signs.push_back(letter > 0 ? 1 : -1);
+  for (const std::vector<int>& cycle : closure_cycles(word)) {
+    std::vector<GaussDiagram::Visit> visits;
+    int pos = cycle.front();
+    do {
+      for (int k = 0; k < word.length(); ++k) {
+        const int letter = word.letters[static_cast<size_t>(k)];
+        const int i = std::abs(letter);
+        if (pos != i && pos != i + 1) continue;
+        const bool from_left = (pos == i);
+        visits.push_back({k, letter > 0 ? from_left : !from_left});
+        pos = from_left ? i + 1 : i;
+      }
+    } while (pos != cycle.front());
+    d.components.push_back(std::move(visits));
+  }
+  return d;
+}
+
 namespace {
 
 /// Arc index of every position: arcs start right after each under visit.

@@ -37,6 +37,8 @@ LinkInvariants link_invariants(const Link& link) {
   out.linking = linking_matrix(link);
   out.linking_numbers = out.linking.array().round().cast<int>();
   out.linking_error = (out.linking - out.linking_numbers.cast<double>()).cwiseAbs().maxCoeff();
+  out.conway = conway(link);
+  out.milnor_triple = milnor_triple_linking(out.conway, out.linking_numbers);
   return out;
 }
 

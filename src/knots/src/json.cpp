@@ -53,6 +53,8 @@ Json link_invariants_json(const LinkInvariants& l) {
   j["linking_numbers"] = integer_matrix_json(l.linking_numbers);
   j["linking_error"] = json_number(l.linking_error);
   j["component_clearance"] = json_number(l.component_clearance);
+  j["conway"] = l.conway.coefficients;
+  j["milnor_triple"] = optional_int(l.milnor_triple);
   return j;
 }
 

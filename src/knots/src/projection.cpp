@@ -3,10 +3,12 @@
 #include <cstdint>
 #include <limits>
 #include <numeric>
+#include <string>
 
 #include "ek/core/errors.hpp"
 #include "ek/core/hash.hpp"
 #include "ek/geometry/polyline.hpp"
+#include "ek/geometry/link.hpp"
 #include "ek/knots/diagram.hpp"
 
 namespace ek {
@@ -31,7 +33,8 @@ inline double cross2(double ax, double ay, double bx, double by) { return ax * b
 struct ViewCoordinates {
   int n = 0;
   std::vector<double> X, Y, H;
-  int next(int i) const { return (i + 1) % n; }
+  std::vector<int> succ;  ///< the vertex after each one on its closed polygon
+  int next(int i) const { return succ[static_cast<size_t>(i)]; }
   /// Length of the projected edge i.
   double edge_length(int i) const {
     return std::hypot(X[static_cast<size_t>(next(i))] - X[static_cast<size_t>(i)],
@@ -39,9 +42,22 @@ struct ViewCoordinates {
   }
 };
 
-ViewCoordinates view_coordinates(const Points& P, const Vec3& dir) {
+/// succ[i]: the vertex after vertex i on its component (P holds the
+/// components one after another).
+std::vector<int> successors(const std::vector<int>& sizes) {
+  std::vector<int> succ;
+  int start = 0;
+  for (const int size : sizes) {
+    for (int k = 0; k < size; ++k) succ.push_back(start + (k + 1) % size);
+    start += size;
+  }
+  return succ;
+}
+
+ViewCoordinates view_coordinates(const Points& P, const std::vector<int>& succ, const Vec3& dir) {
   ViewCoordinates c;
   c.n = static_cast<int>(P.rows());
+  c.succ = succ;
   const Vec3 d = dir.normalized();
   Vec3 u = (std::fabs(d.x()) < 0.9 ? Vec3::UnitX() : Vec3::UnitY()).cross(d).normalized();
   const Vec3 v = d.cross(u);
@@ -152,12 +168,13 @@ bool crossings_apart(const ViewCoordinates& vc, const std::vector<Crossing>& cro
   return true;
 }
 
-/// Projects P along d and finds all crossings; `generic` is false when the
-/// projection is degenerate within tol (relative to the curve's size).
-Projection project(const Points& P, const Vec3& dir, double tol, bool count_only) {
+/// Projects the closed polygons P (one after another, `succ` as
+/// successors()) along d and finds all crossings; `generic` is false when the
+/// projection is degenerate within tol (relative to the curves' size).
+Projection project(const Points& P, const std::vector<int>& succ, const Vec3& dir, double tol, bool count_only) {
   Projection out;
   const int n = static_cast<int>(P.rows());
-  const ViewCoordinates c = view_coordinates(P, dir);
+  const ViewCoordinates c = view_coordinates(P, succ, dir);
   const double scale = (P.colwise().maxCoeff() - P.colwise().minCoeff()).norm();
   const double eps = tol * scale;
   if (!edges_generic(c, eps, tol)) {
@@ -202,12 +219,12 @@ Vec3 direction_from_seed(std::uint64_t& state) {
 }  // namespace
 
 int projection_crossing_count(const Points& P, const Vec3& direction) {
-  Projection p = project(P, direction, 1e-12, true);
+  Projection p = project(P, successors({static_cast<int>(P.rows())}), direction, 1e-12, true);
   return static_cast<int>(p.crossings.size());
 }
 
 std::vector<ProjectedCrossing> projection_crossings(const Points& P, const Vec3& direction, bool* generic) {
-  Projection p = project(P, direction, 1e-12, false);
+  Projection p = project(P, successors({static_cast<int>(P.rows())}), direction, 1e-12, false);
   if (generic) *generic = p.generic;
   std::vector<ProjectedCrossing> out;
   if (!p.generic) return out;
@@ -226,35 +243,43 @@ std::vector<ProjectedCrossing> projection_crossings(const Points& P, const Vec3&
   return out;
 }
 
-GaussDiagram diagram_from_curve(const Points& P, const ProjectionOptions& options) {
-  require(P.rows() >= 3, "diagram_from_curve: need at least 3 vertices");
-  require(options.directions >= 1, "diagram_from_curve: need at least one direction");
-  // A curve that (nearly) touches itself has no well-defined knot type.
-  const double scale = (P.colwise().maxCoeff() - P.colwise().minCoeff()).norm();
+namespace {
+
+/// A curve that (nearly) touches itself has no well-defined knot type.
+void require_simple(const Points& P, double scale, const ProjectionOptions& options, const std::string& what) {
   const Clearance cl = clearance(P);
   if (cl.distance <= options.degeneracy * scale)
-    throw InputError("curve intersects itself (edges " + std::to_string(cl.edge_a + 1) + " and " +
+    throw InputError(what + " intersects itself (edges " + std::to_string(cl.edge_a + 1) + " and " +
                      std::to_string(cl.edge_b + 1) + " are " + std::to_string(cl.distance) + " apart)");
+}
+
+/// The generic projection with the fewest crossings among the first
+/// `options.directions` generic ones of the direction sequence.
+Projection best_projection(const Points& P, const std::vector<int>& succ, const ProjectionOptions& options,
+                           const std::string& what) {
+  require(options.directions >= 1, "diagram_from_curve: need at least one direction");
   std::uint64_t state = options.seed;
   Projection best;
   bool found = false;
-  Vec3 best_dir;
   const int max_attempts = std::max(options.directions * 8, 64);
   int accepted = 0;
   for (int attempt = 0; attempt < max_attempts && accepted < options.directions; ++attempt) {
     const Vec3 d = direction_from_seed(state);
-    Projection p = project(P, d, options.degeneracy, false);
+    Projection p = project(P, succ, d, options.degeneracy, false);
     if (!p.generic) continue;
     ++accepted;
     if (!found || p.crossings.size() < best.crossings.size()) {
       best = std::move(p);
-      best_dir = d;
       found = true;
     }
   }
-  if (!found)
-    throw InputError("curve has no generic projection (it intersects itself or nearly so)");
-  // Order visits along the curve.
+  if (!found) throw InputError(what + " has no generic projection (it intersects itself or nearly so)");
+  return best;
+}
+
+/// The crossings' visits in traversal order along each component; component
+/// k owns the edges [start_k, start_k + sizes[k]) of the projected polygons.
+std::vector<std::vector<GaussDiagram::Visit>> ordered_visits(const Projection& p, const std::vector<int>& sizes) {
   struct Visit {
     int seg;
     double param;
@@ -262,19 +287,67 @@ GaussDiagram diagram_from_curve(const Points& P, const ProjectionOptions& option
     bool over;
   };
   std::vector<Visit> visits;
-  visits.reserve(2 * best.crossings.size());
-  GaussDiagram g;
-  for (size_t k = 0; k < best.crossings.size(); ++k) {
-    const auto& c = best.crossings[k];
+  visits.reserve(2 * p.crossings.size());
+  for (size_t k = 0; k < p.crossings.size(); ++k) {
+    const auto& c = p.crossings[k];
     visits.push_back({c.seg_a, c.s, static_cast<int>(k), c.a_over});
     visits.push_back({c.seg_b, c.t, static_cast<int>(k), !c.a_over});
-    g.signs.push_back(c.sign);
   }
   std::sort(visits.begin(), visits.end(), [](const Visit& a, const Visit& b) {
     return a.seg != b.seg ? a.seg < b.seg : a.param < b.param;
   });
-  for (const auto& v : visits) g.visits.push_back({v.crossing, v.over});
+  std::vector<std::vector<GaussDiagram::Visit>> out(sizes.size());
+  size_t component = 0;
+  int end = sizes.empty() ? 0 : sizes[0];
+  for (const auto& v : visits) {
+    while (v.seg >= end) end += sizes[++component];
+    out[component].push_back({v.crossing, v.over});
+  }
+  return out;
+}
+
+std::vector<int> signs_of(const Projection& p) {
+  std::vector<int> signs;
+  for (const auto& c : p.crossings) signs.push_back(c.sign);
+  return signs;
+}
+
+}  // namespace
+
+GaussDiagram diagram_from_curve(const Points& P, const ProjectionOptions& options) {
+  require(P.rows() >= 3, "diagram_from_curve: need at least 3 vertices");
+  const double scale = (P.colwise().maxCoeff() - P.colwise().minCoeff()).norm();
+  require_simple(P, scale, options, "curve");
+  const std::vector<int> sizes{static_cast<int>(P.rows())};
+  const Projection best = best_projection(P, successors(sizes), options, "curve");
+  GaussDiagram g;
+  g.signs = signs_of(best);
+  g.visits = ordered_visits(best, sizes)[0];
   return g;
+}
+
+LinkDiagram link_diagram_from_curves(const Link& link, const ProjectionOptions& options) {
+  validate_link(link, "link");
+  std::vector<int> sizes;
+  Eigen::Index rows = 0;
+  for (const Points& P : link) {
+    sizes.push_back(static_cast<int>(P.rows()));
+    rows += P.rows();
+  }
+  Points all(rows, 3);
+  rows = 0;
+  for (const Points& P : link) {
+    all.middleRows(rows, P.rows()) = P;
+    rows += P.rows();
+  }
+  const double scale = (all.colwise().maxCoeff() - all.colwise().minCoeff()).norm();
+  for (size_t k = 0; k < link.size(); ++k)
+    require_simple(link[k], scale, options, "link component " + std::to_string(k + 1));
+  const Projection best = best_projection(all, successors(sizes), options, "link");
+  LinkDiagram d;
+  d.signs = signs_of(best);
+  d.components = ordered_visits(best, sizes);
+  return d;
 }
 
 }  // namespace ek

@@ -86,9 +86,9 @@ young, poisson, contact_stiffness, continuation, method.
 
 Fields: the JSON keys of `knots relax` on a link (components, vertices, status, iterations,
 seconds, energy, gradient_norm, min_distance, alexander, linking_numbers,
-alexander_preserved, linking_preserved), output when given, and points, the list of the
-components' equilibria. A change of a component's knot type or of a linking number raises
-TopologyError. Releases the GIL while it relaxes.)doc");
+alexander_preserved, linking_preserved, conway, conway_preserved), output when given, and
+points, the list of the components' equilibria. A change of a component's knot type, of a
+linking number or of the link's Conway polynomial raises TopologyError. Releases the GIL while it relaxes.)doc");
 
   m.def(
       "energy",

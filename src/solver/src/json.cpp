@@ -113,6 +113,8 @@ Json link_relax_json(const LinkRelaxResult& r) {
   j["linking_numbers"] = integer_matrix_json(r.linking_numbers);
   j["alexander_preserved"] = r.alexander_preserved;
   j["linking_preserved"] = r.linking_preserved;
+  j["conway"] = r.conway.coefficients;
+  j["conway_preserved"] = r.conway_preserved;
   return j;
 }
 

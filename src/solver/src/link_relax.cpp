@@ -109,11 +109,14 @@ CurveTopology topology_of(const Link& link) {
   return CurveTopology::from_sizes(sizes);
 }
 
-/// Each component's Alexander polynomial and the rounded linking numbers.
-void invariants(const Link& link, std::vector<AlexanderPolynomial>& alexanders, Eigen::MatrixXi& linking) {
+/// Each component's Alexander polynomial, the rounded linking numbers and
+/// the link's Conway polynomial.
+void invariants(const Link& link, std::vector<AlexanderPolynomial>& alexanders, Eigen::MatrixXi& linking,
+                ConwayPolynomial& nabla) {
   alexanders.clear();
   for (const Points& P : link) alexanders.push_back(alexander(P));
   linking = linking_matrix(link).array().round().cast<int>();
+  nabla = conway(link);
 }
 
 }  // namespace
@@ -177,13 +180,13 @@ bool LinkRelaxResult::converged() const {
 }
 
 std::string LinkRelaxResult::status() const {
-  return alexander_preserved && linking_preserved ? to_string(report.status) : "topology-changed";
+  return topology_preserved() ? to_string(report.status) : "topology-changed";
 }
 
 LinkRelaxResult relax_link(const Link& link, const RelaxOptions& options) {
   LinkModel m(link, options);
   LinkRelaxResult out;
-  invariants(link, out.alexander, out.linking_numbers);
+  invariants(link, out.alexander, out.linking_numbers, out.conway);
   NewtonSolver solver(m.newton_options());
   for (const double f : options.contact_continuation) out.continuation_reports.push_back(solver.minimize(m.objective(f)));
   Objective& objective = m.objective(1.0);
@@ -193,9 +196,11 @@ LinkRelaxResult relax_link(const Link& link, const RelaxOptions& options) {
   out.positions = m.components();
   std::vector<AlexanderPolynomial> after;
   Eigen::MatrixXi linking_after;
-  invariants(out.positions, after, linking_after);
+  ConwayPolynomial conway_after;
+  invariants(out.positions, after, linking_after, conway_after);
   out.alexander_preserved = after == out.alexander;
   out.linking_preserved = linking_after == out.linking_numbers;
+  out.conway_preserved = conway_after == out.conway;
   return out;
 }
 

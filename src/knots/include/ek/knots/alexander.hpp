@@ -3,7 +3,9 @@
 ///
 /// Every computed curve is checked against its input's polynomial (a result
 /// that changed the knot type is an error): use check_knot_type().
+#include <cstdint>
 #include <string>
+#include <vector>
 
 #include "ek/geometry/types.hpp"
 #include "ek/knots/codes.hpp"
@@ -25,6 +27,11 @@ AlexanderPolynomial alexander(const PDCode& pd);
 /// From a braid word on n strands, independently of the diagram route, by the
 /// reduced Burau representation ψ: (1 + t + ... + t^{n-1}) Δ(t) = ±t^k det(I - ψ(β)).
 AlexanderPolynomial alexander(const BraidWord& braid);
+
+/// The one-variable Alexander polynomial of the closure of a braid word,
+/// knot or link, by the same Burau formula: Laurent coefficients up to ±t^k,
+/// lowest degree first; empty when it vanishes (for example a split closure).
+std::vector<std::int64_t> alexander_coefficients(const BraidWord& braid);
 
 /// From a closed polygon (n by 3): projection along a generic direction
 /// (diagram_from_curve), then alexander(GaussDiagram).

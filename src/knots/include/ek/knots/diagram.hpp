@@ -3,6 +3,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "ek/geometry/link.hpp"
 #include "ek/geometry/types.hpp"
 #include "ek/knots/codes.hpp"
 
@@ -22,6 +23,16 @@ struct GaussDiagram {
   int crossings() const { return static_cast<int>(signs.size()); }
   /// Sum of the crossing signs (the diagram's writhe).
   int writhe() const;
+};
+
+/// A link diagram: the crossings' visits along each component, in traversal
+/// order (a component without crossings has none); a knot's diagram is one
+/// of a single component.
+struct LinkDiagram {
+  std::vector<std::vector<GaussDiagram::Visit>> components;  ///< m lists of visits
+  std::vector<int> signs;                                    ///< crossing signs ±1, size c
+
+  int crossings() const { return static_cast<int>(signs.size()); }
 };
 
 /// The Gauss code of a PD code: edges are traversed in label order 1..2c.
@@ -48,6 +59,17 @@ struct ProjectionOptions {
 /// direction. Throws InputError when no direction is generic (the curve
 /// intersects itself).
 GaussDiagram diagram_from_curve(const Points& P, const ProjectionOptions& options = {});
+
+/// The diagram of a link (validate_link; each component simple) projected as
+/// diagram_from_curve() projects a curve: one direction for all components,
+/// the generic one with fewest crossings. Throws InputError as
+/// diagram_from_curve() does, naming the component.
+LinkDiagram link_diagram_from_curves(const Link& link, const ProjectionOptions& options = {});
+
+/// The diagram of the closure of a braid word, one component per cycle of its
+/// permutation (closure_cycles(), in that order), crossings numbered by the
+/// word's letters as in diagram_from_braid().
+LinkDiagram link_diagram_from_braid(const BraidWord& word);
 
 /// Number of crossings of the projection of P along `direction` (for tests
 /// of the projection code against an independent count).

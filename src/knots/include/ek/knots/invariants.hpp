@@ -2,10 +2,12 @@
 /// Invariants of a table knot and of a curve, as `knots info` and `knots
 /// invariants` report them (and the Python module's knot() and invariants()).
 #include <cstdint>
+#include <optional>
 
 #include "ek/geometry/link.hpp"
 #include "ek/geometry/polyline.hpp"
 #include "ek/geometry/types.hpp"
+#include "ek/knots/conway.hpp"
 #include "ek/knots/polynomial.hpp"
 #include "ek/knots/table.hpp"
 
@@ -37,6 +39,8 @@ struct LinkInvariants {
   Eigen::MatrixXi linking_numbers;          ///< [1] m by m, `linking` rounded
   double linking_error = 0.0;               ///< [1] max |linking − linking_numbers|: a sanity check, ~1e-12
   double component_clearance = 0.0;         ///< [length] smallest distance between two components
+  ConwayPolynomial conway;                  ///< ∇ of the whole link (conway.hpp): zero for a split link
+  std::optional<int> milnor_triple;         ///< [1] |μ̄(123)| of 3 components with vanishing linking numbers
 };
 
 /// The invariants of a link (validate_link: disjoint components, each a

@@ -21,7 +21,9 @@ Json invariants_json(const CurveInvariants& invariants);
 
 /// `knots invariants` of a link after `file`: components (m), vertices (in
 /// all), component (m objects as invariants_json), linking_numbers (m by m
-/// integers), linking_error, component_clearance.
+/// integers), linking_error, component_clearance, conway (∇'s coefficients
+/// c_0, c_1, ...; [] for a split link), milnor_triple (|μ̄(123)|, null
+/// unless 3 components with vanishing linking numbers).
 Json link_invariants_json(const LinkInvariants& invariants);
 
 }  // namespace ek

@@ -39,7 +39,8 @@ Json relax_json(const RelaxResult& result, const std::string& method);
 /// seconds, energy, gradient_norm, min_distance (null when no pair is
 /// within reach of the contact), alexander (each component's, of the
 /// input), linking_numbers (of the input), alexander_preserved,
-/// linking_preserved.
+/// linking_preserved, conway (the input link's ∇, conway.hpp),
+/// conway_preserved.
 Json link_relax_json(const LinkRelaxResult& result);
 
 }  // namespace ek

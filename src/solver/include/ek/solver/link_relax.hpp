@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "ek/geometry/link.hpp"
+#include "ek/knots/conway.hpp"
 #include "ek/knots/polynomial.hpp"
 #include "ek/solver/newton.hpp"
 #include "ek/solver/relax.hpp"
@@ -40,11 +41,15 @@ struct LinkRelaxResult {
   Eigen::MatrixXi linking_numbers;              ///< [1] of the input (m by m)
   bool alexander_preserved = true;              ///< every component's polynomial equal on the result
   bool linking_preserved = true;                ///< every linking number equal on the result
+  ConwayPolynomial conway;                      ///< the input link's ∇ (conway.hpp)
+  bool conway_preserved = true;                 ///< ∇ equal on the result (tells the Borromean rings from the unlink)
 
   bool converged() const;
+  /// Every component's Alexander polynomial, every linking number and ∇ kept.
+  bool topology_preserved() const { return alexander_preserved && linking_preserved && conway_preserved; }
   /// The solver's status, or "topology-changed" when a component's
-  /// Alexander polynomial or a linking number differs (an error, never a
-  /// silent result).
+  /// Alexander polynomial, a linking number or the link's Conway polynomial
+  /// differs (an error, never a silent result).
   std::string status() const;
 };
 
