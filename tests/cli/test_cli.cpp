@@ -167,11 +167,41 @@ TEST(Cli, InvariantsOfALink) {
   // at each angle φ the components are opposite on the tube's circle of radius 1: 2 apart at most
   EXPECT_GT(j.at("component_clearance").get<double>(), 0.5);
   EXPECT_LE(j.at("component_clearance").get<double>(), 2.0);
+  EXPECT_EQ(j.at("conway"), nlohmann::json::parse("[0,2,0,1]"));  // T(2,4): 2z + z³
+  EXPECT_TRUE(j.at("milnor_triple").is_null());                    // two components
   const auto text = run("invariants " + dir + "/t24.obj");
   ASSERT_EQ(text.status, 0) << text.err;
   EXPECT_NE(text.out.find("components:      2"), std::string::npos) << text.out;
   std::ofstream(dir + "/cross.txt") << "0 0 0\n2 0 0\n2 2 0\n0 2 0\n\n1 0 -1\n1 0 1\n1 -2 1\n1 -2 -1\n";
   expect_bad_input("invariants " + dir + "/cross.txt", "components 1 and 2 touch or cross");
+  std::filesystem::remove_all(dir);
+}
+
+// The link table from the command line: `knots info` of a link by name and
+// by alias (text and JSON: components, their types, linking numbers, ∇,
+// |μ̄(123)|); `knots embed NAME` of a link writes its components, whose
+// invariants are the table's; --from pd is refused for a link.
+TEST(Cli, InfoAndEmbedOfATableLink) {
+  const auto j = run("info L6a4 --json");
+  ASSERT_EQ(j.status, 0) << j.err;
+  EXPECT_EQ(j.json().at("name"), "borromean");
+  EXPECT_EQ(j.json().at("components"), 3);
+  EXPECT_EQ(j.json().at("component_types"), nlohmann::json::parse(R"(["0_1","0_1","0_1"])"));
+  EXPECT_EQ(j.json().at("conway"), nlohmann::json::parse("[0,0,0,0,1]"));
+  EXPECT_EQ(j.json().at("milnor_triple"), 1);
+  const auto text = run("info trefoil_hopf");
+  ASSERT_EQ(text.status, 0) << text.err;
+  EXPECT_NE(text.out.find("components:        2 (3_1, 0_1)"), std::string::npos) << text.out;
+  const std::string dir = temp_dir("link_table");
+  const auto e = run("embed whitehead -n 200 -o " + dir + "/w.obj --json");
+  ASSERT_EQ(e.status, 0) << e.err;
+  EXPECT_EQ(e.json().at("name"), "whitehead");
+  EXPECT_EQ(e.json().at("components"), 2);
+  const auto inv = run("invariants " + dir + "/w.obj --json");
+  ASSERT_EQ(inv.status, 0) << inv.err;
+  EXPECT_EQ(inv.json().at("conway"), nlohmann::json::parse("[0,0,0,1]"));  // not the unlink's []
+  EXPECT_EQ(inv.json().at("linking_numbers"), nlohmann::json::parse("[[0,0],[0,0]]"));
+  expect_bad_input("embed hopf --from pd -o " + dir + "/h.obj", "--from pd applies to knots");
   std::filesystem::remove_all(dir);
 }
 

@@ -11,6 +11,9 @@
 #include "ek/geometry/link.hpp"
 #include "ek/geometry/polyline.hpp"
 #include "ek/knots/alexander.hpp"
+#include "ek/knots/invariants.hpp"
+#include "ek/knots/link_table.hpp"
+#include "ek/knots/table.hpp"
 
 using namespace ek;
 
@@ -63,4 +66,32 @@ TEST(LinkEmbedding, AKnotsWordGivesOneComponentOfItsType) {
   const LinkEmbedding e = embed_braid_link(trefoil);
   ASSERT_EQ(e.components.size(), 1u);
   EXPECT_EQ(alexander(e.components[0]), alexander(trefoil));
+}
+
+// Every link of the link table embedded from its braid word, as the coil and
+// on the cylinder: the polygons' components have the listed knot types, their
+// Gauss sums the listed linking numbers, the projected link the listed Conway
+// polynomial and |μ̄(123)| (tests/knots/test_link_table.cpp checks the same
+// values on the word and its diagram).
+TEST(LinkEmbedding, TableLinksHaveTheirListedInvariants) {
+  const KnotTable& knots = KnotTable::global();
+  for (const LinkRecord& r : link_table())
+    for (const BraidStyle style : {BraidStyle::Coil, BraidStyle::Cylinder}) {
+      EmbeddingOptions o;
+      o.vertices = 100 * r.components();
+      o.braid_style = style;
+      const LinkEmbedding e = embed_braid_link(r.braid, o);
+      const LinkInvariants inv = link_invariants(e.components);
+      const std::string at = r.name + " " + to_string(style);
+      ASSERT_EQ(static_cast<int>(inv.components.size()), r.components()) << at;
+      for (int k = 0; k < r.components(); ++k)
+        EXPECT_EQ(inv.components[static_cast<size_t>(k)].alexander,
+                  table_alexander(knots.at(r.component_types[static_cast<size_t>(k)])))
+            << at << " component " << k + 1;
+      for (int i = 0; i < r.components(); ++i)
+        for (int j = 0; j < r.components(); ++j)
+          EXPECT_EQ(inv.linking_numbers(i, j), r.linking_numbers[static_cast<size_t>(i * r.components() + j)]) << at;
+      EXPECT_EQ(inv.conway, r.conway) << at;
+      EXPECT_EQ(inv.milnor_triple, r.milnor_triple()) << at;
+    }
 }

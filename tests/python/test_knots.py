@@ -19,6 +19,13 @@ def test_knot_equals_knots_info(knots):
     assert k["braid_index"] == 3
 
 
+def test_table_link_equals_knots_info(knots):
+    b = ek.knot("borromean")
+    assert b.to_dict() == knots.json("info", "L6a4")
+    assert b.components == 3 and b.conway == [0, 0, 0, 0, 1] and b.milnor_triple == 1
+    assert ek.knot("whitehead").linking_numbers == [[0, 0], [0, 0]]
+
+
 def test_trefoil_alexander_polynomial():
     assert ek.knot("3_1").alexander == [1, -1, 1]
     assert ek.alexander("3_1") == [1, -1, 1]

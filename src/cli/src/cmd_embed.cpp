@@ -11,33 +11,45 @@
 #include "ek/geometry/curve_io.hpp"
 #include "ek/geometry/link.hpp"
 #include "ek/embedding/json.hpp"
+#include "ek/knots/conway.hpp"
+#include "ek/knots/link_table.hpp"
 #include "output.hpp"
 
 namespace ek::cli {
 
 namespace {
 
-/// A braid word's closure of several components: written as a link, summarised.
-int embed_link(const BraidWord& word, const EmbeddingOptions& opt, const std::string& out, bool json) {
+/// A braid word's closure of several components: written as a link,
+/// summarised. A link of the link table (`record`) must have its listed
+/// Conway polynomial on the polygons (a change of link type is an error).
+int embed_link(const BraidWord& word, const LinkRecord* record, const EmbeddingOptions& opt, const std::string& out,
+               bool json) {
   const LinkEmbedding e = embed_braid_link(word, opt);
+  const ConwayPolynomial nabla = conway(e.components);
+  if (record && nabla != record->conway)
+    throw TopologyError("embed: the polygons of " + record->name + " have the Conway polynomial " + nabla.to_string() +
+                        ", not the table's " + record->conway.to_string());
   write_link(out, e.components);
+  const std::string name = record ? record->name : "braid " + to_string(word);
   int vertices = 0;
   for (const Points& P : e.components) vertices += static_cast<int>(P.rows());
   if (json) {
     Json j;
-    j["name"] = "braid " + to_string(word);
+    j["name"] = name;
     j["from"] = "braid";
     j["components"] = e.components.size();
     j["vertices"] = vertices;
     j["edge_length"] = json_number(e.edge_length);
     j["max_edge_deviation"] = json_number(e.max_edge_deviation);
     j["linking_numbers"] = integer_matrix_json(e.linking_numbers);
+    j["conway"] = nabla.coefficients;
     j["output"] = out;
     print_json(j);
     return 0;
   }
-  std::cout << "wrote " << out << ": the closure of " << to_string(word) << ", a link of " << e.components.size()
-            << " components, " << vertices << " vertices, mean edge length " << fmt(e.edge_length) << "\n";
+  std::cout << "wrote " << out << ": " << (record ? record->description + ", " : std::string()) << "the closure of "
+            << to_string(word) << ", a link of " << e.components.size() << " components, " << vertices
+            << " vertices, mean edge length " << fmt(e.edge_length) << ", Conway " << nabla.to_string() << "\n";
   return 0;
 }
 
@@ -53,7 +65,7 @@ int cmd_embed(int argc, char** argv) {
                  "NAME|--braid WORD [--strands S] --from braid|pd [--style coil|cylinder] [-n N] -o FILE "
                  "[--edge-length L] [--strand-spacing S] [--crossing-height H] [--crossing-offset H] [--tilt DEG] "
                  "[--json]");
-  args.rest("NAME", &names, "knot name as in the table");
+  args.rest("NAME", &names, "knot name as in the table, or a link of the link table (knots info NAME)");
   args.option("--braid", &braid,
               "instead of NAME: a braid word, letters ±1, ±2, ... separated by commas (σ_i⁻¹ is -i; the table's "
               "{1;-2;...} also), whose "
@@ -92,7 +104,7 @@ int cmd_embed(int argc, char** argv) {
   if (!braid.empty()) {
     const bool braced = braid.find_first_not_of(" \t") != std::string::npos && braid[braid.find_first_not_of(" \t")] == '{';
     const BraidWord word = parse_braid_word(braced ? braid : "{" + braid + "}", strands);
-    if (closure_components(word) > 1) return embed_link(word, opt, out, json);
+    if (closure_components(word) > 1) return embed_link(word, nullptr, opt, out, json);
     const Embedding e = embed_braid(word, opt);
     write_curve(out, e.points);
     if (json) print_json(embedding_json("braid " + to_string(word), e, out));
@@ -103,6 +115,10 @@ int cmd_embed(int argc, char** argv) {
     return 0;
   }
   const std::string& name = names[0];
+  if (const LinkRecord* link = find_link(name)) {
+    if (from != "braid") throw InputError("--from pd applies to knots; a link of the link table embeds from its braid word");
+    return embed_link(link->braid, link, opt, out, json);
+  }
   const KnotRecord& knot = KnotTable::global().at(name);
   const Embedding e = embed_knot(knot, parse_embedding_source(from), opt);
   write_curve(out, e.points);

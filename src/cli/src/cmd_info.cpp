@@ -4,19 +4,53 @@
 #include "args.hpp"
 #include "commands.hpp"
 #include "ek/knots/json.hpp"
+#include "ek/knots/link_table.hpp"
 #include "ek/knots/table.hpp"
 #include "output.hpp"
 
 namespace ek::cli {
 
+namespace {
+
+/// A link of the link table.
+int print_link(const LinkRecord& l, bool json) {
+  if (json) {
+    print_json(link_info_json(l));
+    return 0;
+  }
+  std::string aliases, types;
+  for (const std::string& a : l.aliases) aliases += (aliases.empty() ? "" : ", ") + a;
+  for (const std::string& t : l.component_types) types += (types.empty() ? "" : ", ") + t;
+  std::cout << "name:              " << l.name << (aliases.empty() ? "" : " (" + aliases + ")") << "\n"
+            << "link:              " << l.description << "\n"
+            << "components:        " << l.components() << " (" << types << ")\n"
+            << "crossing number:   " << l.crossing_number << "\n"
+            << "braid word:        " << to_string(l.braid) << "\n"
+            << "linking numbers:  ";
+  for (int i = 0; i < l.components(); ++i) {
+    for (int j = 0; j < l.components(); ++j) std::cout << " " << l.linking_numbers[static_cast<size_t>(i * l.components() + j)];
+    std::cout << (i + 1 < l.components() ? "\n                  " : "\n");
+  }
+  std::cout << "Conway:            " << l.conway.to_string() << " (coefficients of z^0, z^1, ...)\n";
+  if (const auto mu = l.milnor_triple()) std::cout << "Milnor |mu(123)|:  " << *mu << "\n";
+  return 0;
+}
+
+}  // namespace
+
 int cmd_info(int argc, char** argv) {
   std::string name;
   bool json = false;
   ArgParser args("info", "NAME [--json]");
-  args.positional("NAME", &name, "knot name as in the table: 3_1, 10_123, 12a_1019, 12n_838, 0_1 (unknot)");
+  std::string links;
+  for (const LinkRecord& l : link_table()) links += (links.empty() ? "" : ", ") + l.name;
+  args.positional("NAME", &name,
+                  "knot name as in the table: 3_1, 10_123, 12a_1019, 12n_838, 0_1 (unknot); or a link of the "
+                  "built-in link table: " + links + " (or an alias: L2a1, ...)");
   args.flag("--json", &json, "print one JSON object");
   if (!args.parse(argc, argv)) return 0;
 
+  if (const LinkRecord* link = find_link(name)) return print_link(*link, json);
   const auto& table = KnotTable::global();
   const KnotRecord& k = table.at(name);
   if (json) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <numeric>
+#include <string>
 
 #include "ek/core/errors.hpp"
 
@@ -82,6 +83,40 @@ LinkDiagram link_diagram_from_braid(const BraidWord& word) {
     d.components.push_back(std::move(visits));
   }
   return d;
+}
+
+GaussDiagram component_diagram(const LinkDiagram& d, int k) {
+  require(k >= 0 && k < static_cast<int>(d.components.size()), "component_diagram: no component " + std::to_string(k));
+  std::vector<int> count(d.signs.size(), 0);
+  for (const auto& v : d.components[static_cast<size_t>(k)]) ++count[static_cast<size_t>(v.crossing)];
+  std::vector<int> renumber(d.signs.size(), -1);
+  GaussDiagram g;
+  for (size_t x = 0; x < d.signs.size(); ++x)
+    if (count[x] == 2) {
+      renumber[x] = g.crossings();
+      g.signs.push_back(d.signs[x]);
+    }
+  for (const auto& v : d.components[static_cast<size_t>(k)])
+    if (renumber[static_cast<size_t>(v.crossing)] >= 0)
+      g.visits.push_back({renumber[static_cast<size_t>(v.crossing)], v.over});
+  return g;
+}
+
+Eigen::MatrixXi linking_numbers(const LinkDiagram& d) {
+  const Eigen::Index m = static_cast<Eigen::Index>(d.components.size());
+  std::vector<int> owner(d.signs.size(), -1);  // the component of the crossing's over visit
+  std::vector<int> under(d.signs.size(), -1);
+  for (Eigen::Index k = 0; k < m; ++k)
+    for (const auto& v : d.components[static_cast<size_t>(k)])
+      (v.over ? owner : under)[static_cast<size_t>(v.crossing)] = static_cast<int>(k);
+  Eigen::MatrixXi twice = Eigen::MatrixXi::Zero(m, m);
+  for (size_t x = 0; x < d.signs.size(); ++x)
+    if (owner[x] != under[x]) {
+      twice(owner[x], under[x]) += d.signs[x];
+      twice(under[x], owner[x]) += d.signs[x];
+    }
+  require((twice.array() - 2 * (twice.array() / 2) == 0).all(), "linking_numbers: a pair of components crosses an odd number of times");
+  return twice / 2;
 }
 
 namespace {

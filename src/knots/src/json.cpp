@@ -27,6 +27,27 @@ Json knot_info_json(const KnotRecord& k, const KnotTable& table) {
   return j;
 }
 
+Json link_info_json(const LinkRecord& l) {
+  Json j;
+  j["name"] = l.name;
+  j["aliases"] = l.aliases;
+  j["description"] = l.description;
+  j["components"] = l.components();
+  j["crossing_number"] = l.crossing_number;
+  j["braid"] = to_string(l.braid);
+  j["braid_strands"] = l.braid.strands;
+  j["component_types"] = l.component_types;
+  const int m = l.components();
+  Json lk = Json::array();
+  for (int i = 0; i < m; ++i)
+    lk.push_back(std::vector<int>(l.linking_numbers.begin() + i * m, l.linking_numbers.begin() + (i + 1) * m));
+  j["linking_numbers"] = lk;
+  j["conway"] = l.conway.coefficients;
+  j["milnor_triple"] = optional_int(l.milnor_triple());
+  j["table"] = "built-in links";
+  return j;
+}
+
 Json invariants_json(const CurveInvariants& c) {
   Json j;
   j["vertices"] = c.vertices;

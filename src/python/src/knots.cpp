@@ -3,6 +3,7 @@
 #include "ek/knots/alexander.hpp"
 #include "ek/knots/invariants.hpp"
 #include "ek/knots/json.hpp"
+#include "ek/knots/link_table.hpp"
 #include "ek/knots/table.hpp"
 
 namespace ek::python {
@@ -23,12 +24,20 @@ struct TableIterator {
 
 void bind_knots(py::module_& m) {
   m.def(
-      "knot", [](const std::string& name) { return knot_result(KnotTable::global().at(name)); }, py::arg("name"),
-      R"doc(A knot type of the KnotInfo table by name ("3_1", "10_123", "12a_1019", "0_1" or "unknot").
+      "knot",
+      [](const std::string& name) {
+        if (const LinkRecord* link = find_link(name)) return result_from_json(link_info_json(*link), "knot");
+        return knot_result(KnotTable::global().at(name));
+      },
+      py::arg("name"),
+      R"doc(A knot type of the KnotInfo table by name ("3_1", "10_123", "12a_1019", "0_1" or "unknot"),
+or a link of the built-in link table ("hopf", "whitehead", "borromean", ... or "L6a4").
 
 Fields as `knots info NAME --json`: name, crossing_number, bridge_index, braid_index,
 unknotting_number, alternating, symmetry_type, dt, pd, braid, braid_strands (None when
-unknown), alexander (coefficients, lowest degree first), determinant, table.
+unknown), alexander (coefficients, lowest degree first), determinant, table; a link's:
+name, aliases, description, components, crossing_number, braid, braid_strands,
+component_types, linking_numbers, conway, milnor_triple, table.
 ValueError for an unknown name.)doc");
 
   py::class_<TableIterator>(m, "KnotTableIterator")

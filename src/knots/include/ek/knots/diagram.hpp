@@ -71,6 +71,14 @@ LinkDiagram link_diagram_from_curves(const Link& link, const ProjectionOptions& 
 /// word's letters as in diagram_from_braid().
 LinkDiagram link_diagram_from_braid(const BraidWord& word);
 
+/// Component k of a link diagram alone: its visits with the crossings it
+/// shares with other components dropped and the rest renumbered densely.
+GaussDiagram component_diagram(const LinkDiagram& diagram, int k);
+
+/// The diagram's linking numbers: half the signed crossings between two
+/// components (m by m, symmetric, zero diagonal).
+Eigen::MatrixXi linking_numbers(const LinkDiagram& diagram);
+
 /// Number of crossings of the projection of P along `direction` (for tests
 /// of the projection code against an independent count).
 int projection_crossing_count(const Points& P, const Vec3& direction);

@@ -4,6 +4,7 @@
 /// keys that name files (the command adds those).
 #include "ek/core/json.hpp"
 #include "ek/knots/invariants.hpp"
+#include "ek/knots/link_table.hpp"
 #include "ek/knots/table.hpp"
 
 namespace ek {
@@ -14,6 +15,12 @@ namespace ek {
 /// first), determinant, table (path of the table read). Computes the
 /// polynomial (table_alexander).
 Json knot_info_json(const KnotRecord& knot, const KnotTable& table);
+
+/// `knots info` of a link of the link table: name, aliases, description,
+/// components, crossing_number, braid, braid_strands, component_types
+/// (knot table names), linking_numbers (m by m), conway (c_0, c_1, ...),
+/// milnor_triple (null unless defined), table ("built-in links").
+Json link_info_json(const LinkRecord& link);
 
 /// `knots invariants` after `file`: vertices, length, alexander,
 /// determinant, writhe, total_curvature, clearance.
