@@ -7,6 +7,7 @@
 
 #include "cli_runner.hpp"
 #include "ek/geometry/curve_io.hpp"
+#include "ek/geometry/link.hpp"
 #include "ek/knots/alexander.hpp"
 #include "ek/knots/table.hpp"
 #include "ek/lattice/lattice_polygon.hpp"
@@ -87,6 +88,40 @@ TEST(SampleCli, StartFromCurveFiles) {
   EXPECT_EQ(b.json()["start"], "rounded");
   EXPECT_TRUE(b.json()["rounding_scale"].is_number());
   expect_lattice_sample(dir + "/12n_838-braid-0000.obj", 400, ek::alexander(*ek::KnotTable::global().at("12n_838").pd));
+  fs::remove_all(dir);
+}
+
+// A link of the link table and a link file: K link files of lattice
+// polygons, as many components as the link, the component lengths of the
+// JSON, the table's Conway polynomial and linking numbers on every sample;
+// a sample file fed back in starts from itself (on the lattice already).
+TEST(SampleCli, TableLinkAndLinkFile) {
+  const std::string dir = temp_dir("sample_link");
+  const auto r = run("sample borromean --count 2 -n 240 --growth-factor 4 -o " + dir + " --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = r.json();
+  EXPECT_EQ(j.at("components"), 3);
+  EXPECT_EQ(j.at("conway"), nlohmann::json::parse("[0,0,0,0,1]"));
+  ASSERT_EQ(j.at("files").size(), 2u);
+  const std::vector<int> lengths = j.at("component_vertices");
+  for (const auto& f : j.at("files")) {
+    const ek::Link link = ek::read_link(f.get<std::string>());
+    ASSERT_EQ(link.size(), 3u);
+    for (size_t c = 0; c < 3; ++c) {
+      ek::LatticePoints L;
+      EXPECT_TRUE(ek::as_lattice_polygon(link[c], &L));
+      EXPECT_EQ(L.rows(), lengths[c]);
+    }
+    const auto inv = run("invariants " + f.get<std::string>() + " --json");
+    ASSERT_EQ(inv.status, 0) << inv.err;
+    EXPECT_EQ(inv.json().at("conway"), nlohmann::json::parse("[0,0,0,0,1]"));
+    EXPECT_EQ(inv.json().at("milnor_triple"), 1);
+  }
+  const std::string first = j.at("files")[0];
+  const auto again = run("sample " + first + " --count 1 -n 240 --growth-factor 4 -o " + dir + "/again --json");
+  ASSERT_EQ(again.status, 0) << again.err;
+  EXPECT_EQ(again.json().at("start"), "lattice");
+  EXPECT_EQ(again.json().at("conway"), nlohmann::json::parse("[0,0,0,0,1]"));
   fs::remove_all(dir);
 }
 

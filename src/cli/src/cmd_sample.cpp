@@ -1,10 +1,11 @@
 // knots sample NAME|FILE --count K [-n N] [--seed S] -o DIR [--decorrelation STEPS] [--format obj|txt]
 //               [--overwrite] [--json]
 //
-// Writes DIR/<name>-0000.<ext> ... (K files). NAME is a knot of the table;
-// FILE (.obj or .txt) is a closed curve, used as it is when it already is a
-// self-avoiding lattice polygon and rounded onto the lattice otherwise; the
-// outputs are then named after the file's stem. Existing output files are an
+// Writes DIR/<name>-0000.<ext> ... (K files). NAME is a knot of the table or
+// a link of the link table; FILE (.obj or .txt) is a closed curve or a link,
+// used as it is when it already is on the lattice and rounded onto the
+// lattice otherwise; the outputs are then named after the file's stem. A
+// link's samples are link files. Existing output files are an
 // error unless --overwrite is given; all samples are computed before the
 // first file is written, and every file is written atomically, so a failed
 // run leaves the folder as it was.
@@ -16,6 +17,9 @@
 #include "ek/core/atomic_file.hpp"
 #include "ek/core/errors.hpp"
 #include "ek/geometry/curve_io.hpp"
+#include "ek/geometry/link.hpp"
+#include "ek/knots/link_table.hpp"
+#include "ek/lattice/link_sampling.hpp"
 #include "ek/lattice/sampling.hpp"
 #include "output.hpp"
 
@@ -49,9 +53,12 @@ bool parse_sample_args(int argc, char** argv, SampleArgs& a) {
                  "NAME|FILE --count K [-n N] [--seed S] -o DIR [--decorrelation STEPS] [--format obj|txt] "
                  "[--overwrite] [--json]");
   args.positional("NAME|FILE", &a.input,
-                  "knot name as in the table, or a closed curve file (.obj or .txt) to start from");
+                  "knot name as in the table, a link of the link table, or a curve or link file (.obj or .txt) to "
+                  "start from");
   args.option("--count", &a.count, "number of samples K (default 1), one continuing BFACF walk");
-  args.option("-n,--vertices", &opt.vertices, "vertices of every sample, even (default 400)");
+  args.option("-n,--vertices", &opt.vertices,
+              "vertices of every sample, even (default 400); a link's, in all, shared by its components in "
+              "proportion to their lengths");
   args.option("--seed", &a.seed, "seed of the walk's random numbers, >= 0 (default 1)");
   args.option("-o,--output", &a.dir, "output folder (created if missing); files <name>-0000.<ext>, ...");
   args.option("--decorrelation", &opt.decorrelation_moves,
@@ -79,7 +86,11 @@ struct SampleSource {
   bool from_file = false;
   std::string name;  // names the outputs
   const KnotRecord* knot = nullptr;
+  const LinkRecord* link_record = nullptr;  // a link of the link table
   Points curve;
+  Link link;  // a link file of several components
+
+  bool is_link() const { return link_record || link.size() > 1; }
 };
 
 SampleSource open_source(const std::string& input) {
@@ -88,7 +99,10 @@ SampleSource open_source(const std::string& input) {
   if (src.from_file) {
     src.name = std::filesystem::path(input).stem().string();
     if (src.name.empty()) throw InputError("cannot name the outputs after '" + input + "'");
-    src.curve = read_curve(input);
+    src.link = read_link(input);
+    if (src.link.size() == 1) src.curve = src.link[0];
+  } else if ((src.link_record = find_link(input))) {
+    src.name = src.link_record->name;
   } else {
     src.knot = &KnotTable::global().at(input);
     src.name = src.knot->name;
@@ -140,6 +154,46 @@ void print_summary(const SampleArgs& a, const SampleSource& src, const LatticeSt
   }
 }
 
+/// A link: lattice_link_start() and sample_lattice_link(); the files are
+/// link files (one closed loop per component).
+int sample_link(const SampleArgs& a, const SampleSource& src, const std::vector<std::string>& files) {
+  const LatticeLinkStart start =
+      src.link_record ? lattice_link_start(*src.link_record) : lattice_link_start(src.link);
+  const LinkSampleBatch batch = sample_lattice_link(start.components, a.opt, start.type, src.name);
+  for (int k = 0; k < a.count; ++k) {
+    Link link;
+    for (const LatticePoints& L : batch.samples[static_cast<size_t>(k)]) link.push_back(to_points(L));
+    write_link(files[static_cast<size_t>(k)], link);
+  }
+  int start_vertices = 0;
+  for (const LatticePoints& L : start.components) start_vertices += static_cast<int>(L.rows());
+  if (a.json) {
+    Json j;
+    j["name"] = src.name;
+    j["input"] = src.from_file ? Json(a.input) : Json(nullptr);
+    j["start"] = start.scale > 0.0 ? "rounded" : "lattice";
+    j["start_vertices"] = start_vertices;
+    j["rounding_scale"] = start.scale > 0.0 ? number(start.scale) : Json(nullptr);
+    j["vertices"] = a.opt.vertices;
+    j["components"] = start.components.size();
+    j["component_vertices"] = batch.component_vertices;
+    j["count"] = a.count;
+    j["seed"] = a.seed;
+    j["linking_numbers"] = integer_matrix_json(start.type.linking_numbers);
+    j["conway"] = start.type.conway.coefficients;
+    j["attempted_moves"] = batch.attempted_moves;
+    j["files"] = files;
+    print_json(j);
+  } else {
+    std::cout << "wrote " << a.count << " sample" << (a.count > 1 ? "s" : "") << " of " << src.name << " ("
+              << start.components.size() << " components, " << start.type.to_string() << ") from a " << start_vertices
+              << "-vertex lattice link: " << files.front();
+    if (a.count > 1) std::cout << " ... " << files.back();
+    std::cout << "\n";
+  }
+  return 0;
+}
+
 }  // namespace
 
 int cmd_sample(int argc, char** argv) {
@@ -147,6 +201,7 @@ int cmd_sample(int argc, char** argv) {
   if (!parse_sample_args(argc, argv, a)) return 0;
   const SampleSource src = open_source(a.input);
   const std::vector<std::string> files = output_files(a, src.name);
+  if (src.is_link()) return sample_link(a, src, files);
   // a curve file is used as it is when it is a lattice polygon and rounded otherwise
   const LatticeStart start = src.from_file ? lattice_start(src.curve) : lattice_start(*src.knot);
   const SampleBatch batch = sample_lattice_polygons(start.points, a.opt, start.alexander, src.name);

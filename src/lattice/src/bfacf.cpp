@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include "ek/core/errors.hpp"
@@ -24,7 +26,7 @@ inline int dir_code(int axis, int sign) { return 2 * axis + (sign < 0 ? 1 : 0); 
 struct Link {
   std::int32_t next;
   std::int8_t in, out;  // codes of the edges prev -> this and this -> next
-  std::int16_t unused;
+  std::int16_t comp;    // the polygon (component) the vertex is on
 };
 struct Site3 {
   std::int32_t p[3];
@@ -44,9 +46,10 @@ struct BfacfWalk::Impl {
   std::vector<Link> link;
   std::vector<Site3> pos;
   std::vector<std::int32_t> prev;
-  std::vector<std::int32_t> slot;  // index in live
+  std::vector<std::int32_t> slot;  // index in live[comp]
   std::vector<std::int32_t> free_nodes;
-  std::vector<std::int32_t> live;  // the live vertices; edge = (live[k], next)
+  std::vector<std::vector<std::int32_t>> live;  // per component, its live vertices; edge = (live[c][k], next)
+  int total = 0;                                // vertices of all components
   SiteSet sites;
   gsl_rng* rng = nullptr;
 
@@ -54,7 +57,8 @@ struct BfacfWalk::Impl {
     if (rng) gsl_rng_free(rng);
   }
 
-  int length() const { return static_cast<int>(live.size()); }
+  int length() const { return total; }
+  int length(int c) const { return static_cast<int>(live[static_cast<size_t>(c)].size()); }
 
   // Exactly uniform integer in [0, range) from 32-bit MT19937 outputs
   // (Lemire's multiply-and-reject; range < 2^32).
@@ -73,7 +77,7 @@ struct BfacfWalk::Impl {
   // true with probability p (a uniform 32-bit draw u accepted when u/2^32 < p)
   bool bernoulli(double p) { return static_cast<double>(gsl_rng_get(rng)) < p * 4294967296.0; }
 
-  std::int32_t new_node(const std::int32_t* p) {
+  std::int32_t new_node(const std::int32_t* p, std::int16_t comp) {
     std::int32_t id;
     if (!free_nodes.empty()) {
       id = free_nodes.back();
@@ -87,24 +91,44 @@ struct BfacfWalk::Impl {
     }
     const auto u = static_cast<size_t>(id);
     std::copy(p, p + 3, pos[u].p);
-    slot[u] = static_cast<std::int32_t>(live.size());
-    live.push_back(id);
+    link[u].comp = comp;
+    auto& mine = live[static_cast<size_t>(comp)];
+    slot[u] = static_cast<std::int32_t>(mine.size());
+    mine.push_back(id);
+    ++total;
     return id;
   }
 
   void delete_node(std::int32_t id) {
+    auto& mine = live[static_cast<size_t>(link[static_cast<size_t>(id)].comp)];
     const std::int32_t s = slot[static_cast<size_t>(id)];
-    const std::int32_t last = live.back();
-    live[static_cast<size_t>(s)] = last;
+    const std::int32_t last = mine.back();
+    mine[static_cast<size_t>(s)] = last;
     slot[static_cast<size_t>(last)] = s;
-    live.pop_back();
+    mine.pop_back();
     free_nodes.push_back(id);
+    --total;
   }
 
-  BfacfMove attempt(double p_plus, double p_minus, std::uint32_t max_length) {
-    const auto n = static_cast<std::uint32_t>(live.size());
-    const std::uint32_t r = uniform_below(4 * n);
-    const std::int32_t i = live[r >> 2];
+  /// A uniform draw r in [0, 4·(edges)) and the vertex u of edge r / 4: over
+  /// all components (only = -1: uniform over all edges) or one component. A
+  /// single polygon draws exactly as it always has.
+  std::pair<std::int32_t, std::uint32_t> draw_edge(int only) {
+    if (only >= 0 || live.size() == 1) {
+      const auto& mine = live[static_cast<size_t>(std::max(only, 0))];
+      const std::uint32_t r = uniform_below(4 * static_cast<std::uint32_t>(mine.size()));
+      return {mine[r >> 2], r};
+    }
+    const std::uint32_t r = uniform_below(4 * static_cast<std::uint32_t>(total));
+    std::uint32_t k = r >> 2;
+    size_t c = 0;
+    while (k >= live[c].size()) k -= static_cast<std::uint32_t>(live[c++].size());
+    return {live[c][k], r};
+  }
+
+  BfacfMove attempt(double p_plus, double p_minus, std::uint32_t max_length, int only = -1) {
+    const auto n = static_cast<std::uint32_t>(total);
+    const auto [i, r] = draw_edge(only);
     const auto ui = static_cast<size_t>(i);
     const std::int32_t j = link[ui].next;
     const auto uj = static_cast<size_t>(j);
@@ -118,8 +142,8 @@ struct BfacfWalk::Impl {
     const bool A = link[ui].in == (w ^ 1);  // a = u + w: the edge a -> u is -w
     const bool B = link[uj].out == w;       // b = v + w: the edge v -> b is +w
     if (A && B) {
-      // I: a, u, v, b -> a, b
-      if (n <= 4) return BfacfMove::None;
+      // I: a, u, v, b -> a, b (never below the square)
+      if (length(link[ui].comp) <= 4) return BfacfMove::None;
       if (p_minus < 1.0 && !bernoulli(p_minus)) return BfacfMove::None;
       const std::int32_t ia = prev[ui], ib = link[uj].next;
       sites.erase(key_of(pos[ui].p));
@@ -173,8 +197,8 @@ struct BfacfWalk::Impl {
     if (sites.contains(k1key) || sites.contains(k2key)) return BfacfMove::None;
     sites.insert(k1key);
     sites.insert(k2key);
-    const std::int32_t k1 = new_node(t1);
-    const std::int32_t k2 = new_node(t2);
+    const std::int32_t k1 = new_node(t1, link[ui].comp);
+    const std::int32_t k2 = new_node(t2, link[ui].comp);
     const auto u1 = static_cast<size_t>(k1), u2 = static_cast<size_t>(k2);
     link[ui].next = k1;
     prev[u1] = i;
@@ -216,22 +240,39 @@ void count(BfacfRunReport& rep, BfacfMove m) {
 
 }  // namespace
 
-BfacfWalk::BfacfWalk(const LatticePoints& start, std::uint64_t seed) : impl_(std::make_unique<Impl>()) {
-  const LatticePolygonCheck check = check_lattice_polygon(start);
-  if (!check.ok) throw InputError("BFACF start: not a self-avoiding lattice polygon: " + check.problem);
-  const auto n = static_cast<std::int32_t>(start.rows());
+BfacfWalk::BfacfWalk(const LatticePoints& start, std::uint64_t seed)
+    : BfacfWalk(std::vector<LatticePoints>{start}, seed) {}
+
+BfacfWalk::BfacfWalk(const std::vector<LatticePoints>& components, std::uint64_t seed)
+    : impl_(std::make_unique<Impl>()) {
+  require_input(!components.empty(), "BFACF start: no polygon");
+  require_input(components.size() <= 32767, "BFACF start: more than 32767 components");
   Impl& w = *impl_;
-  w.sites = SiteSet(static_cast<size_t>(n));
-  for (std::int32_t i = 0; i < n; ++i) {
-    const std::int32_t p[3] = {start(i, 0), start(i, 1), start(i, 2)};
-    w.new_node(p);
-    w.sites.insert(key_of(p));
-  }
-  for (std::int32_t i = 0; i < n; ++i) {
-    const auto u = static_cast<size_t>(i), v = static_cast<size_t>((i + 1) % n);
-    w.link[u].next = (i + 1) % n;
-    w.prev[v] = i;
-    w.link[u].out = w.link[v].in = static_cast<std::int8_t>(step_code(w.pos[u].p, w.pos[v].p));
+  size_t sites = 0;
+  for (const LatticePoints& P : components) sites += static_cast<size_t>(P.rows());
+  w.sites = SiteSet(sites);
+  w.live.resize(components.size());
+  std::int32_t first = 0;
+  for (size_t c = 0; c < components.size(); ++c) {
+    const LatticePoints& start = components[c];
+    const LatticePolygonCheck check = check_lattice_polygon(start);
+    const std::string which = components.size() > 1 ? " (component " + std::to_string(c + 1) + ")" : "";
+    if (!check.ok) throw InputError("BFACF start: not a self-avoiding lattice polygon" + which + ": " + check.problem);
+    const auto n = static_cast<std::int32_t>(start.rows());
+    for (std::int32_t i = 0; i < n; ++i) {
+      const std::int32_t p[3] = {start(i, 0), start(i, 1), start(i, 2)};
+      if (!w.sites.insert(key_of(p)))
+        throw InputError("BFACF start: component " + std::to_string(c + 1) + " meets another at site (" +
+                         std::to_string(p[0]) + ", " + std::to_string(p[1]) + ", " + std::to_string(p[2]) + ")");
+      w.new_node(p, static_cast<std::int16_t>(c));
+    }
+    for (std::int32_t i = 0; i < n; ++i) {
+      const auto u = static_cast<size_t>(first + i), v = static_cast<size_t>(first + (i + 1) % n);
+      w.link[u].next = static_cast<std::int32_t>(v);
+      w.prev[v] = static_cast<std::int32_t>(u);
+      w.link[u].out = w.link[v].in = static_cast<std::int8_t>(step_code(w.pos[u].p, w.pos[v].p));
+    }
+    first += n;
   }
   impl_->rng = gsl_rng_alloc(gsl_rng_mt19937);
   if (!impl_->rng) throw std::bad_alloc();
@@ -274,46 +315,64 @@ BfacfRunReport BfacfWalk::run(long long attempts, double beta, int max_length) {
   return rep;
 }
 
-BfacfRunReport BfacfWalk::run_to_length(int target, double beta, long long max_attempts) {
+BfacfRunReport BfacfWalk::run_to_length(int target, double beta, long long max_attempts, int component) {
   check_fugacity(beta);
   require(target >= 4 && target % 2 == 0, "BFACF: the target length must be even and >= 4");
   require(max_attempts >= 0, "BFACF: negative attempt budget");
+  require(component >= -1 && component < components(), "BFACF: no component " + std::to_string(component));
   const double b2 = beta * beta;
   const double p_plus = b2 / (1.0 + b2), p_minus = 1.0 / (1.0 + b2);
+  // the length that counts: the component's, or all of the walk's
+  auto len = [&] { return component >= 0 ? impl_->length(component) : length(); };
   BfacfRunReport rep;
-  rep.start_length = rep.min_length = rep.max_length = length();
+  rep.start_length = rep.min_length = rep.max_length = len();
   long long a = 0;
-  if (length() % 2 == target % 2) {
-    const bool grow = length() < target;
-    while (length() != target && a < max_attempts) {
-      const BfacfMove m = impl_->attempt(p_plus, p_minus, kMaxLength);
+  if (len() % 2 == target % 2) {
+    const bool grow = len() < target;
+    while (len() != target && a < max_attempts) {
+      const BfacfMove m = impl_->attempt(p_plus, p_minus, kMaxLength, component);
       ++a;
       count(rep, m);
       if (m == BfacfMove::I) {
-        rep.min_length = std::min(rep.min_length, length());
-        if (!grow && length() <= target) break;
+        rep.min_length = std::min(rep.min_length, len());
+        if (!grow && len() <= target) break;
       } else if (m == BfacfMove::II) {
-        rep.max_length = std::max(rep.max_length, length());
-        if (grow && length() >= target) break;
+        rep.max_length = std::max(rep.max_length, len());
+        if (grow && len() >= target) break;
       }
     }
   }
   rep.attempts = a;
-  rep.end_length = length();
-  rep.reached = length() == target;
+  rep.end_length = len();
+  rep.reached = len() == target;
   return rep;
 }
 
-LatticePoints BfacfWalk::polygon() const {
-  const int n = length();
+LatticePoints BfacfWalk::polygon() const { return polygon_of(0); }
+
+int BfacfWalk::components() const { return static_cast<int>(impl_->live.size()); }
+
+int BfacfWalk::component_length(int c) const {
+  require(c >= 0 && c < components(), "BFACF: no component " + std::to_string(c));
+  return impl_->length(c);
+}
+
+LatticePoints BfacfWalk::polygon_of(int c) const {
+  const int n = component_length(c);
   LatticePoints L(n, 3);
-  std::int32_t id = impl_->live[0];
+  std::int32_t id = impl_->live[static_cast<size_t>(c)][0];
   for (int k = 0; k < n; ++k) {
     const auto u = static_cast<size_t>(id);
     L.row(k) << impl_->pos[u].p[0], impl_->pos[u].p[1], impl_->pos[u].p[2];
     id = impl_->link[u].next;
   }
   return L;
+}
+
+std::vector<LatticePoints> BfacfWalk::polygons() const {
+  std::vector<LatticePoints> out;
+  for (int c = 0; c < components(); ++c) out.push_back(polygon_of(c));
+  return out;
 }
 
 }  // namespace ek

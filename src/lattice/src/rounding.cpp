@@ -401,4 +401,57 @@ RoundingResult round_to_lattice(const Points& P, const RoundingOptions& o,
   return res;
 }
 
+std::vector<RoundingResult> round_link_to_lattice(const Link& link, const RoundingOptions& o) {
+  require(o.max_attempts >= 1 && o.rotation_attempts >= 0, "lattice rounding: attempt counts must be positive");
+  const double d = validate_link(link, "lattice rounding");
+  // one rotation under which every corner of every component has a common monotone coordinate
+  Mat3 R = Mat3::Identity();
+  std::uint64_t rot_state = o.rotation_seed;
+  auto windows = [&](const Mat3& rot) {
+    std::vector<int> W;
+    for (const Points& P : link) W.push_back(monotone_window(rotated(P, rot), o.max_window, o.min_direction_cosine));
+    return W;
+  };
+  std::vector<int> W = windows(R);
+  for (int r = 0; *std::min_element(W.begin(), W.end()) < 2 && r < o.rotation_attempts; ++r) {
+    R = random_rotation_matrix(rot_state);
+    W = windows(R);
+  }
+  if (*std::min_element(W.begin(), W.end()) < 2)
+    throw InputError("lattice rounding: no rotation gives every corner of the link a common monotone coordinate; "
+                     "use more finely sampled components");
+  std::vector<double> cW;
+  double c = d;  // the smallest clearance the certificate needs
+  for (size_t k = 0; k < link.size(); ++k) {
+    cW.push_back(clearance(link[k], W[k]).distance);
+    c = std::min(c, cW.back());
+  }
+  double s = (1.0 + o.margin) * 2.0 * kHalfDiagonal / c;
+  std::vector<RoundingResult> out(link.size());
+  for (int attempt = 1; attempt <= o.max_attempts; ++attempt) {
+    double delta = 0.0;
+    bool certified = true;
+    for (size_t k = 0; k < link.size(); ++k) {
+      out[k] = lattice_walk_of(link[k], s, R);
+      delta = std::max(delta, out[k].displacement);
+      certified = certified && out[k].defect.empty() &&
+                  s * cW[k] > 2.0 * out[k].displacement * (1.0 + 1e-12) + 1e-12;
+    }
+    // the components' δ-tubes stay disjoint: s·d > 2δ
+    certified = certified && s * d > 2.0 * delta * (1.0 + 1e-12) + 1e-12;
+    if (certified) {
+      for (size_t k = 0; k < link.size(); ++k) {
+        out[k].attempts = attempt;
+        out[k].window = W[k];
+        out[k].window_clearance = cW[k];
+        out[k].certificate_ratio = s * std::min(cW[k], d) / (2.0 * delta);
+      }
+      return out;
+    }
+    s = std::max(1.25 * s, (1.0 + o.margin) * 2.0 * delta / c);
+  }
+  throw InputError("lattice rounding: no certified scale for the link in " + std::to_string(o.max_attempts) +
+                   " attempts (last scale " + std::to_string(s) + ")");
+}
+
 }  // namespace ek

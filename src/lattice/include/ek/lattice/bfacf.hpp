@@ -39,6 +39,7 @@
 /// to shrink.
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 #include "ek/lattice/lattice_polygon.hpp"
 
@@ -63,7 +64,8 @@ struct BfacfRunReport {
   bool reached = false;        ///< run_to_length(): the target length was reached
 };
 
-/// A BFACF walk on one self-avoiding lattice polygon. The polygon is a doubly
+/// A BFACF walk on one self-avoiding lattice polygon, or on several at once
+/// (a link: one polygon per component). The polygon is a doubly
 /// linked list of vertices with an array of the live vertices (uniform
 /// choice of an edge in O(1)) and a SiteSet of occupied sites, so every
 /// attempted move costs O(1) expected time. Random numbers: GSL's MT19937
@@ -73,14 +75,30 @@ class BfacfWalk {
  public:
   /// Throws InputError unless `start` is a self-avoiding lattice polygon.
   BfacfWalk(const LatticePoints& start, std::uint64_t seed);
+
+  /// A walk on several polygons (a link) that share one set of occupied
+  /// sites: a move is applied only where no polygon is, so no component
+  /// passes through another and every component keeps its knot type and every
+  /// pair its linking (each move is an isotopy across a unit square that no
+  /// other part of the link meets). An attempt picks an edge uniformly among
+  /// all edges of all components (run(), attempt()), so the stationary
+  /// distribution is π ∝ N·β^N in the total length N; move I never shrinks a
+  /// component below 4 edges. One polygon walks exactly as the constructor
+  /// above. Throws InputError unless every polygon is a self-avoiding lattice
+  /// polygon and no two share a site.
+  BfacfWalk(const std::vector<LatticePoints>& components, std::uint64_t seed);
   ~BfacfWalk();
   BfacfWalk(BfacfWalk&&) noexcept;
   BfacfWalk& operator=(BfacfWalk&&) noexcept;
   BfacfWalk(const BfacfWalk&) = delete;
   BfacfWalk& operator=(const BfacfWalk&) = delete;
 
-  /// Current number of vertices (= edges).
+  /// Current number of vertices (= edges), of all components.
   int length() const;
+  /// Number of polygons (components).
+  int components() const;
+  /// Current number of vertices of component c.
+  int component_length(int c) const;
 
   /// One attempted move at fugacity β (acceptance rule above).
   BfacfMove attempt(double beta);
@@ -94,11 +112,18 @@ class BfacfWalk {
   /// >= 4) or `max_attempts` moves were attempted; `reached` tells which.
   /// Lengths change by ±2 and keep their parity, so a walk that starts above
   /// (below) the target and ends at or below (above) it stops exactly on it.
-  BfacfRunReport run_to_length(int target, double beta, long long max_attempts);
+  /// With `component` >= 0 the moves are drawn on that component's edges
+  /// only and its length is the one that counts (the others stay as they
+  /// are, as obstacles); the report's lengths are then the component's.
+  BfacfRunReport run_to_length(int target, double beta, long long max_attempts, int component = -1);
 
-  /// The polygon, starting at a fixed vertex and following the walk's
-  /// orientation. n by 3 integer sites.
+  /// The polygon (component 0), starting at a fixed vertex and following the
+  /// walk's orientation. n by 3 integer sites.
   LatticePoints polygon() const;
+  /// Component c's polygon, as polygon() gives component 0's.
+  LatticePoints polygon_of(int c) const;
+  /// Every component's polygon, in the order given to the constructor.
+  std::vector<LatticePoints> polygons() const;
 
  private:
   struct Impl;

@@ -35,7 +35,9 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
+#include "ek/geometry/link.hpp"
 #include "ek/geometry/types.hpp"
 #include "ek/knots/polynomial.hpp"
 #include "ek/lattice/lattice_polygon.hpp"
@@ -86,6 +88,19 @@ struct RoundingResult {
   /// The certificate's margin s·c_W / (2δ) (> 1).
   double certificate_ratio = 0.0;  ///< [1]
 };
+
+/// Rounds a link's components onto Z³ at one scale s and one rotation R:
+/// each component's cell walk as above (lattice_walk_of), certified by the
+/// theorem above for each component (s·c_W > 2δ_k), and with the
+/// components' δ-tubes disjoint: s·d > 2δ (d the smallest distance between
+/// two components, δ the largest displacement), so every lattice component
+/// lies within δ of its own scaled component and at least s·d − 2δ > 0 from
+/// every other. The link type is then checked, not only argued: one result per
+/// component (`scale`, `rotation` shared). The caller checks the invariants
+/// (the lattice module's link sampling compares the components' Alexander
+/// polynomials, the linking numbers and the Conway polynomial). Throws
+/// InputError as round_to_lattice() does, and for touching components.
+std::vector<RoundingResult> round_link_to_lattice(const Link& link, const RoundingOptions& options = {});
 
 /// Rounds the closed simple polygon P (m by 3, m >= 4) onto Z³ as described
 /// above, with the smallest certified scale (up to `margin`). The result's
