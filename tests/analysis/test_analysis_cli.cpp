@@ -7,6 +7,7 @@
 
 #include "cli_runner.hpp"
 #include "ek/geometry/curve_io.hpp"
+#include "ek/geometry/link.hpp"
 #include "testing.hpp"
 
 using ek::clitest::run;
@@ -42,6 +43,28 @@ TEST(AnalysisCli, SimilarityJson) {
   EXPECT_EQ(missing.status, 2);
   EXPECT_EQ(std::count(missing.err.begin(), missing.err.end(), '\n'), 1);
   EXPECT_EQ(run("similarity " + dir + "/a.obj " + dir + "/a.obj --samples 2").status, 2);
+  std::filesystem::remove_all(dir);
+}
+
+// Links: the Borromean rings embedded from the table against a renumbered
+// copy (similarity 1, the pairing found, placement 0), against the Whitehead
+// link (refused: 3 components against 2, one line, status 2).
+TEST(AnalysisCli, SimilarityOfLinks) {
+  const std::string dir = temp_dir("similarity_links");
+  ASSERT_EQ(run("embed borromean -n 240 -o " + dir + "/b.obj").status, 0);
+  ASSERT_EQ(run("embed whitehead -n 200 -o " + dir + "/w.obj").status, 0);
+  ek::Link b = ek::read_link(dir + "/b.obj");
+  ek::write_link(dir + "/renumbered.obj", ek::Link{b[2], b[0], b[1]});
+  const auto r = run("similarity " + dir + "/b.obj " + dir + "/renumbered.obj --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = r.json();
+  EXPECT_NEAR(j.at("similarity").get<double>(), 1.0, 1e-9);
+  EXPECT_EQ(j.at("pairing"), nlohmann::json::parse("[1,2,0]"));
+  EXPECT_NEAR(j.at("placement").get<double>(), 0.0, 1e-9);
+  EXPECT_EQ(j.at("component_similarity").size(), 3u);
+  const auto bad = run("similarity " + dir + "/b.obj " + dir + "/w.obj");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_NE(bad.err.find("A has 3 components, B 2"), std::string::npos) << bad.err;
   std::filesystem::remove_all(dir);
 }
 
