@@ -56,7 +56,8 @@ build: configure
 python: configure
 	cmake --build $(BUILD) -j$(JOBS) --target elastic_knots
 
-test: build sanitize fuzz-test
+test: build fuzz-build
+	cd $(BUILD)-fuzz && KNOT_TABLE=$(KNOT_TABLE) ctest --output-on-failure -j$(JOBS) -L 'parsers|fuzz'
 	$(CTEST) -LE 'stress-long|sanitize|paper-open'
 
 unit: build
@@ -65,11 +66,10 @@ unit: build
 browser: build
 	$(CTEST) -L browser
 
-sanitize: deps
-	@cmake -S . -B $(BUILD)-asan -DCMAKE_BUILD_TYPE=Debug -DEK_SANITIZE=ON -DEK_PARSERS_ONLY=ON \
-	  -DEK_KNOT_TABLE=$(KNOT_TABLE) > /dev/null
-	cmake --build $(BUILD)-asan -j$(JOBS)
-	cd $(BUILD)-asan && KNOT_TABLE=$(KNOT_TABLE) ctest --output-on-failure -j$(JOBS) -L parsers
+# The parsers' and readers' tests (label parsers) with AddressSanitizer and
+# UBSan, in the Clang build of the fuzz targets below (one build serves both).
+sanitize: fuzz-build
+	cd $(BUILD)-fuzz && KNOT_TABLE=$(KNOT_TABLE) ctest --output-on-failure -j$(JOBS) -L parsers
 
 # The data set as a Slurm job array (scripts/slurm/) on a single-host Slurm
 # that the test starts and stops itself (tests/slurm/; docs/cluster.md).
@@ -77,15 +77,16 @@ slurm-test: configure
 	cmake --build $(BUILD) -j$(JOBS) --target knots
 	$(CTEST) -L slurm
 
-# libFuzzer targets of the readers (tests/fuzz/): Clang with ASan and UBSan,
-# parsers-only modules, in $(BUILD)-fuzz. `make fuzz` runs each target for
-# FUZZ_SECONDS ($(JOBS) at a time) and fails on any crash (its input is left
-# in results/fuzz/TARGET/); `make test` replays the seed corpus and runs each
-# target for 20 s (CTest label fuzz).
+# libFuzzer targets of the readers (tests/fuzz/) and the parsers' tests:
+# Clang with ASan and UBSan, parsers-only modules, in $(BUILD)-fuzz. `make
+# fuzz` runs each target for FUZZ_SECONDS ($(JOBS) at a time) and fails on any
+# crash (its input is left in results/fuzz/TARGET/); `make test` runs the
+# parsers' tests, replays the seed corpus and runs each target for 20 s
+# (CTest labels parsers and fuzz).
 FUZZ_SECONDS ?= 300
 fuzz-build: deps
 	@cmake -S . -B $(BUILD)-fuzz -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DCMAKE_BUILD_TYPE=Debug \
-	  -DCMAKE_C_FLAGS=-O1 -DCMAKE_CXX_FLAGS=-O1 -DEK_FUZZ=ON -DEK_PARSERS_ONLY=ON -DEK_BUILD_TESTS=OFF \
+	  -DCMAKE_C_FLAGS=-O1 -DCMAKE_CXX_FLAGS=-O1 -DEK_FUZZ=ON -DEK_PARSERS_ONLY=ON -DEK_BUILD_TESTS=ON \
 	  -DEK_KNOT_TABLE=$(KNOT_TABLE) > /dev/null
 	cmake --build $(BUILD)-fuzz -j$(JOBS)
 
