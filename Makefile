@@ -116,6 +116,7 @@ BENCH_CORE ?= 0
 # exp_time_vs_error: ci (n <= 800) or default (n <= 3200)
 BENCH_SCALE ?= default
 bench: build
+	cmake --build $(BUILD) -j$(JOBS) --target bench_programs
 	@mkdir -p results/bench
 	@for b in $(BUILD)/bench/bench_*; do \
 	  [ -x "$$b" ] || continue; \

@@ -230,8 +230,9 @@ TEST(PaperPeriodicBraids, LinkMembersRelaxAndKeepTheirLinkType) {
       for (int letter : l.family == "s1s2i" ? std::vector<int>{1, -2} : std::vector<int>{1, -2, 3})
         word.letters.push_back(letter);
     EXPECT_EQ(ek::conway(word).coefficients, l.conway) << at << ": the braid word's, by the Burau formula";
-    if (l.family == "s1s2i" && l.p == 3)
+    if (l.family == "s1s2i" && l.p == 3) {
       EXPECT_EQ(l.conway, (std::vector<std::int64_t>{0, 0, 0, 0, 1})) << "the Borromean rings, not the unlink";
+    }
     ASSERT_EQ(static_cast<int>(link.size()), l.components) << at;
     ASSERT_EQ(l.linking_numbers.size(), link.size() * link.size()) << at;
     const Eigen::MatrixXd L = ek::linking_matrix(link);

@@ -56,7 +56,7 @@ TEST(AtomicFile, StaleTemporariesOfDeadProcessesAreRemoved) {
   if (child == 0) _exit(0);
   waitpid(child, nullptr, 0);  // reaped: its pid names no process
   const std::string dead = std::to_string(child), alive = std::to_string(::getpid());
-  for (const std::string name : {"a.h5.tmp." + dead + ".0", "a.h5.tmp." + alive + ".0", "b.h5.tmp." + dead + ".1",
+  for (const std::string& name : {"a.h5.tmp." + dead + ".0", "a.h5.tmp." + alive + ".0", "b.h5.tmp." + dead + ".1",
                                  std::string("a.h5"), std::string("a.h5.tmp.x.0")})
     std::ofstream((dir / name).string()) << "x";
   remove_stale_temporaries(dir.string(), "a.h5");

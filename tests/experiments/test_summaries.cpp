@@ -147,7 +147,7 @@ TEST(Summaries, OtherSummariesRoundTrip) {
   d.sampling = "fixed:12";
   EXPECT_EQ(round_trip(d).sampling, "fixed:12");
   MilnorSummary m;
-  m.bb_knots = {{"3_1", 1.00003, 0.006}};
+  m.bb_knots = {{"3_1", 1.00003, 0.006, std::nullopt, 0, 0}};
   EXPECT_EQ(round_trip(m).bb_knots.at(0).knot, "3_1");
   PlanaritySummary p;
   p.planar_share = 0.756;

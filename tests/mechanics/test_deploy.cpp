@@ -71,7 +71,9 @@ TEST(Deploy, RingBucklesAtMichellThreshold) {
   for (const DeployRun& r : s.runs) {
     EXPECT_EQ(r.buckled, r.link > *s.flat_high || r.link < *s.flat_low) << r.link;
     EXPECT_LT(r.link_error, 1e-6) << r.link;
-    if (r.buckled) EXPECT_GT(std::fabs(r.writhe), 1.0) << r.link;
+    if (r.buckled) {
+      EXPECT_GT(std::fabs(r.writhe), 1.0) << r.link;
+    }
   }
 }
 

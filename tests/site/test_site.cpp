@@ -257,7 +257,9 @@ TEST(Site, FolderIsWrittenSafely) {
   EXPECT_FALSE(fs::exists(::testing::TempDir() + "escape"));
   for (const auto& entry : fs::directory_iterator(::testing::TempDir())) {  // the temporaries of this test's folders
     const std::string name = entry.path().filename().string();
-    if (name.rfind("site_", 0) == 0) EXPECT_EQ(name.find(".tmp."), std::string::npos) << entry.path();
+    if (name.rfind("site_", 0) == 0) {
+      EXPECT_EQ(name.find(".tmp."), std::string::npos) << entry.path();
+    }
   }
   EXPECT_THROW(check_site_folder(::testing::TempDir() + "no/such/parent", false), InputError);
 }
