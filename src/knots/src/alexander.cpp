@@ -4,52 +4,14 @@
 
 #include "ek/core/errors.hpp"
 #include "ek/core/int128.hpp"
+#include "ek/knots/conway.hpp"
 
 namespace ek {
 
 AlexanderPolynomial alexander(GaussDiagram g) {
   simplify(g);
-  const int c = g.crossings();
-  if (c <= 1) return normalize_alexander({1});
-  const int n = static_cast<int>(g.visits.size());
-  // arcs: a new arc starts at every under visit
-  std::vector<int> arc(static_cast<size_t>(n));
-  int first_under = 0;
-  while (g.visits[static_cast<size_t>(first_under)].over) ++first_under;
-  int id = -1;
-  for (int k = 0; k < n; ++k) {
-    const int p = (first_under + k) % n;
-    if (!g.visits[static_cast<size_t>(p)].over) ++id;
-    arc[static_cast<size_t>(p)] = id;
-  }
-  std::vector<int> under_pos(static_cast<size_t>(c)), over_pos(static_cast<size_t>(c));
-  for (int p = 0; p < n; ++p) {
-    const auto& v = g.visits[static_cast<size_t>(p)];
-    (v.over ? over_pos : under_pos)[static_cast<size_t>(v.crossing)] = p;
-  }
-  const int m = c - 1;  // drop the last row and column
-  std::vector<PolyEntry> entries;
-  entries.reserve(static_cast<size_t>(3 * c));
-  auto add = [&](int row, int col, int low, std::vector<std::int64_t> coeffs) {
-    if (row < m && col < m) entries.push_back({row, col, low, std::move(coeffs)});
-  };
-  for (int x = 0; x < c; ++x) {
-    const int pu = under_pos[static_cast<size_t>(x)];
-    const int in = arc[static_cast<size_t>((pu + n - 1) % n)];
-    const int out = arc[static_cast<size_t>(pu)];
-    const int over = arc[static_cast<size_t>(over_pos[static_cast<size_t>(x)])];
-    add(x, over, 0, {1, -1});
-    if (g.signs[static_cast<size_t>(x)] > 0) {
-      add(x, in, 1, {1});
-      add(x, out, 0, {-1});
-    } else {
-      add(x, in, 0, {-1});
-      add(x, out, 1, {1});
-    }
-  }
-  int low = 0;
-  auto det = polynomial_determinant(m, entries, &low);
-  return normalize_alexander(std::move(det));
+  // a knot's diagram is a link diagram of one component (conway.hpp: the same Fox matrix)
+  return normalize_alexander(alexander_coefficients(LinkDiagram{{std::move(g.visits)}, std::move(g.signs)}));
 }
 
 AlexanderPolynomial alexander(const PDCode& pd) { return alexander(diagram_from_pd(pd)); }
@@ -151,9 +113,7 @@ std::vector<std::int64_t> alexander_coefficients(const BraidWord& braid) {
     }
   int low = 0;
   auto det = polynomial_determinant(d, entries, &low);
-  while (!det.empty() && det.back() == 0) det.pop_back();
-  auto first_nz = std::find_if(det.begin(), det.end(), [](std::int64_t x) { return x != 0; });
-  det.erase(det.begin(), first_nz);
+  strip_zeros(det);
   if (det.empty()) return {};
   std::vector<std::int64_t> cyclotomic(static_cast<size_t>(n), 1);  // 1 + t + ... + t^{n-1}
   return exact_divide(det, cyclotomic);

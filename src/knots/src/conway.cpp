@@ -13,11 +13,6 @@
 namespace ek {
 namespace {
 
-void strip_zeros(std::vector<std::int64_t>& c) {
-  while (!c.empty() && c.back() == 0) c.pop_back();
-  c.erase(c.begin(), std::find_if(c.begin(), c.end(), [](std::int64_t x) { return x != 0; }));
-}
-
 /// Arc of every visit, per component: a new arc starts at every under visit;
 /// a component without one is a single arc.
 std::vector<std::vector<int>> arcs_of(const LinkDiagram& d, int* count) {
@@ -56,11 +51,7 @@ int128 z2_power_coefficient(int j, int e) {
 
 }  // namespace
 
-std::string ConwayPolynomial::to_string() const {
-  std::string s = "[";
-  for (size_t i = 0; i < coefficients.size(); ++i) s += (i ? ", " : "") + std::to_string(coefficients[i]);
-  return s + "]";
-}
+std::string ConwayPolynomial::to_string() const { return coefficients_string(coefficients); }
 
 ConwayPolynomial conway_from_alexander(std::vector<std::int64_t> delta, int components) {
   require(components >= 1, "conway_from_alexander: a link has at least one component");

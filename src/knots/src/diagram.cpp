@@ -33,37 +33,18 @@ GaussDiagram diagram_from_pd(const PDCode& pd) {
 }
 
 GaussDiagram diagram_from_braid(const BraidWord& word) {
+  LinkDiagram d = link_diagram_from_braid(word);
+  require(d.components.size() == 1, "diagram_from_braid: the closure is not a knot");
+  return GaussDiagram{std::move(d.components[0]), std::move(d.signs)};
+}
+
+LinkDiagram link_diagram_from_braid(const BraidWord& word) {
   // Follow one strand of the closure through the word, repeatedly: position
   // p meets letter ±i when p is i or i+1 (1-based), then moves to the other.
   // σ_i: the strand from position i passes over (sign +1); σ_i^{-1}: the
   // strand from position i+1 passes over (sign -1). Both are right-handed for
-  // σ_i when the strands run in the same direction.
-  GaussDiagram g;
-  const int L = word.length();
-  g.signs.resize(static_cast<size_t>(L));
-  for (int k = 0; k < L; ++k) g.signs[static_cast<size_t>(k)] = word.letters[static_cast<size_t>(k)] > 0 ? 1 : -1;
-  int pos = 1;
-  const int total = 2 * L;
-  for (int guard = 0; static_cast<int>(g.visits.size()) < total && guard <= word.strands; ++guard) {
-    for (int k = 0; k < L; ++k) {
-      const int letter = word.letters[static_cast<size_t>(k)];
-      const int i = std::abs(letter);
-      if (pos == i || pos == i + 1) {
-        const bool from_left = (pos == i);
-        const bool over = (letter > 0) ? from_left : !from_left;
-        g.visits.push_back({k, over});
-        pos = from_left ? i + 1 : i;
-      }
-    }
-    if (pos == 1) break;
-  }
-  require(static_cast<int>(g.visits.size()) == total, "diagram_from_braid: the closure is not a knot");
-  return g;
-}
-
-LinkDiagram link_diagram_from_braid(const BraidWord& word) {
-  // As diagram_from_braid(), once per cycle: a strand leaving the word at
-  // position p re-enters it at p, so a component's traversal ends when its
+  // σ_i when the strands run in the same direction. A strand leaving the word
+  // at position p re-enters it at p, so a component's traversal ends when its
   // strand is back at its cycle's first position.
   LinkDiagram d;
   for (int letter : word.letters) d.signs.push_back(letter > 0 ? 1 : -1);
@@ -115,7 +96,7 @@ Eigen::MatrixXi linking_numbers(const LinkDiagram& d) {
       twice(owner[x], under[x]) += d.signs[x];
       twice(under[x], owner[x]) += d.signs[x];
     }
-  require((twice.array() - 2 * (twice.array() / 2) == 0).all(), "linking_numbers: a pair of components crosses an odd number of times");
+  require(((twice.array() / 2) * 2 == twice.array()).all(), "linking_numbers: a pair of components crosses an odd number of times");
   return twice / 2;
 }
 

@@ -24,16 +24,21 @@ bool AlexanderPolynomial::palindromic() const {
   return std::equal(coefficients.begin(), coefficients.end(), coefficients.rbegin());
 }
 
-std::string AlexanderPolynomial::to_string() const {
+std::string AlexanderPolynomial::to_string() const { return coefficients_string(coefficients); }
+
+void strip_zeros(std::vector<std::int64_t>& c) {
+  while (!c.empty() && c.back() == 0) c.pop_back();
+  c.erase(c.begin(), std::find_if(c.begin(), c.end(), [](std::int64_t x) { return x != 0; }));
+}
+
+std::string coefficients_string(const std::vector<std::int64_t>& coefficients) {
   std::string s = "[";
   for (size_t i = 0; i < coefficients.size(); ++i) s += (i ? ", " : "") + std::to_string(coefficients[i]);
   return s + "]";
 }
 
 AlexanderPolynomial normalize_alexander(std::vector<std::int64_t> c) {
-  while (!c.empty() && c.back() == 0) c.pop_back();
-  auto first = std::find_if(c.begin(), c.end(), [](std::int64_t x) { return x != 0; });
-  c.erase(c.begin(), first);
+  strip_zeros(c);
   require(!c.empty(), "normalize_alexander: the polynomial is zero (not a knot)");
   int128 at_one = 0;
   for (auto x : c) at_one += x;

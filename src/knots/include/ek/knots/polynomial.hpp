@@ -24,6 +24,13 @@ struct AlexanderPolynomial {
   bool operator!=(const AlexanderPolynomial& o) const { return !(*this == o); }
 };
 
+/// Removes the zero coefficients at both ends (the factor t^k and the unused
+/// top degrees); the zero polynomial becomes empty.
+void strip_zeros(std::vector<std::int64_t>& coefficients);
+
+/// "[1, -1, 1]", "[]" for none: how polynomials print.
+std::string coefficients_string(const std::vector<std::int64_t>& coefficients);
+
 /// Normal form of a Laurent polynomial equal to ±t^k Δ(t): strips zero
 /// coefficients at both ends and fixes the sign so that the value at t = 1 is
 /// positive. Throws std::invalid_argument for the zero polynomial.
