@@ -329,11 +329,7 @@ results::PeriodicLinkMember run_link(const Args& a, const PeriodicBraid& m) {
   for (Eigen::Index i = 0; i < r.linking_numbers.rows(); ++i)
     for (Eigen::Index j = 0; j < r.linking_numbers.cols(); ++j) out.linking_numbers.push_back(r.linking_numbers(i, j));
   out.min_distance = r.min_distance;
-  Points all(0, 3);
-  for (const Points& P : r.positions) {
-    all.conservativeResize(all.rows() + P.rows(), 3);
-    all.bottomRows(P.rows()) = P;
-  }
+  const Points all = all_vertices(r.positions);
   out.vertices = static_cast<int>(all.rows());
   out.threedim = threedim(all);
   const Vec3 c = all.colwise().mean().transpose();

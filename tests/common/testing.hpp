@@ -2,7 +2,9 @@
 // Shared test helpers: data locations, seeded random curves, finite differences.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cstdint>
+#include <initializer_list>
 #include <functional>
 #include <random>
 #include <string>
@@ -11,6 +13,15 @@
 #include "ek/geometry/types.hpp"
 
 namespace ek::fixtures {
+
+/// An n by 3 matrix (Points, LatticePoints, ...) from a list of rows.
+template <class Matrix>
+Matrix rows3(std::initializer_list<std::array<typename Matrix::Scalar, 3>> rows) {
+  Matrix M(static_cast<Eigen::Index>(rows.size()), 3);
+  Eigen::Index i = 0;
+  for (const auto& r : rows) M.row(i++) << r[0], r[1], r[2];
+  return M;
+}
 
 /// Folder of the peer implementation's curves (../shared/data/peer).
 std::string peer_dir();

@@ -12,12 +12,7 @@ using namespace ek;
 
 namespace {
 
-Points polyline(std::initializer_list<std::array<double, 3>> pts) {
-  Points P(static_cast<Eigen::Index>(pts.size()), 3);
-  Eigen::Index i = 0;
-  for (const auto& p : pts) P.row(i++) << p[0], p[1], p[2];
-  return P;
-}
+Points polyline(std::initializer_list<std::array<double, 3>> pts) { return fixtures::rows3<Points>(pts); }
 
 /// max over dense samples of A (spacing <= h) of the distance to B: within h/2 below h(A → B).
 double dense_directed(const Points& A, const Points& B, double h) {

@@ -16,17 +16,13 @@
 #include "ek/knots/link_table.hpp"
 #include "ek/lattice/bfacf.hpp"
 #include "ek/lattice/link_sampling.hpp"
+#include "testing.hpp"
 
 using namespace ek;
 
 namespace {
 
-LatticePoints sites(std::initializer_list<std::array<int, 3>> list) {
-  LatticePoints L(static_cast<Eigen::Index>(list.size()), 3);
-  Eigen::Index i = 0;
-  for (const auto& p : list) L.row(i++) << p[0], p[1], p[2];
-  return L;
-}
+LatticePoints sites(std::initializer_list<std::array<int, 3>> list) { return fixtures::rows3<LatticePoints>(list); }
 
 /// A ring around (1, 1, 0) in the plane z = 0, and one in the plane y = 1
 /// through that hole and around the ring's side x = 2.
@@ -118,9 +114,7 @@ TEST(LinkSampling, TableLinksKeepTheirTypeOnTheLattice) {
         EXPECT_EQ(sample[c].rows(), batch.component_vertices[c]) << name;
         EXPECT_TRUE(check_lattice_polygon(sample[c]).ok) << name;
       }
-      Link link;
-      for (const LatticePoints& L : sample) link.push_back(to_points(L));
-      EXPECT_EQ(link_type(link), start.type) << name;  // also checked inside, independently here
+      EXPECT_EQ(link_type(to_link(sample)), start.type) << name;  // also checked inside, independently here
     }
     EXPECT_NE(batch.samples[0], batch.samples[1]) << name;
   }

@@ -26,12 +26,8 @@ int print_link(const LinkRecord& l, bool json) {
             << "components:        " << l.components() << " (" << types << ")\n"
             << "crossing number:   " << l.crossing_number << "\n"
             << "braid word:        " << to_string(l.braid) << "\n"
-            << "linking numbers:  ";
-  for (int i = 0; i < l.components(); ++i) {
-    for (int j = 0; j < l.components(); ++j) std::cout << " " << l.linking_numbers[static_cast<size_t>(i * l.components() + j)];
-    std::cout << (i + 1 < l.components() ? "\n                  " : "\n");
-  }
-  std::cout << "Conway:            " << l.conway.to_string() << " (coefficients of z^0, z^1, ...)\n";
+            << "linking numbers:   " << matrix_rows(l.linking_matrix(), std::string(19, ' ')) << "\n"
+            << "Conway:            " << l.conway.to_string() << " (coefficients of z^0, z^1, ...)\n";
   if (const auto mu = l.milnor_triple()) std::cout << "Milnor |mu(123)|:  " << *mu << "\n";
   return 0;
 }

@@ -28,12 +28,8 @@ int print_link(const std::string& file, const LinkInvariants& l, bool json) {
     std::cout << "component " << k + 1 << ":     " << c.vertices << " vertices, length " << fmt(c.length)
               << ", Alexander " << c.alexander.to_string() << ", writhe " << fmt(c.writhe) << "\n";
   }
-  std::cout << "linking numbers:";
-  for (Eigen::Index a = 0; a < l.linking_numbers.rows(); ++a) {
-    std::cout << (a == 0 ? " " : "\n                 ");
-    for (Eigen::Index b = 0; b < l.linking_numbers.cols(); ++b) std::cout << (b ? " " : "") << l.linking_numbers(a, b);
-  }
-  std::cout << " (largest distance of the Gauss sums to integers " << fmt(l.linking_error, 2) << ")\n"
+  std::cout << "linking numbers: " << matrix_rows(l.linking_numbers, std::string(17, ' '))
+            << " (largest distance of the Gauss sums to integers " << fmt(l.linking_error, 2) << ")\n"
             << "Conway:          " << l.conway.to_string() << " (coefficients of z^0, z^1, ...; [] for a split link)\n";
   if (l.milnor_triple) std::cout << "Milnor |mu(123)|: " << *l.milnor_triple << "\n";
   std::cout << "clearance between components: " << fmt(l.component_clearance) << "\n";

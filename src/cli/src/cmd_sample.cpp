@@ -160,11 +160,7 @@ int sample_link(const SampleArgs& a, const SampleSource& src, const std::vector<
   const LatticeLinkStart start =
       src.link_record ? lattice_link_start(*src.link_record) : lattice_link_start(src.link);
   const LinkSampleBatch batch = sample_lattice_link(start.components, a.opt, start.type, src.name);
-  for (int k = 0; k < a.count; ++k) {
-    Link link;
-    for (const LatticePoints& L : batch.samples[static_cast<size_t>(k)]) link.push_back(to_points(L));
-    write_link(files[static_cast<size_t>(k)], link);
-  }
+  for (int k = 0; k < a.count; ++k) write_link(files[static_cast<size_t>(k)], to_link(batch.samples[static_cast<size_t>(k)]));
   int start_vertices = 0;
   for (const LatticePoints& L : start.components) start_vertices += static_cast<int>(L.rows());
   if (a.json) {

@@ -15,6 +15,15 @@ void print_json(const Json& j) {
   std::cout << j.dump(-1, ' ', false, Json::error_handler_t::replace) << std::endl;
 }
 
+std::string matrix_rows(const Eigen::MatrixXi& matrix, const std::string& indent) {
+  std::string s;
+  for (Eigen::Index a = 0; a < matrix.rows(); ++a) {
+    if (a > 0) s += "\n" + indent;
+    for (Eigen::Index b = 0; b < matrix.cols(); ++b) s += (b ? " " : "") + std::to_string(matrix(a, b));
+  }
+  return s;
+}
+
 std::string fmt(double x, int digits) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.*g", digits, x);

@@ -2,6 +2,8 @@
 // Output helpers shared by the commands.
 #include <string>
 
+#include <Eigen/Core>
+
 #include "ek/core/json.hpp"
 
 namespace ek::cli {
@@ -18,6 +20,11 @@ inline Json number(double x) { return json_number(x); }
 
 /// "%.10g" formatting for human-readable output.
 std::string fmt(double x, int digits = 10);
+
+/// An integer matrix for human-readable output: each row's entries separated
+/// by one space, the rows after the first on new lines that start with
+/// `indent` (no newline at the end).
+std::string matrix_rows(const Eigen::MatrixXi& matrix, const std::string& indent);
 
 /// InputError "output <path> exists (use --overwrite to replace it)" when
 /// the output file exists and `overwrite` is false.

@@ -11,6 +11,18 @@
 
 namespace ek {
 
+Points all_vertices(const Link& link) {
+  Eigen::Index rows = 0;
+  for (const Points& P : link) rows += P.rows();
+  Points all(rows, 3);
+  rows = 0;
+  for (const Points& P : link) {
+    all.middleRows(rows, P.rows()) = P;
+    rows += P.rows();
+  }
+  return all;
+}
+
 double component_distance(const Points& A, const Points& B) {
   double d2 = std::numeric_limits<double>::infinity();
   const Eigen::Index na = A.rows(), nb = B.rows();

@@ -29,6 +29,24 @@ CurveInvariants curve_invariants(const Points& P) {
   return c;
 }
 
+std::string LinkType::to_string() const {
+  std::string s = "components";
+  for (size_t c = 0; c < alexander.size(); ++c) s += (c ? ", " : " ") + alexander[c].to_string();
+  s += "; linking numbers";
+  for (Eigen::Index i = 0; i < linking_numbers.rows(); ++i)
+    for (Eigen::Index j = i + 1; j < linking_numbers.cols(); ++j) s += " " + std::to_string(linking_numbers(i, j));
+  return s + "; Conway " + conway.to_string();
+}
+
+LinkType link_type(const Link& link) {
+  validate_link(link, "link");
+  LinkType t;
+  for (const Points& P : link) t.alexander.push_back(alexander(P));
+  t.linking_numbers = linking_matrix(link).array().round().cast<int>();
+  t.conway = conway(link);
+  return t;
+}
+
 LinkInvariants link_invariants(const Link& link) {
   require_input(link.size() >= 2, "link invariants: a link needs at least 2 components");
   LinkInvariants out;

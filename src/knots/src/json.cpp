@@ -37,11 +37,7 @@ Json link_info_json(const LinkRecord& l) {
   j["braid"] = to_string(l.braid);
   j["braid_strands"] = l.braid.strands;
   j["component_types"] = l.component_types;
-  const int m = l.components();
-  Json lk = Json::array();
-  for (int i = 0; i < m; ++i)
-    lk.push_back(std::vector<int>(l.linking_numbers.begin() + i * m, l.linking_numbers.begin() + (i + 1) * m));
-  j["linking_numbers"] = lk;
+  j["linking_numbers"] = integer_matrix_json(l.linking_matrix());
   j["conway"] = l.conway.coefficients;
   j["milnor_triple"] = optional_int(l.milnor_triple());
   j["table"] = "built-in links";

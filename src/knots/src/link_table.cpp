@@ -2,15 +2,17 @@
 
 #include <algorithm>
 
+#include "ek/core/errors.hpp"
+
 namespace ek {
 
-std::optional<int> LinkRecord::milnor_triple() const {
+Eigen::MatrixXi LinkRecord::linking_matrix() const {
   const int m = components();
-  Eigen::MatrixXi lk(m, m);
-  for (int i = 0; i < m; ++i)
-    for (int j = 0; j < m; ++j) lk(i, j) = linking_numbers[static_cast<size_t>(i * m + j)];
-  return milnor_triple_linking(conway, lk);
+  require(static_cast<int>(linking_numbers.size()) == m * m, "LinkRecord: " + name + " needs m² linking numbers");
+  return Eigen::Map<const Eigen::Matrix<int, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>>(linking_numbers.data(), m, m);
 }
+
+std::optional<int> LinkRecord::milnor_triple() const { return milnor_triple_linking(conway, linking_matrix()); }
 
 const std::vector<LinkRecord>& link_table() {
   // Conway polynomials as the Knot Atlas and LinkInfo list them, and as

@@ -329,17 +329,8 @@ GaussDiagram diagram_from_curve(const Points& P, const ProjectionOptions& option
 LinkDiagram link_diagram_from_curves(const Link& link, const ProjectionOptions& options) {
   validate_link(link, "link");
   std::vector<int> sizes;
-  Eigen::Index rows = 0;
-  for (const Points& P : link) {
-    sizes.push_back(static_cast<int>(P.rows()));
-    rows += P.rows();
-  }
-  Points all(rows, 3);
-  rows = 0;
-  for (const Points& P : link) {
-    all.middleRows(rows, P.rows()) = P;
-    rows += P.rows();
-  }
+  for (const Points& P : link) sizes.push_back(static_cast<int>(P.rows()));
+  const Points all = all_vertices(link);
   const double scale = (all.colwise().maxCoeff() - all.colwise().minCoeff()).norm();
   for (size_t k = 0; k < link.size(); ++k)
     require_simple(link[k], scale, options, "link component " + std::to_string(k + 1));

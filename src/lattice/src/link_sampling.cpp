@@ -12,12 +12,6 @@
 namespace ek {
 namespace {
 
-Link as_link(const std::vector<LatticePoints>& polygons) {
-  Link link;
-  for (const LatticePoints& L : polygons) link.push_back(to_points(L));
-  return link;
-}
-
 /// Every component translated by one integer vector: the centroid of all
 /// vertices in [-1/2, 1/2]³.
 std::vector<LatticePoints> centered(std::vector<LatticePoints> link) {
@@ -55,22 +49,10 @@ void check_reached(const BfacfRunReport& r, const std::string& what, size_t c, c
 
 }  // namespace
 
-std::string LinkType::to_string() const {
-  std::string s = "components";
-  for (size_t c = 0; c < alexander.size(); ++c) s += (c ? ", " : " ") + alexander[c].to_string();
-  s += "; linking numbers";
-  for (Eigen::Index i = 0; i < linking_numbers.rows(); ++i)
-    for (Eigen::Index j = i + 1; j < linking_numbers.cols(); ++j) s += " " + std::to_string(linking_numbers(i, j));
-  return s + "; Conway " + conway.to_string();
-}
-
-LinkType link_type(const Link& link) {
-  validate_link(link, "link");
-  LinkType t;
-  for (const Points& P : link) t.alexander.push_back(alexander(P));
-  t.linking_numbers = linking_matrix(link).array().round().cast<int>();
-  t.conway = conway(link);
-  return t;
+Link to_link(const std::vector<LatticePoints>& polygons) {
+  Link link;
+  for (const LatticePoints& L : polygons) link.push_back(to_points(L));
+  return link;
 }
 
 LinkSampleBatch sample_lattice_link(const std::vector<LatticePoints>& start, const SampleOptions& o,
@@ -103,7 +85,7 @@ LinkSampleBatch sample_lattice_link(const std::vector<LatticePoints>& start, con
     }
     std::vector<LatticePoints> sample = centered(walk.polygons());
     if (o.verify) {
-      const LinkType got = link_type(as_link(sample));
+      const LinkType got = link_type(to_link(sample));
       if (got != expected)
         throw TopologyError("sampling " + what + ": sample " + std::to_string(k) + " has " + got.to_string() +
                             " instead of " + expected.to_string());
@@ -129,7 +111,7 @@ LatticeLinkStart lattice_link_start(const Link& link, const RoundingOptions& rou
       start.components.push_back(std::move(r.points));
     }
   }
-  const LinkType got = link_type(as_link(start.components));
+  const LinkType got = link_type(to_link(start.components));
   if (got != start.type)
     throw TopologyError("lattice rounding of a link: " + got.to_string() + " differs from the curves' " +
                         start.type.to_string());

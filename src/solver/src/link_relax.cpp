@@ -7,7 +7,7 @@
 #include "ek/core/errors.hpp"
 #include "ek/core/hash.hpp"
 #include "ek/geometry/polyline.hpp"
-#include "ek/knots/alexander.hpp"
+#include "ek/knots/invariants.hpp"
 #include "ek/rod/elastic_rod.hpp"
 #include "ek/solver/eigen_analysis.hpp"
 #include "ek/solver/knot_terms.hpp"
@@ -109,15 +109,6 @@ CurveTopology topology_of(const Link& link) {
   return CurveTopology::from_sizes(sizes);
 }
 
-/// Each component's Alexander polynomial, the rounded linking numbers and
-/// the link's Conway polynomial.
-void invariants(const Link& link, std::vector<AlexanderPolynomial>& alexanders, Eigen::MatrixXi& linking,
-                ConwayPolynomial& nabla) {
-  alexanders.clear();
-  for (const Points& P : link) alexanders.push_back(alexander(P));
-  linking = linking_matrix(link).array().round().cast<int>();
-  nabla = conway(link);
-}
 
 }  // namespace
 
@@ -186,7 +177,10 @@ std::string LinkRelaxResult::status() const {
 LinkRelaxResult relax_link(const Link& link, const RelaxOptions& options) {
   LinkModel m(link, options);
   LinkRelaxResult out;
-  invariants(link, out.alexander, out.linking_numbers, out.conway);
+  const LinkType before = link_type(link);
+  out.alexander = before.alexander;
+  out.linking_numbers = before.linking_numbers;
+  out.conway = before.conway;
   NewtonSolver solver(m.newton_options());
   for (const double f : options.contact_continuation) out.continuation_reports.push_back(solver.minimize(m.objective(f)));
   Objective& objective = m.objective(1.0);
@@ -194,13 +188,10 @@ LinkRelaxResult relax_link(const Link& link, const RelaxOptions& options) {
   out.energy = objective.energy();
   out.min_distance = m.min_distance();
   out.positions = m.components();
-  std::vector<AlexanderPolynomial> after;
-  Eigen::MatrixXi linking_after;
-  ConwayPolynomial conway_after;
-  invariants(out.positions, after, linking_after, conway_after);
-  out.alexander_preserved = after == out.alexander;
-  out.linking_preserved = linking_after == out.linking_numbers;
-  out.conway_preserved = conway_after == out.conway;
+  const LinkType after = link_type(out.positions);
+  out.alexander_preserved = after.alexander == before.alexander;
+  out.linking_preserved = after.linking_numbers == before.linking_numbers;
+  out.conway_preserved = after.conway == before.conway;
   return out;
 }
 

@@ -45,6 +45,10 @@ void write_link(const std::string& path, const Link& link);
 /// (+infinity for one component).
 double validate_link(const Link& link, const std::string& source);
 
+/// Every component's vertices, one component after another (N by 3, N the
+/// vertices in all).
+Points all_vertices(const Link& link);
+
 /// Smallest distance between a segment of polygon A and one of polygon B
 /// (n_A by 3, n_B by 3, both closed). O(n_A·n_B).
 double component_distance(const Points& A, const Points& B);

@@ -3,6 +3,8 @@
 /// invariants` report them (and the Python module's knot() and invariants()).
 #include <cstdint>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "ek/geometry/link.hpp"
 #include "ek/geometry/polyline.hpp"
@@ -42,6 +44,24 @@ struct LinkInvariants {
   ConwayPolynomial conway;                  ///< ∇ of the whole link (conway.hpp): zero for a split link
   std::optional<int> milnor_triple;         ///< [1] |μ̄(123)| of 3 components with vanishing linking numbers
 };
+
+/// What a link keeps: its components' knot types, its linking numbers and ∇.
+struct LinkType {
+  std::vector<AlexanderPolynomial> alexander;  ///< per component
+  Eigen::MatrixXi linking_numbers;             ///< [1] m by m
+  ConwayPolynomial conway;
+
+  bool operator==(const LinkType& o) const {
+    return alexander == o.alexander && linking_numbers == o.linking_numbers && conway == o.conway;
+  }
+  bool operator!=(const LinkType& o) const { return !(*this == o); }
+  /// "components [..], [..]; linking numbers ..; Conway [..]"
+  std::string to_string() const;
+};
+
+/// The link type of polygons (validate_link; each component's projection,
+/// the Gauss sums rounded, the link's projection).
+LinkType link_type(const Link& link);
 
 /// The invariants of a link (validate_link: disjoint components, each a
 /// simple polygon). Throws InputError for a link of one component (use

@@ -30,6 +30,8 @@ struct LinkRecord {
   ConwayPolynomial conway;                   ///< published ∇, sign as ConwayPolynomial fixes it
 
   int components() const { return static_cast<int>(component_types.size()); }
+  /// `linking_numbers` as the m by m matrix.
+  Eigen::MatrixXi linking_matrix() const;
   /// |μ̄(123)| when defined (three components, vanishing linking numbers).
   std::optional<int> milnor_triple() const;
 };

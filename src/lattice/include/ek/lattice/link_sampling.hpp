@@ -18,6 +18,7 @@
 
 #include "ek/geometry/link.hpp"
 #include "ek/knots/conway.hpp"
+#include "ek/knots/invariants.hpp"
 #include "ek/knots/link_table.hpp"
 #include "ek/knots/polynomial.hpp"
 #include "ek/lattice/rounding.hpp"
@@ -25,22 +26,8 @@
 
 namespace ek {
 
-/// What a link keeps: its components' knot types, its linking numbers and ∇.
-struct LinkType {
-  std::vector<AlexanderPolynomial> alexander;  ///< per component
-  Eigen::MatrixXi linking_numbers;             ///< [1] m by m
-  ConwayPolynomial conway;
-
-  bool operator==(const LinkType& o) const {
-    return alexander == o.alexander && linking_numbers == o.linking_numbers && conway == o.conway;
-  }
-  bool operator!=(const LinkType& o) const { return !(*this == o); }
-  /// "components [..], [..]; linking numbers ..; Conway [..]"
-  std::string to_string() const;
-};
-
-/// The link type of polygons (validate_link; projections and Gauss sums).
-LinkType link_type(const Link& link);
+/// The polygons as a link (exact: the sites as doubles).
+Link to_link(const std::vector<LatticePoints>& polygons);
 
 /// A link's lattice samples.
 struct LinkSampleBatch {
