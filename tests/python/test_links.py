@@ -45,3 +45,16 @@ def test_relax_link_equals_the_cli(knots, tmp_path):
     assert all(np.array_equal(p, q) for p, q in zip(back, r.points))
     with pytest.raises(ValueError, match="at least 2 components"):
         ek.relax_link([r.points[0]])
+
+
+def test_a_link_data_set_reads_with_its_components(knots, tmp_path):
+    path = str(tmp_path / "links.h5")
+    knots.json("explore", "borromean", "--samples", "2", "-n", "180", "--quiet", "-o", path)
+    d = ek.Dataset(path)
+    assert d.knots == ["borromean"]
+    k = d.knot("borromean")
+    assert k.components == [60, 60, 60]
+    assert k.conway == [0, 0, 0, 0, 1]  # z⁴
+    assert k.linking_numbers == [[0, 0, 0], [0, 0, 0], [0, 0, 0]]
+    assert k.equilibria.shape[1:] == (180, 3)
+    assert "min_distance" in k.attributes

@@ -6,6 +6,7 @@
 
 #include "commands.hpp"
 #include "ek/dataset/run.hpp"
+#include "ek/knots/link_table.hpp"
 #include "ek/knots/selection.hpp"
 #include "explore_options.hpp"
 #include "output.hpp"
@@ -26,7 +27,7 @@ int cmd_dataset(int argc, char** argv) {
   args.option("--stratified", &stratified,
               "with --max-crossings: a deterministic stratified sample, the share F of every stratum "
               "(crossing number, alternating, bridge index) and every BB knot");
-  args.option("--names", &names, "comma-separated knot names");
+  args.option("--names", &names, "comma-separated knot names, or links of the link table (hopf, borromean, ...)");
   args.option("-o,--output", &out, "data-set file (HDF5); an existing one with the same parameters is resumed/extended");
   args.option("--shard", &shard, "I/N: only the knots k with k mod N = I - 1 (table order), for clusters");
   add_explore_options(args, a);
@@ -34,9 +35,7 @@ int cmd_dataset(int argc, char** argv) {
   if (!args.parse(argc, argv)) return 0;
   if (out.empty()) throw InputError("missing -o DATASET.h5");
   if (max_crossings.has_value() == !names.empty()) throw InputError("give exactly one of --max-crossings and --names");
-  finish_explore_options(a);
   DatasetRunOptions ro;
-  ro.explore = a.options;
   ro.output = out;
   std::tie(ro.shard_index, ro.shard_count) = parse_shard(shard);
   const auto& table = KnotTable::global();
@@ -60,12 +59,25 @@ int cmd_dataset(int argc, char** argv) {
     std::stringstream ss(names);
     std::string n;
     std::vector<const KnotRecord*> list;
-    while (std::getline(ss, n, ','))
-      if (!n.empty()) list.push_back(&table.at(n));
+    std::vector<const LinkRecord*> links;
+    while (std::getline(ss, n, ',')) {
+      if (n.empty()) continue;
+      if (!table.find(n) && find_link(n))
+        links.push_back(find_link(n));
+      else
+        list.push_back(&table.at(n));
+    }
     std::sort(list.begin(), list.end(), [](const KnotRecord* x, const KnotRecord* y) { return x->row < y->row; });
     list.erase(std::unique(list.begin(), list.end()), list.end());
+    const auto link_row = [](const LinkRecord* l) { return l - link_table().data(); };
+    std::sort(links.begin(), links.end(), [&](const LinkRecord* x, const LinkRecord* y) { return link_row(x) < link_row(y); });
+    links.erase(std::unique(links.begin(), links.end()), links.end());
     ro.knots = list;
+    ro.links = links;
+    if (!links.empty()) prepare_for_links(a, !list.empty());
   }
+  finish_explore_options(a);
+  ro.explore = a.options;
   ro.progress = !a.quiet && !json;
   const DatasetRunSummary s = run_dataset(ro);
   if (json) {

@@ -26,7 +26,10 @@ int cmd_export(int argc, char** argv) {
   if (index < 0 || index >= static_cast<long long>(e.equilibria.size()))
     throw InputError("INDEX " + index_text + " out of range: " + name + " has " + std::to_string(e.equilibria.size()) +
                      " equilibria");
-  write_curve(out, e.equilibria[static_cast<size_t>(index)]);
+  if (e.is_link())
+    write_link(out, e.equilibrium_link(static_cast<int>(index)));
+  else
+    write_curve(out, e.equilibria[static_cast<size_t>(index)]);
   std::cout << "wrote " << out << ": " << name << " equilibrium " << index << "\n";
   return 0;
 }

@@ -49,6 +49,21 @@ inline void add_explore_options(ArgParser& args, ExploreArgs& a) {
   args.flag("--quiet", &a.quiet, "no progress output");
 }
 
+/// The options of a run that holds links (explore_link): the direct method
+/// and no stiffness attribute. A run of links only gets them (`--method
+/// default` becomes `hybrid`); a run that mixes knots and links must ask for
+/// them, so the knots' method is never changed behind the user's back.
+inline void prepare_for_links(ExploreArgs& a, bool knots_too) {
+  if (knots_too) {
+    if (a.method == "default" || !a.no_stiffness)
+      throw InputError("links are relaxed by the direct method without the stiffness attribute: give --method hybrid "
+                       "(or exact, paper) and --no-stiffness to compute knots and links in one data set");
+    return;
+  }
+  if (a.method == "default") a.method = "hybrid";
+  a.no_stiffness = true;
+}
+
 inline void finish_explore_options(ExploreArgs& a) {
   if (a.adaptive && a.samples) throw InputError("--samples and --adaptive exclude each other");
   if (a.seed < 0) throw InputError("--seed must be non-negative");

@@ -11,6 +11,7 @@
 #include <csignal>
 #include <cstdio>
 #include <filesystem>
+#include <numeric>
 #include <sstream>
 #include <thread>
 #include <variant>
@@ -189,6 +190,19 @@ DatasetWriter::~DatasetWriter() {
   }
 }
 
+Link KnotEntry::equilibrium_link(int i) const {
+  require(i >= 0 && i < static_cast<int>(equilibria.size()), "equilibrium_link: no equilibrium " + std::to_string(i));
+  const Points& all = equilibria[static_cast<size_t>(i)];
+  if (!is_link()) return {all};
+  Link out;
+  Eigen::Index row = 0;
+  for (int n : components) {
+    out.push_back(all.middleRows(row, n));
+    row += n;
+  }
+  return out;
+}
+
 void DatasetWriter::add(const KnotEntry& k) {
   require(!impl_->committed, "DatasetWriter::add after commit");
   h5::Handle g = h5::create_group(impl_->knots.id(), k.name);
@@ -224,6 +238,13 @@ void DatasetWriter::add(const KnotEntry& k) {
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> link = k.linkage;
   h5::write_doubles(id, "linkage", {static_cast<hsize_t>(link.rows()), 4}, link.data());
   h5::write_doubles(id, "score_history", {k.score_history.size()}, k.score_history.data());
+  if (k.is_link()) {
+    require(std::accumulate(k.components.begin(), k.components.end(), hsize_t{0}) == n || m == 0,
+            "DatasetWriter: a link's components do not add up to its equilibria's vertices");
+    h5::set_attr(id, "components", std::vector<std::int64_t>(k.components.begin(), k.components.end()));
+    h5::set_attr(id, "conway", k.conway);
+    h5::set_attr(id, "linking_numbers", k.linking_numbers);
+  }
   impl_->names.push_back(k.name);
 }
 
@@ -335,10 +356,28 @@ class KnotGroupReader {
     std::vector<hsize_t> shape;
     k.score_history = h5::read_doubles(id_, "score_history", &shape);
     if (shape.size() != 1) damaged("score_history is not a list");
+    if (h5::has_attr(id_, "components")) read_link(k);
     return k;
   }
 
  private:
+  // The link attributes, checked against the equilibria's rows.
+  void read_link(KnotEntry& k) const {
+    const std::vector<std::int64_t> sizes = h5::get_attr_ints(id_, "components");
+    std::int64_t total = 0;
+    for (std::int64_t c : sizes) {
+      if (c < 4 || c > (1 << 24)) damaged("a link component has " + std::to_string(c) + " vertices");
+      total += c;
+    }
+    if (sizes.size() < 2) damaged("a link has fewer than 2 components");
+    if (!k.equilibria.empty() && total != k.equilibria.front().rows())
+      damaged("the link's components do not add up to its equilibria's vertices");
+    k.components.assign(sizes.begin(), sizes.end());
+    k.conway = h5::get_attr_ints(id_, "conway");
+    k.linking_numbers = h5::get_attr_ints(id_, "linking_numbers");
+    if (k.linking_numbers.size() != sizes.size() * sizes.size()) damaged("the linking numbers are not m by m");
+  }
+
   hid_t id_;
   std::string path_, name_;
 };

@@ -67,7 +67,12 @@ DatasetSearchResult search_dataset(const DatasetReader& reader, const Points& qu
     if (!options.only_knots.empty() &&
         std::find(options.only_knots.begin(), options.only_knots.end(), name) == options.only_knots.end())
       continue;
-    entries.push_back(reader.read(name));
+    KnotEntry e = reader.read(name);
+    if (e.is_link()) {  // the query is one polygon; a link's equilibria are several
+      require_input(options.only_knots.empty(), "search: " + name + " is a link; the search aligns one closed polygon");
+      continue;
+    }
+    entries.push_back(std::move(e));
   }
   for (size_t k = 0; k < entries.size(); ++k) {
     const KnotEntry& e = entries[k];

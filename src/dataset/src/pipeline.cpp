@@ -10,11 +10,15 @@
 
 #include "ek/analysis/attributes.hpp"
 #include "ek/analysis/clustering.hpp"
+#include "ek/analysis/link_states.hpp"
 #include "ek/core/errors.hpp"
 #include "ek/core/hash.hpp"
 #include "ek/core/parallel.hpp"
 #include "ek/core/paths.hpp"
 #include "ek/knots/alexander.hpp"
+#include "ek/knots/invariants.hpp"
+#include "ek/lattice/link_sampling.hpp"
+#include "ek/solver/link_relax.hpp"
 #include "journal.hpp"
 
 namespace ek {
@@ -231,11 +235,18 @@ void cluster_entry(KnotEntry& e, const SimilarityOptions& options) {
     e.linkage.resize(0, 4);
     return;
   }
-  SimilarityEngine engine(static_cast<int>(e.equilibria.front().rows()), options);
-  std::vector<SignatureSpectrum> spectra;
-  spectra.reserve(static_cast<size_t>(m));
-  for (const auto& P : e.equilibria) spectra.push_back(engine.spectrum(P));
-  e.similarity = engine.matrix(spectra);
+  if (e.is_link()) {
+    std::vector<LinkShape> shapes;
+    shapes.reserve(static_cast<size_t>(m));
+    for (int i = 0; i < m; ++i) shapes.push_back(link_shape(e.equilibrium_link(i)));
+    e.similarity = link_state_similarity_matrix(shapes);
+  } else {
+    SimilarityEngine engine(static_cast<int>(e.equilibria.front().rows()), options);
+    std::vector<SignatureSpectrum> spectra;
+    spectra.reserve(static_cast<size_t>(m));
+    for (const auto& P : e.equilibria) spectra.push_back(engine.spectrum(P));
+    e.similarity = engine.matrix(spectra);
+  }
   e.linkage = complete_linkage_from_similarity(e.similarity).linkage_matrix();
 }
 
@@ -390,15 +401,15 @@ struct KnotRuns {
   std::mutex mutex;
 };
 
-// Relaxes samples [begin, end) not yet done on o.jobs threads.
-void relax_range(const std::vector<LatticePoints>& samples, int begin, int end, std::uint64_t seed,
-                 const ExploreOptions& o, KnotRuns& runs) {
+// Relaxes samples [begin, end) not yet done on o.jobs threads; run(k) relaxes sample k.
+void relax_range(int begin, int end, const ExploreOptions& o, KnotRuns& runs,
+                 const std::function<JournalRun(int)>& run) {
   std::vector<int> todo;
   for (int k = begin; k < end; ++k)
     if (!runs.done.count(k)) todo.push_back(k);
   parallel_for(todo.size(), o.jobs, [&](size_t t) {
     const int k = todo[t];
-    JournalRun r = run_one(to_points(samples[static_cast<size_t>(k)]), k, sample_seed(seed, o.burn_in + k), o);
+    JournalRun r = run(k);
     std::lock_guard<std::mutex> lock(runs.mutex);
     if (runs.journal) runs.journal->append(r);
     if (*runs.on_run) (*runs.on_run)(r.record);
@@ -425,19 +436,18 @@ std::vector<double> attribute_row(const JournalRun& r, int sample, const Attribu
   return row;
 }
 
+using AttributeRow = std::function<std::vector<double>(const JournalRun&, int)>;
+
 // Runs of samples [0, total) in sample order into the entry; the stable
-// equilibria with their attributes.
-void collect_runs(KnotEntry& entry, KnotRuns& runs, int total, const ExploreOptions& o) {
-  const auto& names = dataset_attribute_names();
+// equilibria with their attributes (columns `names`, row(run, sample)).
+void collect_runs(KnotEntry& entry, KnotRuns& runs, int total, const std::vector<std::string>& names,
+                  const AttributeRow& row) {
   std::vector<std::vector<double>> rows;
-  AttributeOptions ao;
-  ao.radius = o.relax.material.radius;
-  ao.young_modulus = o.relax.material.young;
   for (int k = 0; k < total; ++k) {
     JournalRun& r = runs.done.at(k);
     r.record.equilibrium = r.positions.rows() > 0 ? static_cast<int>(entry.equilibria.size()) : -1;
     if (r.positions.rows() > 0) {
-      rows.push_back(attribute_row(r, k, ao));
+      rows.push_back(row(r, k));
       entry.equilibria.push_back(r.positions);
     }
     entry.runs.push_back(r.record);
@@ -447,6 +457,13 @@ void collect_runs(KnotEntry& entry, KnotRuns& runs, int total, const ExploreOpti
   for (size_t i = 0; i < rows.size(); ++i)
     for (size_t c = 0; c < names.size(); ++c)
       entry.attributes(static_cast<Eigen::Index>(i), static_cast<Eigen::Index>(c)) = rows[i][c];
+}
+
+AttributeOptions attribute_options(const ExploreOptions& o) {
+  AttributeOptions ao;
+  ao.radius = o.relax.material.radius;
+  ao.young_modulus = o.relax.material.young;
+  return ao;
 }
 
 }  // namespace
@@ -472,7 +489,9 @@ KnotEntry explore_knot(const KnotRecord& knot, const ExploreOptions& options, co
 
   const auto relax_samples = [&](int begin, int end) {
     walk.generate(end - begin);
-    relax_range(walk.samples(), begin, end, seed, o, runs);
+    relax_range(begin, end, o, runs, [&](int k) {
+      return run_one(to_points(walk.samples()[static_cast<size_t>(k)]), k, sample_seed(seed, o.burn_in + k), o);
+    });
   };
   int total = o.samples;
   if (o.adaptive) {
@@ -486,7 +505,191 @@ KnotEntry explore_knot(const KnotRecord& knot, const ExploreOptions& options, co
     relax_samples(0, total);
   }
   entry.samples_used = total;
-  collect_runs(entry, runs, total, o);
+  const AttributeOptions ao = attribute_options(o);
+  collect_runs(entry, runs, total, dataset_attribute_names(),
+               [&](const JournalRun& r, int k) { return attribute_row(r, k, ao); });
+  cluster_entry(entry, o.similarity);
+  entry.complete = true;
+  return entry;
+}
+
+// ---------------------------------------------------------------- links
+
+namespace {
+
+/// The attribute columns of a link's equilibria (link_attribute_names()).
+/// Per component and summed: total_curvature, writhe (the components' own,
+/// without the linking terms); the largest over the components: max_stress;
+/// of all vertices together: threedim, sphericity, diameter.
+struct LinkAttributeSource {
+  const JournalRun& run;
+  const std::vector<Attributes>& components;
+  const GeometricAttributes& whole;
+  int sample;
+};
+struct LinkAttributeColumn {
+  const char* name;
+  double (*value)(const LinkAttributeSource&);
+};
+double sum_of(const LinkAttributeSource& s, double GeometricAttributes::*field) {
+  double v = 0.0;
+  for (const Attributes& a : s.components) v += a.geometric.*field;
+  return v;
+}
+const LinkAttributeColumn kLinkAttributeColumns[] = {
+    {"energy", [](const LinkAttributeSource& s) { return s.run.energy.total; }},
+    {"energy_stretch", [](const LinkAttributeSource& s) { return s.run.energy.stretch; }},
+    {"energy_bend", [](const LinkAttributeSource& s) { return s.run.energy.bend; }},
+    {"energy_contact", [](const LinkAttributeSource& s) { return s.run.energy.contact; }},
+    {"max_stress",
+     [](const LinkAttributeSource& s) {
+       double v = 0.0;
+       for (const Attributes& a : s.components) v = std::max(v, a.physical.max_stress.value_or(std::nan("")));
+       return v;
+     }},
+    {"total_curvature", [](const LinkAttributeSource& s) { return sum_of(s, &GeometricAttributes::total_curvature); }},
+    {"threedim", [](const LinkAttributeSource& s) { return s.whole.threedim; }},
+    {"sphericity", [](const LinkAttributeSource& s) { return s.whole.sphericity; }},
+    {"diameter", [](const LinkAttributeSource& s) { return s.whole.diameter; }},
+    {"writhe", [](const LinkAttributeSource& s) { return sum_of(s, &GeometricAttributes::writhe); }},
+    {"min_distance", [](const LinkAttributeSource& s) { return s.run.link; }},
+    {"sample", [](const LinkAttributeSource& s) { return static_cast<double>(s.sample); }},
+};
+
+std::vector<double> link_attribute_row(const JournalRun& r, int sample, const std::vector<int>& sizes,
+                                       const AttributeOptions& ao) {
+  std::vector<Attributes> components;
+  Eigen::Index row = 0;
+  for (int n : sizes) {
+    components.push_back(compute_attributes(r.positions.middleRows(row, n), ao));
+    row += n;
+  }
+  GeometricAttributes whole;  // of the vertex set: these three need no edges
+  whole.threedim = threedim(r.positions);
+  whole.sphericity = sphericity(r.positions);
+  whole.diameter = diameter(r.positions).distance;
+  const LinkAttributeSource source{r, components, whole, sample};
+  std::vector<double> out;
+  for (const LinkAttributeColumn& c : kLinkAttributeColumns) out.push_back(c.value(source));
+  return out;
+}
+
+/// Relaxes one lattice sample of a link (relax_link); the stored positions
+/// are the components back to back. `link` carries the closest approach of
+/// two edges (min_distance).
+JournalRun run_link_one(const Link& sample, int index, std::uint64_t seed, const ExploreOptions& o) {
+  JournalRun out;
+  out.record.sample = index;
+  out.record.seed = seed;
+  out.stiffness = std::numeric_limits<double>::quiet_NaN();
+  try {
+    const LinkRelaxResult r = relax_link(sample, o.relax);
+    out.record.status = r.status();
+    out.record.iterations = r.report.iterations;
+    out.record.seconds = r.report.seconds;
+    for (const NewtonReport& c : r.continuation_reports) {
+      out.record.iterations += c.iterations;
+      out.record.seconds += c.seconds;
+    }
+    out.record.energy = r.energy;
+    out.record.gradient_norm = r.report.gradient_norm;
+    out.record.alexander_preserved = r.topology_preserved();
+    for (const EnergyPart& p : r.parts) {
+      if (p.name == "stretch") out.energy.stretch = p.value;
+      if (p.name == "bend") out.energy.bend = p.value;
+      if (p.name == "contact") out.energy.contact = p.value;
+    }
+    out.energy.total = out.energy.stretch + out.energy.bend;
+    out.link = r.min_distance;
+    if (r.report.status == SolverStatus::ConvergedStable && r.topology_preserved()) out.positions = all_vertices(r.positions);
+    if (!r.topology_preserved()) out.record.message = "the link type changed (components' Alexander polynomials, linking numbers or Conway polynomial)";
+  } catch (const std::exception& e) {
+    out.record.status = "error";
+    out.record.message = e.what();
+  }
+  return out;
+}
+
+/// The BFACF walk of one link: sample k continues from sample k − 1 with the
+/// seed sample_seed(link seed, burn_in + k), as SampleWalk for knots.
+class LinkSampleWalk {
+ public:
+  LinkSampleWalk(const LatticeLinkStart& start, const ExploreOptions& o, std::uint64_t seed, const std::string& name)
+      : start_(start), o_(o), seed_(seed), name_(name), last_(start.components) {}
+
+  void generate(int count) {
+    while (walk_index_ < o_.burn_in) next_sample();
+    for (int c = 0; c < count; ++c) {
+      next_sample();
+      samples_.push_back(to_link(last_));
+    }
+  }
+  const std::vector<Link>& samples() const { return samples_; }
+  const std::vector<int>& component_vertices() const { return sizes_; }
+
+ private:
+  void next_sample() {
+    SampleOptions so = o_.sampling;
+    so.count = 1;
+    so.seed = sample_seed(seed_, walk_index_++);
+    LinkSampleBatch b = sample_lattice_link(last_, so, start_.type, name_);
+    last_ = std::move(b.samples.front());
+    sizes_ = b.component_vertices;
+  }
+
+  const LatticeLinkStart& start_;
+  const ExploreOptions& o_;
+  std::uint64_t seed_;
+  std::string name_;
+  std::vector<LatticePoints> last_;
+  std::vector<int> sizes_;
+  int walk_index_ = 0;
+  std::vector<Link> samples_;
+};
+
+}  // namespace
+
+const std::vector<std::string>& link_attribute_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> v;
+    for (const LinkAttributeColumn& c : kLinkAttributeColumns) v.push_back(c.name);
+    return v;
+  }();
+  return names;
+}
+
+KnotEntry explore_link(const LinkRecord& link, const ExploreOptions& o, const std::string& journal_path,
+                       const RunCallback& on_run) {
+  o.validate();
+  require_input(!o.adaptive, "explore: adaptive sampling is defined for knots only; give --samples K for a link");
+  require_input(!multilevel_applies(o.relax), "explore: a link is relaxed by the direct method (--method direct)");
+  require_input(!o.stiffness, "explore: the stiffness of a link is not computed (--no-stiffness)");
+  KnotEntry entry;
+  entry.name = link.name;
+  entry.crossing_number = link.crossing_number;
+  entry.conway = link.conway.coefficients;
+  entry.linking_numbers.assign(link.linking_numbers.begin(), link.linking_numbers.end());
+  entry.alexander = {1};
+  const std::uint64_t seed = knot_seed(o.seed, link.name);
+
+  std::unique_ptr<Journal> journal;
+  if (!journal_path.empty()) journal = std::make_unique<Journal>(journal_path, options_text(link.name, o));
+  KnotRuns runs;
+  if (journal) runs.done = journal->runs();
+  runs.journal = journal.get();
+  runs.on_run = &on_run;
+
+  const LatticeLinkStart start = lattice_link_start(link);
+  LinkSampleWalk walk(start, o, seed, link.name);
+  walk.generate(o.samples);
+  entry.components = walk.component_vertices();
+  relax_range(0, o.samples, o, runs, [&](int k) {
+    return run_link_one(walk.samples()[static_cast<size_t>(k)], k, sample_seed(seed, o.burn_in + k), o);
+  });
+  entry.samples_used = o.samples;
+  const AttributeOptions ao = attribute_options(o);
+  collect_runs(entry, runs, o.samples, link_attribute_names(),
+               [&](const JournalRun& r, int k) { return link_attribute_row(r, k, entry.components, ao); });
   cluster_entry(entry, o.similarity);
   entry.complete = true;
   return entry;

@@ -82,9 +82,33 @@ class Progress {
   double last_line_ = -1e9;
 };
 
+/// The order of a data set's entries: knots in table order, then links in
+/// link-table order.
 int table_index(const std::string& name) {
-  const KnotRecord* r = KnotTable::global().find(name);
-  return r ? r->row : 1 << 30;
+  if (const KnotRecord* r = KnotTable::global().find(name)) return r->row;
+  const auto& links = link_table();
+  for (size_t k = 0; k < links.size(); ++k)
+    if (links[k].name == name) return (1 << 29) + static_cast<int>(k);
+  return 1 << 30;
+}
+
+/// One entry to compute: a knot or a link, by name.
+struct Subject {
+  std::string name;
+  std::function<KnotEntry(const ExploreOptions&, const std::string&, const RunCallback&)> explore;
+};
+
+std::vector<Subject> subjects(const DatasetRunOptions& o) {
+  std::vector<Subject> out;
+  for (const KnotRecord* k : o.knots)
+    out.push_back({k->name, [k](const ExploreOptions& e, const std::string& j, const RunCallback& cb) {
+                     return explore_knot(*k, e, j, cb);
+                   }});
+  for (const LinkRecord* l : o.links)
+    out.push_back({l->name, [l](const ExploreOptions& e, const std::string& j, const RunCallback& cb) {
+                     return explore_link(*l, e, j, cb);
+                   }});
+  return out;
 }
 
 /// Every merge input exists, is named once and is finished: a `knots dataset`
@@ -143,9 +167,10 @@ DatasetRunSummary run_dataset(const DatasetRunOptions& o) {
     meta.created = old.metadata().created;
     meta.forget_unrecorded(old.metadata());  // its knots were computed at values it does not know
   }
-  std::vector<const KnotRecord*> mine;
-  for (size_t k = 0; k < o.knots.size(); ++k)
-    if (static_cast<int>(k % static_cast<size_t>(o.shard_count)) == o.shard_index) mine.push_back(o.knots[k]);
+  const std::vector<Subject> all = subjects(o);
+  std::vector<const Subject*> mine;
+  for (size_t k = 0; k < all.size(); ++k)
+    if (static_cast<int>(k % static_cast<size_t>(o.shard_count)) == o.shard_index) mine.push_back(&all[k]);
 
   const std::string work = o.output + ".work";
   std::error_code ec;
@@ -160,21 +185,21 @@ DatasetRunSummary run_dataset(const DatasetRunOptions& o) {
   summary.knots = static_cast<int>(mine.size());
   Progress progress(o.progress, summary.knots);
   std::vector<std::string> parts;
-  for (const KnotRecord* knot : mine) {
-    if (std::find(existing.begin(), existing.end(), knot->name) != existing.end()) {
+  for (const Subject* subject : mine) {
+    if (std::find(existing.begin(), existing.end(), subject->name) != existing.end()) {
       // a part or journal left by a run killed after writing the output is not needed
-      std::remove((work + "/" + knot->name + ".h5").c_str());
-      std::remove((work + "/" + knot->name + ".journal").c_str());
+      std::remove((work + "/" + subject->name + ".h5").c_str());
+      std::remove((work + "/" + subject->name + ".journal").c_str());
       ++summary.knots_skipped;
       progress.knot_finished();
       continue;
     }
-    const std::string part = work + "/" + knot->name + ".h5";
+    const std::string part = work + "/" + subject->name + ".h5";
     if (fs::exists(part)) {
       try {
         DatasetReader check(part);
         // the same parameters as this run, or the part is recomputed
-        if (check.has_knot(knot->name) && check.metadata().difference(meta).empty()) {
+        if (check.has_knot(subject->name) && check.metadata().difference(meta).empty()) {
           parts.push_back(part);
           ++summary.knots_resumed;
           progress.knot_finished();
@@ -184,9 +209,9 @@ DatasetRunSummary run_dataset(const DatasetRunOptions& o) {
         // unreadable part (cannot happen with rename, but be safe): recompute
       }
     }
-    progress.knot_started(knot->name);
-    const std::string journal = work + "/" + knot->name + ".journal";
-    KnotEntry entry = explore_knot(*knot, o.explore, journal, [&](const RunRecord& r) {
+    progress.knot_started(subject->name);
+    const std::string journal = work + "/" + subject->name + ".journal";
+    KnotEntry entry = subject->explore(o.explore, journal, [&](const RunRecord& r) {
       ++summary.runs;
       const bool stable = r.status == "converged-stable";
       if (stable) ++summary.equilibria;

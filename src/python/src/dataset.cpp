@@ -113,6 +113,15 @@ Result knot_entry(const Dataset& d, const std::string& name) {
   r.fields["similarity"] = to_array(e.similarity);
   r.fields["linkage"] = to_array(e.linkage);
   r.fields["score_history"] = column(e.score_history);
+  if (e.is_link()) {  // docs/dataset-format.md, "Links"
+    const size_t m = e.components.size();
+    std::vector<std::vector<std::int64_t>> lk(m);
+    for (size_t i = 0; i < m; ++i) lk[i].assign(e.linking_numbers.begin() + static_cast<long>(i * m),
+                                                e.linking_numbers.begin() + static_cast<long>((i + 1) * m));
+    r.fields["components"] = e.components;
+    r.fields["conway"] = e.conway;
+    r.fields["linking_numbers"] = lk;
+  }
   return r;
 }
 

@@ -186,6 +186,7 @@ LinkRelaxResult relax_link(const Link& link, const RelaxOptions& options) {
   Objective& objective = m.objective(1.0);
   out.report = solver.minimize(objective);
   out.energy = objective.energy();
+  out.parts = objective.energy_parts();
   out.min_distance = m.min_distance();
   out.positions = m.components();
   const LinkType after = link_type(out.positions);

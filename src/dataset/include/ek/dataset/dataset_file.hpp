@@ -20,6 +20,16 @@
 ///     linkage           float64 [m-1, 4]   complete-linkage merges (a, b, height, size), SciPy layout
 ///     score_history     float64 [b]        adaptive-sampling importance score after each batch
 ///
+/// A link (several closed components) is stored in the same group layout:
+/// its equilibria hold the components back to back ([m, n_0 + n_1 + ..., 3]);
+/// the group attributes `components` (int list: n_c per component),
+/// `conway` (∇'s coefficients) and `linking_numbers` (int list, m by m row by
+/// row) say so; `alexander` is the unknot's; the attribute columns are
+/// link_attribute_names() (pipeline.hpp); `similarity` is 1 − d, d the link
+/// state distance (ek/analysis/link_states.hpp); the runs' `alexander_preserved`
+/// is 1 when every component's Alexander polynomial, every linking number and
+/// ∇ were kept. A group without `components` is a knot.
+///
 /// Files are always written to a temporary name and renamed into place.
 #include <cstdint>
 #include <memory>
@@ -27,6 +37,7 @@
 #include <vector>
 
 #include "ek/dataset/metadata.hpp"
+#include "ek/geometry/link.hpp"
 #include "ek/geometry/types.hpp"
 
 namespace ek {
@@ -42,7 +53,7 @@ struct RunRecord {
   double energy = 0.0;
   double gradient_norm = 0.0;
   int contacts = 0;
-  bool alexander_preserved = true;
+  bool alexander_preserved = true;  ///< a link: every component's polynomial, linking number and ∇ kept
   std::string message;           ///< error text for failed runs
 };
 
@@ -63,6 +74,15 @@ struct KnotEntry {
   bool complete = true;
   int samples_used = 0;
   std::vector<double> score_history;
+  /// A link: each component's vertex count n_c, summing to the equilibria's
+  /// rows (each component's rows in order); empty for a knot.
+  std::vector<int> components;
+  std::vector<std::int64_t> conway;           ///< a link's ∇ coefficients, lowest degree first (empty for a knot)
+  std::vector<std::int64_t> linking_numbers;  ///< a link's m by m linking numbers, row by row (empty for a knot)
+
+  bool is_link() const { return components.size() > 1; }
+  /// Equilibrium i as a link, one array per component (one component for a knot).
+  Link equilibrium_link(int i) const;
 
   /// Column of an attribute, by name; throws InputError for an unknown name.
   int attribute_column(const std::string& attribute) const;

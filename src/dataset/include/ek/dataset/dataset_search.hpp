@@ -18,7 +18,9 @@
 ///     ranked by the alignment distance (symmetric RMS closest-point distance
 ///     [length]); ties by the data set's knot order, then equilibrium index.
 /// The ranking does not depend on `jobs`. The command `knots search` calls
-/// this function (docs/cli.md).
+/// this function (docs/cli.md). The links of a data set are not searched:
+/// the alignment is that of one closed polygon (naming a link in
+/// `only_knots` is an InputError).
 #include <string>
 #include <vector>
 

@@ -35,6 +35,7 @@
 
 #include "ek/analysis/similarity.hpp"
 #include "ek/dataset/dataset_file.hpp"
+#include "ek/knots/link_table.hpp"
 #include "ek/knots/table.hpp"
 #include "ek/lattice/sampling.hpp"
 #include "ek/solver/relax.hpp"
@@ -142,6 +143,29 @@ using RunCallback = std::function<void(const RunRecord&)>;
 KnotEntry explore_knot(const KnotRecord& knot, const ExploreOptions& options, const std::string& journal_path = "",
                        const RunCallback& on_run = {});
 
+/// The attribute columns of a link's equilibria: energy (E_rod: stretch +
+/// bend of every component), energy_stretch, energy_bend, energy_contact;
+/// max_stress (the largest of the components'); total_curvature and writhe
+/// (summed over the components, each component's own writhe without the
+/// linking terms); threedim, sphericity and diameter (of all vertices
+/// together); min_distance [length] (closest approach of two edges sharing
+/// no vertex, across components too); sample.
+const std::vector<std::string>& link_attribute_names();
+
+/// A link's entry (paper Section 8.5 extends the simulation to links; this
+/// applies the data set of Section 7.4 to them): sample k continues the
+/// link's BFACF walk (sample_lattice_link, from lattice_link_start) with the
+/// seed sample_seed(knot_seed(seed, name), burn_in + k), as for knots; each
+/// sample is relaxed by relax_link (the twist-free model by the direct
+/// method) and checked against the link type (a change is a run with status
+/// "topology-changed", never an equilibrium); the entry is clustered on the
+/// link state distance (ek/analysis/link_states.hpp). Journal and resume as
+/// explore_knot. Throws InputError for adaptive sampling (its score is
+/// defined with the curvature-torsion similarity of knots), for the
+/// multilevel method and for the stiffness attribute, which links do not have.
+KnotEntry explore_link(const LinkRecord& link, const ExploreOptions& options, const std::string& journal_path = "",
+                       const RunCallback& on_run = {});
+
 /// One distinct equilibrium: a cluster of a knot's stored equilibria at a
 /// cut, represented by its lowest-energy member.
 struct StateCluster {
@@ -157,7 +181,9 @@ struct StateCluster {
 std::vector<StateCluster> clusters_at_cut(const KnotEntry& entry, double cut, std::vector<int>* rank = nullptr);
 
 /// Recomputes the similarity matrix and the complete-linkage dendrogram of
-/// the stored equilibria (used after merging and by explore_knot).
+/// the stored equilibria (used after merging and by explore_knot): the
+/// curvature-torsion similarity for a knot, 1 − the link state distance for
+/// a link (`options` unused).
 void cluster_entry(KnotEntry& entry, const SimilarityOptions& options);
 
 }  // namespace ek

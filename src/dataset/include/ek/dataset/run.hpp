@@ -22,9 +22,10 @@ namespace ek {
 struct DatasetRunOptions {
   ExploreOptions explore;
   std::vector<const KnotRecord*> knots;  ///< knot types in table order
+  std::vector<const LinkRecord*> links;  ///< links (explore_link), after the knots in link-table order
   std::string output;                    ///< data-set file
   int shard_index = 0;                   ///< this shard, 0-based (--shard I/N uses I = 1..N)
-  int shard_count = 1;                   ///< number of shards: knot k belongs to shard k mod N
+  int shard_count = 1;                   ///< number of shards: entry k (knots, then links) belongs to shard k mod N
   bool progress = true;                  ///< progress on stderr (a bar on a terminal, lines otherwise)
 };
 

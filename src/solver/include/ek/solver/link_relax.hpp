@@ -36,6 +36,7 @@ struct LinkRelaxResult {
   NewtonReport report;                          ///< of the solve at ω
   std::vector<NewtonReport> continuation_reports;  ///< of the continuation solves, in order
   double energy = 0.0;                          ///< [energy] E at the result
+  std::vector<EnergyPart> parts;                ///< E's parts at the result: "stretch", "bend", "contact"
   double min_distance = 0.0;                    ///< [length] smallest distance of edges sharing no vertex, components included
   std::vector<AlexanderPolynomial> alexander;   ///< of the input's components
   Eigen::MatrixXi linking_numbers;              ///< [1] of the input (m by m)
