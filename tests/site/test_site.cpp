@@ -121,6 +121,44 @@ TEST(Site, ContactFlagsOfAHairpin) {
   }
 }
 
+// Two rings of 12 and 16 vertices in one plane, 0.3 apart where they pass: a link entry's
+// files carry its components and its own columns; the curvature is each
+// ring's (a regular polygon's, no kink where the components meet in the
+// array); only the two edges that pass each other are in contact at d̂ = 0.4,
+// and none at d̂ = 0.2.
+TEST(Site, LinkDataFiles) {
+  const Points a = fixtures::circle(12, Vec3::Zero(), 3.0, Vec3::UnitX(), Vec3::UnitY());
+  const Points b = fixtures::circle(16, Vec3(3.3 + 4.0, 0.0, 0.0), 4.0, -Vec3::UnitX(), Vec3::UnitY());
+  KnotEntry e;
+  e.name = "two_rings";
+  e.components = {12, 16};
+  Points both(28, 3);
+  both << a, b;
+  e.equilibria = {both};
+  e.attribute_names = link_attribute_names();
+  e.attributes = Eigen::MatrixXd::Zero(1, static_cast<Eigen::Index>(e.attribute_names.size()));
+  e.similarity = Eigen::MatrixXd::Ones(1, 1);
+  e.linkage.resize(0, 4);
+  const KnotSiteData d = knot_site_data(e, "two_rings", 0.4, 0.002);
+  const auto j = nlohmann::json::parse(d.json);
+  EXPECT_EQ(j["components"], nlohmann::json::array({12, 16}));
+  EXPECT_EQ(j["attribute_names"].get<std::vector<std::string>>(), link_attribute_names());
+  const auto& buf = j["buffers"];
+  const double La = 2.0 * 3.0 * std::sin(M_PI / 12), Lb = 2.0 * 4.0 * std::sin(M_PI / 16);
+  for (int v = 0; v < 28; ++v) {
+    const float k = read_at<float>(d.binary, buf["curvature"]["offset"].get<size_t>() + static_cast<size_t>(v) * 4);
+    EXPECT_NEAR(k, v < 12 ? (2 * M_PI / 12) / La : (2 * M_PI / 16) / Lb, 1e-5) << "vertex " << v;
+  }
+  const auto on = contact_edges(both, CurveTopology::from_sizes({12, 16}), 0.4);
+  const auto off = contact_edges(both, CurveTopology::from_sizes({12, 16}), 0.2);
+  for (int i = 0; i < 28; ++i) {
+    // a's edges 11 and 0 meet at (3, 0, 0), b's edges 15 and 0 at (3.3, 0, 0)
+    const bool near = i == 0 || i == 11 || i == 12 + 0 || i == 12 + 15;
+    EXPECT_EQ(on[static_cast<size_t>(i)], near ? 1 : 0) << "edge " << i;
+    EXPECT_EQ(off[static_cast<size_t>(i)], 0) << "edge " << i;
+  }
+}
+
 TEST(Site, KnotFileNamesStayInTheirFolder) {
   EXPECT_EQ(knot_file_name("12a_1019"), "12a_1019");
   EXPECT_EQ(knot_file_name("0_1"), "0_1");

@@ -89,6 +89,7 @@ SiteOptions::SiteOptions() : three_dir(EK_THREE_JS_DIR) {}
 
 void SiteOptions::validate() const {
   if (!(cut >= 0.0 && cut <= 1.0)) throw InputError("--cut must be in [0, 1]");
+  if (!(link_cut >= 0.0 && link_cut <= 1.0)) throw InputError("--link-cut must be in [0, 1]");
 }
 
 std::vector<double> vertex_curvature(const Points& P) {
@@ -103,10 +104,9 @@ std::vector<double> vertex_curvature(const Points& P) {
   return out;
 }
 
-std::vector<unsigned char> contact_edges(const Points& P, double dhat) {
-  const int n = static_cast<int>(P.rows());
-  std::vector<unsigned char> out(static_cast<size_t>(n), 0);
-  for (const EdgePair& p : edge_pairs_within(P, CurveTopology::single(n), 1, dhat)) {
+std::vector<unsigned char> contact_edges(const Points& P, const CurveTopology& topology, double dhat) {
+  std::vector<unsigned char> out(static_cast<size_t>(P.rows()), 0);
+  for (const EdgePair& p : edge_pairs_within(P, topology, 1, dhat)) {
     out[static_cast<size_t>(p.a)] = 1;
     out[static_cast<size_t>(p.b)] = 1;
   }
@@ -148,14 +148,18 @@ KnotSiteData knot_site_data(const KnotEntry& e, const std::string& file, double 
     for (Eigen::Index i = 0; i < P.rows(); ++i)
       for (int k = 0; k < 3; ++k) append(bin, static_cast<float>(P(i, k)));
   buffers["curvature"] = buffer("float32", {m, n}, bin.size());
-  for (const Points& P : e.equilibria)
-    for (double k : vertex_curvature(P)) append(bin, static_cast<float>(k));
+  for (int i = 0; i < m; ++i)
+    for (const Points& P : e.equilibrium_link(i))
+      for (double k : vertex_curvature(P)) append(bin, static_cast<float>(k));
   buffers["similarity"] = buffer("float32", {m, m}, bin.size());
   for (int i = 0; i < m; ++i)
     for (int j = 0; j < m; ++j) append(bin, static_cast<float>(e.similarity(i, j)));
   buffers["contact"] = buffer("uint8", {m, n}, bin.size());
-  for (const Points& P : e.equilibria)
-    for (unsigned char c : contact_edges(P, dhat)) bin += static_cast<char>(c);
+  if (m > 0) {
+    const CurveTopology topology = e.is_link() ? CurveTopology::from_sizes(e.components) : CurveTopology::single(n);
+    for (const Points& P : e.equilibria)
+      for (unsigned char c : contact_edges(P, topology, dhat)) bin += static_cast<char>(c);
+  }
 
   Json j;
   j["format"] = std::string(kSiteFormat) + "-knot";
@@ -163,6 +167,10 @@ KnotSiteData knot_site_data(const KnotEntry& e, const std::string& file, double 
   j["name"] = e.name;
   j["equilibria"] = m;
   j["vertices"] = n;
+  if (e.is_link()) {
+    j["components"] = e.components;  // vertices per component, back to back
+    j["attribute_names"] = e.attribute_names;  // a link's own columns (link_attribute_names())
+  }
   bool converged = true;
   double explained = 1.0;
   j["mds"] = mds_json(e, converged, explained);
@@ -282,9 +290,9 @@ SiteFiles build_site(const std::string& dataset_path, const SiteOptions& options
     const KnotEntry e = reader.read(name);
     if (columns.empty() && !e.attribute_names.empty()) columns = e.attribute_names;
     if (!e.equilibria.empty() && e.attribute_names != columns)
-      throw InputError(dataset_path + ": knot " + name + " has other attribute columns than the first knot");
+      throw InputError(dataset_path + ": " + name + " has other attribute columns than the first entry (a site shows knots or links, not both)");
     const std::string file = knot_file_name(name);
-    KnotSiteData data = knot_site_data(e, file, meta.dhat.value(), options.cut);  // required: always read
+    KnotSiteData data = knot_site_data(e, file, meta.dhat.value(), e.is_link() ? options.link_cut : options.cut);  // dhat: required, always read
     knots.push_back(knot_record(e, table, file, data.distinct, rows));
     files["data/knots/" + file + ".json"] = std::move(data.json);
     files["data/knots/" + file + ".bin"] = std::move(data.binary);
@@ -298,6 +306,7 @@ SiteFiles build_site(const std::string& dataset_path, const SiteOptions& options
   site["generated_by"] = "knots site " + project_version();
   site["dataset"] = dataset_json(meta, dataset_path, options.title);
   site["cut"] = options.cut;
+  site["link_cut"] = options.link_cut;
   site["attribute_names"] = columns;
   site["attributes"] = {{"file", "attributes.bin"}, {"dtype", "float64"}, {"rows", rows}, {"columns", columns.size()}};
   site["knots"] = knots;

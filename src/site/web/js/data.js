@@ -48,8 +48,18 @@ export function attribute(site, table, knot, i, name) {
 
 /** Attribute `name` of equilibrium i of a loaded knot (loadKnot()). */
 export function knotAttribute(site, k, i, name) {
-  const c = site.column.get(name);
-  return c === undefined ? null : k.attributes[i * site.attribute_names.length + c];
+  const names = attributeNames(site, k), c = names.indexOf(name);
+  return c < 0 ? null : k.attributes[i * names.length + c];
+}
+
+/** The attribute columns of a knot's equilibria: a link has its own (k.attribute_names). */
+export function attributeNames(site, k) {
+  return k.attribute_names ?? site.attribute_names;
+}
+
+/** Vertices per component, back to back: [n] for a knot. */
+export function componentSizes(k) {
+  return k.components ?? [k.vertices];
 }
 
 const knots = new Map();

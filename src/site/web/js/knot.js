@@ -2,7 +2,7 @@
 // a cut the slider sets (reclustered here exactly as `knots cluster` does),
 // the count of distinct states, and its equilibria with their attributes
 // (sortable); a point or a row opens the equilibrium in 3D.
-import { loadKnot, knotAttribute } from "./data.js";
+import { loadKnot, knotAttribute, attributeNames } from "./data.js";
 import { clustersAtCut } from "./clusters.js";
 import { mdsPlot } from "./mds.js";
 import { dendrogramPlot } from "./dendrogram.js";
@@ -26,14 +26,14 @@ export async function showKnot(main, site, name) {
   }
   const open = (i) => { location.hash = `#/view/${encodeURIComponent(name)}/${i}`; };
   const mds = mdsPlot(k, { onClick: open, energy: (i) => value(i, "energy") });
-  let cut = site.cut;
+  let cut = k.cut ?? site.cut;  // a link's cut is in its state distance (data/knots/NAME.json)
   const dendro = dendrogramPlot(k, { onPick: (h) => setCut(h) });
   const slider = el("input", { type: "range", id: "cut-slider", min: 0, max: 1, step: 0.0005, value: cut,
     oninput: (e) => setCut(Number(e.target.value)) });
   const number = el("input", { type: "number", id: "cut-value", min: 0, max: 1, step: 0.001, value: cut,
     onchange: (e) => { const c = Number(e.target.value); if (c >= 0 && c <= 1) setCut(c); } });
   const count = el("strong", { id: "cluster-count" });
-  const attrs = site.attribute_names.filter((a) => a !== "sample");
+  const attrs = attributeNames(site, k).filter((a) => a !== "sample");
   let clusters = null;
   const rows = Array.from({ length: m }, (_, i) => ({ i }));
   const columns = [

@@ -1,13 +1,18 @@
 // OBJ downloads of an equilibrium: the curve (v and l lines, the format
 // `knots` reads) and the tube mesh (v, vn, f) for rendering or printing.
 
-/** The curve as OBJ text; positions are float32 as stored in the site. */
-export function curveObj(title, points) {
+/** The curve as OBJ text, a closed loop of l lines per component (vertex
+ *  counts `components`); positions are float32 as stored in the site. */
+export function curveObj(title, points, components = [points.length / 3]) {
   const n = points.length / 3;
   const lines = [`# ${title}`,
     "# float32 coordinates from the explorer; `knots export DATASET NAME INDEX -o FILE.obj` writes the stored double-precision curve"];
   for (let i = 0; i < n; i++) lines.push(`v ${points[3 * i]} ${points[3 * i + 1]} ${points[3 * i + 2]}`);
-  for (let i = 0; i < n; i++) lines.push(`l ${i + 1} ${((i + 1) % n) + 1}`);
+  let start = 0;
+  for (const c of components) {
+    for (let i = 0; i < c; i++) lines.push(`l ${start + i + 1} ${start + ((i + 1) % c) + 1}`);
+    start += c;
+  }
   return lines.join("\n") + "\n";
 }
 

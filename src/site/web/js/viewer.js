@@ -42,7 +42,8 @@ function smallestAxis(A) {
  * parallel-transported frame whose closing twist is spread evenly along the
  * curve; `colors` (n*3, sRGB in [0, 1]) per polygon vertex.
  */
-export function tubeGeometry(points, radius, colors) {
+export function tubeGeometry(points, radius, colors, components = [points.length / 3]) {
+  if (components.length > 1) return mergedTubes(points, radius, colors, components);
   const n = points.length / 3;
   const P = (i) => new THREE.Vector3(points[3 * i], points[3 * i + 1], points[3 * i + 2]);
   const T = [];
@@ -93,6 +94,36 @@ export function tubeGeometry(points, radius, colors) {
   return g;
 }
 
+/** One closed tube per component (vertex counts `components`, back to back) in one geometry. */
+function mergedTubes(points, radius, colors, components) {
+  const parts = [];
+  let start = 0;
+  for (const n of components) {
+    parts.push(tubeGeometry(points.subarray(3 * start, 3 * (start + n)), radius, colors.subarray(3 * start, 3 * (start + n))));
+    start += n;
+  }
+  const total = parts.reduce((s, g) => s + g.getAttribute("position").count, 0);
+  const pos = new Float32Array(3 * total), nor = new Float32Array(3 * total), col = new Float32Array(3 * total);
+  const index = new Uint32Array(parts.reduce((s, g) => s + g.getIndex().count, 0));
+  let v = 0, q = 0;
+  for (const g of parts) {
+    pos.set(g.getAttribute("position").array, 3 * v);
+    nor.set(g.getAttribute("normal").array, 3 * v);
+    col.set(g.getAttribute("color").array, 3 * v);
+    const idx = g.getIndex().array;
+    for (let i = 0; i < idx.length; i++) index[q + i] = idx[i] + v;
+    v += g.getAttribute("position").count;
+    q += idx.length;
+    g.dispose();
+  }
+  const g = new THREE.BufferGeometry();
+  g.setAttribute("position", new THREE.BufferAttribute(pos, 3));
+  g.setAttribute("normal", new THREE.BufferAttribute(nor, 3));
+  g.setAttribute("color", new THREE.BufferAttribute(col, 3));
+  g.setIndex(new THREE.BufferAttribute(index, 1));
+  return g;
+}
+
 export class TubeViewer {
   constructor(container, { width = 520, height = 520 } = {}) {
     this.renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
@@ -115,8 +146,9 @@ export class TubeViewer {
     this.mesh = null;
   }
 
-  /** Shows the curve (Float32Array n*3) as a tube; the camera is reset unless keepCamera. */
-  show(points, colors, radius, { keepCamera = false } = {}) {
+  /** Shows the curve (Float32Array n*3) as a tube, one per component of a
+   *  link (`components`: vertex counts); the camera is reset unless keepCamera. */
+  show(points, colors, radius, { keepCamera = false, components } = {}) {
     const n = points.length / 3;
     const center = new THREE.Vector3();
     for (let i = 0; i < n; i++) center.add(new THREE.Vector3(points[3 * i], points[3 * i + 1], points[3 * i + 2]));
@@ -129,7 +161,7 @@ export class TubeViewer {
       for (let r = 0; r < 3; r++) for (let c = 0; c < 3; c++) C[r][c] += p[r] * p[c];
     }
     if (this.mesh) { this.scene.remove(this.mesh); this.mesh.geometry.dispose(); this.mesh.material.dispose(); }
-    this.geometry = tubeGeometry(points, radius, colors);  // in the data's coordinates (for the OBJ download)
+    this.geometry = tubeGeometry(points, radius, colors, components);  // in the data's coordinates (for the OBJ download)
     const material = new THREE.MeshPhongMaterial({ vertexColors: THREE.VertexColors, shininess: 50, specular: 0x2a2a2a });
     this.mesh = new THREE.Mesh(this.geometry, material);
     this.mesh.position.copy(center).negate();

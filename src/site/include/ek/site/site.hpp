@@ -33,6 +33,7 @@
 #include <string>
 #include <vector>
 
+#include "ek/contact/topology.hpp"
 #include "ek/dataset/dataset_file.hpp"
 
 namespace ek {
@@ -46,6 +47,9 @@ struct SiteOptions {
   /// column and the initial position of each knot's cut slider (the paper
   /// experiments' cluster cut)
   double cut = 0.05;
+  /// [mean component length] the same for the links of the data set, in the
+  /// link state distance d (ek/analysis/link_states.hpp)
+  double link_cut = 0.002;
   /// folder of Debian's libjs-three (holds build/three.module.js and
   /// examples/jsm/controls/OrbitControls.js); default: found when the program was configured
   std::string three_dir;
@@ -53,7 +57,7 @@ struct SiteOptions {
   std::string title;
 
   SiteOptions();
-  /// Throws InputError for a cut outside [0, 1].
+  /// Throws InputError for a cut or link cut outside [0, 1].
   void validate() const;
 };
 
@@ -75,9 +79,15 @@ KnotSiteData knot_site_data(const KnotEntry& entry, const std::string& file, dou
 /// its Voronoi length (half the two edges), [1/length]; length n.
 std::vector<double> vertex_curvature(const Points& P);
 
-/// Per-edge contact flags of a closed polygon: edge i (vertex i to i+1) is
-/// closer than dhat to an edge sharing no vertex with it; length n.
-std::vector<unsigned char> contact_edges(const Points& P, double dhat);
+/// Per-edge contact flags of closed polygons (one, or a link's components
+/// back to back as `topology` says): edge i (vertex i to the next vertex of
+/// its component) is closer than dhat to an edge sharing no vertex with it,
+/// on any component; length n.
+std::vector<unsigned char> contact_edges(const Points& P, const CurveTopology& topology, double dhat);
+/// The one-polygon case.
+inline std::vector<unsigned char> contact_edges(const Points& P, double dhat) {
+  return contact_edges(P, CurveTopology::single(static_cast<int>(P.rows())), dhat);
+}
 
 /// The base file name of a knot's data files: the name when it consists of
 /// [A-Za-z0-9_.-] (every KnotInfo name), otherwise those characters with every
