@@ -182,7 +182,7 @@ int main(int argc, char** argv) {
     sum.adaptive = scaled.sampling_description();
     sum.score_threshold = scaled.score_threshold;
     sum.low_energy_factor = kLowEnergyFactor;
-    Tally tally{scaled, paper, sum};
+    Tally tally{scaled, paper, sum, 0, 0, 0, 0, {}, {}, 0.0, 0.0};
     Csv csv(a.out + "/adaptive.csv", {"knot", "fixed_samples", "adaptive_samples", "stopped_by_score", "low_clusters",
                                       "low_clusters_found", "scores"});
     const DatasetReader reader(ro.output);

@@ -34,7 +34,12 @@ struct Row {
 Row knot_row(const KnotEntry& e) {
   const int tc = e.attribute_column("total_curvature"), td = e.attribute_column("threedim");
   const double bound = 2.0 * M_PI * e.bridge_index;
-  Row r{e.name, e.crossing_number, e.bridge_index, e.braid_index, static_cast<int>(e.attributes.rows())};
+  Row r;
+  r.name = e.name;
+  r.crossings = e.crossing_number;
+  r.bridge = e.bridge_index;
+  r.braid = e.braid_index;
+  r.equilibria = static_cast<int>(e.attributes.rows());
   Eigen::Index best = 0;
   r.min_total_curvature = e.attributes.col(tc).minCoeff(&best);
   r.ratio = r.min_total_curvature / bound;
