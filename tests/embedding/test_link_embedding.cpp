@@ -7,6 +7,7 @@
 // each component, the mean edge as asked; both layouts.
 #include <gtest/gtest.h>
 
+#include "ek/core/errors.hpp"
 #include "ek/embedding/embedding.hpp"
 #include "ek/geometry/link.hpp"
 #include "ek/geometry/polyline.hpp"
@@ -92,4 +93,24 @@ TEST(LinkEmbedding, TableLinksHaveTheirListedInvariants) {
       EXPECT_EQ(inv.conway, r.conway) << at;
       EXPECT_EQ(inv.milnor_triple, r.milnor_triple()) << at;
     }
+}
+
+// Every link of the link table drawn from its PD code (the planar drawing):
+// the polygons have the listed link type (embed_pd_link checks it with
+// verify; checked again here from the invariants of the polygons).
+TEST(LinkEmbedding, TableLinksFromTheirPDCodes) {
+  for (const LinkRecord& r : link_table()) {
+    EmbeddingOptions o;
+    o.vertices = 120 * r.components();
+    const LinkEmbedding e = embed_pd_link(r.pd(), o);
+    const LinkInvariants inv = link_invariants(e.components);
+    ASSERT_EQ(static_cast<int>(inv.components.size()), r.components()) << r.name;
+    EXPECT_EQ(inv.linking_numbers, r.linking_matrix()) << r.name;
+    EXPECT_EQ(inv.conway, r.conway) << r.name;
+    EXPECT_EQ(inv.milnor_triple, r.milnor_triple()) << r.name;
+  }
+  // LinkInfo's code of the Hopf link
+  const LinkEmbedding h = embed_pd_link(parse_pd_link("[[4;1;3;2];[2;3;1;4]]"));
+  EXPECT_EQ(link_invariants(h.components).conway.coefficients, (std::vector<std::int64_t>{0, 1}));
+  EXPECT_THROW(embed_pd_link(parse_pd_link("[[1;5;2;4];[3;1;4;6];[5;3;6;2]]")), InputError);  // a knot
 }

@@ -121,3 +121,44 @@ TEST(Codes, FuzzRegressionsGiveOneLineErrors) {
   expect_one_line_error([] { parse_braid_list(bytes("};\x85\n\xfb\xff\xff\xef\xff\xff\0", 11)); });
   expect_input_error([] { parse_dt("[4\n; x]"); }, "[4\\n; x]");
 }
+
+// PD codes of links (LinkInfo's convention: each component's labels in a row).
+// The Hopf link: components {1, 2} and {3, 4}, each passing over once; the
+// over strands of two-edge components are ordered by their under ends.
+TEST(PDLinkCode, HopfLink) {
+  const PDLinkCode h = parse_pd_link("[[4;1;3;2];[2;3;1;4]]");
+  EXPECT_EQ(h.components, (std::vector<std::array<int, 2>>{{1, 2}, {3, 4}}));
+  // label 1 leaves crossing 2 (its c) and enters crossing 1: over 1 -> 2 there, b -> d: negative
+  EXPECT_EQ(h.over_in, (std::vector<int>{1, 3}));
+  EXPECT_EQ(h.sign(0), -1);
+  EXPECT_EQ(h.sign(1), -1);
+  EXPECT_EQ(to_string(h.code), "[[4;1;3;2];[2;3;1;4]]");
+}
+
+// A knot's code reads as one component [1, 2c] with parse_pd's signs.
+TEST(PDLinkCode, AKnotsCodeIsOneComponent) {
+  const std::string trefoil = "[[1;5;2;4];[3;1;4;6];[5;3;6;2]]";
+  const PDLinkCode k = parse_pd_link(trefoil);
+  const PDCode p = parse_pd(trefoil);
+  EXPECT_EQ(k.components, (std::vector<std::array<int, 2>>{{1, 6}}));
+  for (int i = 0; i < p.size(); ++i) EXPECT_EQ(k.sign(i), p.crossings[static_cast<size_t>(i)].sign(6)) << i;
+}
+
+// A two-edge component that only passes over ({1, 2} over {3, 4} twice): its
+// orientation is the choice of the smaller label into the first crossing,
+// and its two crossings then have opposite signs (linking number 0).
+TEST(PDLinkCode, ATwoEdgeComponentThatOnlyPassesOver) {
+  const PDLinkCode u = parse_pd_link("[[3;1;4;2];[4;1;3;2]]");
+  EXPECT_EQ(u.components, (std::vector<std::array<int, 2>>{{1, 2}, {3, 4}}));
+  EXPECT_EQ(u.over_in, (std::vector<int>{1, 2}));
+  EXPECT_EQ(u.sign(0) + u.sign(1), 0);
+}
+
+TEST(PDLinkCode, RejectsMalformed) {
+  expect_input_error([] { parse_pd_link("[[1;2;3;4];[3;4;1;2]]"); }, "are not consecutive");
+  expect_input_error([] { parse_pd_link("[[1;2;1;2]]"); }, "a component of one edge");
+  expect_input_error([] { parse_pd_link("[[4;1;3;2];[2;3;1]]"); }, "has 3 labels");
+  expect_input_error([] { parse_pd_link("[[4;1;3;2];[2;3;1;5]]"); }, "exceeds 2c");
+  // component {1..4}: under strand 1 -> 3 skips a label
+  expect_input_error([] { parse_pd_link("[[1;2;3;4];[3;4;2;1]]"); }, "under-strand edges 1 -> 3 are not consecutive labels");
+}

@@ -9,6 +9,7 @@
 
 #include <set>
 
+#include "ek/core/errors.hpp"
 #include "ek/knots/alexander.hpp"
 #include "ek/knots/invariants.hpp"
 #include "ek/knots/link_table.hpp"
@@ -55,4 +56,34 @@ TEST(LinkTable, ComponentDiagramOfAKnotIsTheKnot) {
   ASSERT_EQ(d.components.size(), 1u);
   EXPECT_EQ(alexander(component_diagram(d, 0)).to_string(), "[1, -1, 1]");
   EXPECT_EQ(linking_numbers(d), Eigen::MatrixXi::Zero(1, 1));
+}
+
+// The PD codes of the table's links (of their braids' closures) read back
+// with the same components and orientations, and their diagrams have the
+// listed link type: components' knot types, linking numbers and ∇.
+TEST(LinkTable, PDCodesHaveTheListedInvariants) {
+  const KnotTable& knots = KnotTable::global();
+  for (const LinkRecord& r : link_table()) {
+    const PDLinkCode pd = r.pd();
+    const PDLinkCode back = parse_pd_link(to_string(pd.code));
+    EXPECT_EQ(back.components, pd.components) << r.name;
+    EXPECT_EQ(back.over_in, pd.over_in) << r.name;
+    ASSERT_EQ(static_cast<int>(back.components.size()), r.components()) << r.name;
+    EXPECT_EQ(back.code.size(), r.braid.length()) << r.name;
+    const LinkType t = link_type(link_diagram_from_pd(back));
+    EXPECT_EQ(t.conway, r.conway) << r.name;
+    EXPECT_EQ(t.linking_numbers, r.linking_matrix()) << r.name;
+    for (int k = 0; k < r.components(); ++k)
+      EXPECT_EQ(t.alexander[static_cast<size_t>(k)], table_alexander(knots.at(r.component_types[static_cast<size_t>(k)])))
+          << r.name << " component " << k + 1;
+  }
+}
+
+// A knot's braid gives a PD code of one component whose Alexander polynomial
+// is the knot's; a braid with an untouched strand has none.
+TEST(LinkTable, PDCodeOfABraidClosure) {
+  const PDLinkCode t = pd_from_braid(BraidWord{2, {1, 1, 1}});
+  ASSERT_EQ(t.components.size(), 1u);
+  EXPECT_EQ(alexander(parse_pd(to_string(t.code))).to_string(), "[1, -1, 1]");
+  EXPECT_THROW(pd_from_braid(BraidWord{3, {1, 1}}), InputError);
 }

@@ -161,3 +161,35 @@ TEST(RelaxCli, BorromeanRingsFromTheirBraidWordRelaxAsALink) {
     EXPECT_EQ(std::count(b.err.begin(), b.err.end(), '\n'), 1) << args << ": " << b.err;
   }
 }
+
+// Links from PD codes: a code given with --pd (LinkInfo's Hopf link) and the
+// table's Borromean rings drawn from theirs (--from pd) are written as links
+// of the code's type; a knot's code gives a curve; bad codes are one line
+// and status 2.
+TEST(RelaxCli, LinksFromPDCodes) {
+  const std::string dir = temp_dir("embed_pd_link");
+  const auto h = run("embed --pd '[[4;1;3;2];[2;3;1;4]]' -n 160 -o " + dir + "/h.obj --json");
+  ASSERT_EQ(h.status, 0) << h.err;
+  EXPECT_EQ(h.json().at("from"), "pd");
+  EXPECT_EQ(h.json().at("components"), 2);
+  EXPECT_EQ(h.json().at("conway"), nlohmann::json::parse("[0,1]"));
+  const auto b = run("embed borromean --from pd -n 300 -o " + dir + "/b.obj --json");
+  ASSERT_EQ(b.status, 0) << b.err;
+  const auto inv = run("invariants " + dir + "/b.obj --json");
+  ASSERT_EQ(inv.status, 0) << inv.err;
+  EXPECT_EQ(inv.json().at("components"), 3);
+  EXPECT_EQ(inv.json().at("milnor_triple"), 1);
+  const auto info = run("info borromean --json");
+  ASSERT_EQ(info.status, 0) << info.err;
+  EXPECT_EQ(info.json().at("pd").get<std::string>().substr(0, 2), "[[");
+  const auto k = run("embed --pd '[[1;5;2;4];[3;1;4;6];[5;3;6;2]]' -n 120 -o " + dir + "/t.obj --json");
+  ASSERT_EQ(k.status, 0) << k.err;
+  EXPECT_EQ(k.json().at("alexander"), nlohmann::json::parse("[1,-1,1]"));
+  for (const std::string& args : {"embed --pd '[[1;2;3;4];[3;4;1;2]]' -o " + dir + "/x.obj",
+                                  "embed 3_1 --pd '[[4;1;3;2];[2;3;1;4]]' -o " + dir + "/x.obj",
+                                  "embed --pd '[[4;1;3;2];[2;3;1;4]]' --from pd -o " + dir + "/x.obj"}) {
+    const auto bad = run(args);
+    EXPECT_EQ(bad.status, 2) << args;
+    EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << args << ": " << bad.err;
+  }
+}

@@ -1,4 +1,4 @@
-// knots embed NAME|--braid WORD [--strands S] --from braid|pd [--style coil|cylinder] [-n N] -o FILE [--edge-length L] [--strand-spacing S]
+// knots embed NAME|--braid WORD|--pd CODE [--strands S] --from braid|pd [--style coil|cylinder] [-n N] -o FILE [--edge-length L] [--strand-spacing S]
 //             [--crossing-height H] [--crossing-offset H] [--tilt DEG] [--json]
 #include <cmath>
 #include <iostream>
@@ -19,24 +19,24 @@ namespace ek::cli {
 
 namespace {
 
-/// A braid word's closure of several components: written as a link,
-/// summarised. A link of the link table (`record`) must have its listed
-/// Conway polynomial on the polygons (a change of link type is an error).
-int embed_link(const BraidWord& word, const LinkRecord* record, const EmbeddingOptions& opt, const std::string& out,
-               bool json) {
-  const LinkEmbedding e = embed_braid_link(word, opt);
+/// A link embedded from a braid word or a PD code (`from`, `code` its text):
+/// written as a link, summarised. A link of the link table (`record`) must
+/// have its listed Conway polynomial on the polygons (a change of link type
+/// is an error).
+int write_embedded_link(const LinkEmbedding& e, const std::string& from, const std::string& code,
+                        const LinkRecord* record, const std::string& out, bool json) {
   const ConwayPolynomial nabla = conway(e.components);
   if (record && nabla != record->conway)
     throw TopologyError("embed: the polygons of " + record->name + " have the Conway polynomial " + nabla.to_string() +
                         ", not the table's " + record->conway.to_string());
   write_link(out, e.components);
-  const std::string name = record ? record->name : "braid " + to_string(word);
+  const std::string name = record ? record->name : from + " " + code;
   int vertices = 0;
   for (const Points& P : e.components) vertices += static_cast<int>(P.rows());
   if (json) {
     Json j;
     j["name"] = name;
-    j["from"] = "braid";
+    j["from"] = from;
     j["components"] = e.components.size();
     j["vertices"] = vertices;
     j["edge_length"] = json_number(e.edge_length);
@@ -47,8 +47,9 @@ int embed_link(const BraidWord& word, const LinkRecord* record, const EmbeddingO
     print_json(j);
     return 0;
   }
-  std::cout << "wrote " << out << ": " << (record ? record->description + ", " : std::string()) << "the closure of "
-            << to_string(word) << ", a link of " << e.components.size() << " components, " << vertices
+  std::cout << "wrote " << out << ": " << (record ? record->description + ", " : std::string())
+            << (from == "braid" ? "the closure of " : "the PD code ") << code << ", a link of " << e.components.size()
+            << " components, " << vertices
             << " vertices, mean edge length " << fmt(e.edge_length) << ", Conway " << nabla.to_string() << "\n";
   return 0;
 }
@@ -56,13 +57,13 @@ int embed_link(const BraidWord& word, const LinkRecord* record, const EmbeddingO
 }  // namespace
 
 int cmd_embed(int argc, char** argv) {
-  std::string from = "braid", style = "coil", out, braid;
+  std::string from = "braid", style = "coil", out, braid, pd;
   std::vector<std::string> names;
   int strands = 0;
   EmbeddingOptions opt;
   bool json = false;
   ArgParser args("embed",
-                 "NAME|--braid WORD [--strands S] --from braid|pd [--style coil|cylinder] [-n N] -o FILE "
+                 "NAME|--braid WORD|--pd CODE [--strands S] --from braid|pd [--style coil|cylinder] [-n N] -o FILE "
                  "[--edge-length L] [--strand-spacing S] [--crossing-height H] [--crossing-offset H] [--tilt DEG] "
                  "[--json]");
   args.rest("NAME", &names, "knot name as in the table, or a link of the link table (knots info NAME)");
@@ -70,6 +71,9 @@ int cmd_embed(int argc, char** argv) {
               "instead of NAME: a braid word, letters ±1, ±2, ... separated by commas (σ_i⁻¹ is -i; the table's "
               "{1;-2;...} also), whose "
               "closure is a knot or a link (a link is written with one component per cycle of the word)");
+  args.option("--pd", &pd,
+              "instead of NAME: a PD code [[a;b;c;d];...] (KnotInfo's and LinkInfo's convention: each component's "
+              "labels consecutive) of a knot or a link, drawn in the plane (as --from pd)");
   args.option("--strands", &strands, "with --braid: the number of strands (default: 1 + the largest |letter|)");
   args.option("--from", &from, "braid (closed braid coil, default) or pd (planar drawing of the PD code)");
   args.option("--style", &style,
@@ -93,18 +97,33 @@ int cmd_embed(int argc, char** argv) {
   args.flag("--json", &json, "print a JSON summary");
   if (!args.parse(argc, argv)) return 0;
   if (names.size() > 1) throw InputError("one NAME at most, got '" + names[1] + "' too");
-  if (names.empty() == braid.empty()) throw InputError(names.empty() ? "missing argument NAME (or --braid WORD)"
-                                                                     : "give NAME or --braid WORD, not both");
+  const int sources = !names.empty() + !braid.empty() + !pd.empty();
+  if (sources != 1)
+    throw InputError(sources == 0 ? "missing argument NAME (or --braid WORD, --pd CODE)"
+                                  : "give one of NAME, --braid WORD and --pd CODE");
   if (strands != 0 && braid.empty()) throw InputError("--strands applies to --braid only");
-  if (!braid.empty() && from != "braid") throw InputError("--from applies to NAME only");
+  if (names.empty() && from != "braid") throw InputError("--from applies to NAME only");
   if (out.empty()) throw InputError("missing -o FILE");
   opt.braid_tilt = tilt_deg * M_PI / 180.0;
   opt.braid_style = parse_braid_style(style);
   check_writable(out);
+  if (!pd.empty()) {
+    const PDLinkCode code = parse_pd_link(pd);
+    if (code.components.size() > 1) return write_embedded_link(embed_pd_link(code, opt), "pd", to_string(code.code), nullptr, out, json);
+    const Embedding e = embed_pd(parse_pd(pd), opt);
+    write_curve(out, e.points);
+    if (json) print_json(embedding_json("pd " + to_string(code.code), e, out));
+    else
+      std::cout << "wrote " << out << ": the PD code " << to_string(code.code) << ", " << e.points.rows()
+                << " vertices, edge length " << fmt(e.edge_length) << ", clearance " << fmt(e.clearance)
+                << ", Alexander " << e.alexander->to_string() << "\n";
+    return 0;
+  }
   if (!braid.empty()) {
     const bool braced = braid.find_first_not_of(" \t") != std::string::npos && braid[braid.find_first_not_of(" \t")] == '{';
     const BraidWord word = parse_braid_word(braced ? braid : "{" + braid + "}", strands);
-    if (closure_components(word) > 1) return embed_link(word, nullptr, opt, out, json);
+    if (closure_components(word) > 1)
+      return write_embedded_link(embed_braid_link(word, opt), "braid", to_string(word), nullptr, out, json);
     const Embedding e = embed_braid(word, opt);
     write_curve(out, e.points);
     if (json) print_json(embedding_json("braid " + to_string(word), e, out));
@@ -116,8 +135,9 @@ int cmd_embed(int argc, char** argv) {
   }
   const std::string& name = names[0];
   if (const LinkRecord* link = find_link(name)) {
-    if (from != "braid") throw InputError("--from pd applies to knots; a link of the link table embeds from its braid word");
-    return embed_link(link->braid, link, opt, out, json);
+    if (parse_embedding_source(from) == EmbeddingSource::PD)
+      return write_embedded_link(embed_pd_link(link->pd(), opt), "pd", to_string(link->pd().code), link, out, json);
+    return write_embedded_link(embed_braid_link(link->braid, opt), "braid", to_string(link->braid), link, out, json);
   }
   const KnotRecord& knot = KnotTable::global().at(name);
   const Embedding e = embed_knot(knot, parse_embedding_source(from), opt);

@@ -26,6 +26,7 @@ int print_link(const LinkRecord& l, bool json) {
             << "components:        " << l.components() << " (" << types << ")\n"
             << "crossing number:   " << l.crossing_number << "\n"
             << "braid word:        " << to_string(l.braid) << "\n"
+            << "PD code:           " << to_string(l.pd().code) << " (of the braid's closure)\n"
             << "linking numbers:   " << matrix_rows(l.linking_matrix(), std::string(19, ' ')) << "\n"
             << "Conway:            " << l.conway.to_string() << " (coefficients of z^0, z^1, ...)\n";
   if (const auto mu = l.milnor_triple()) std::cout << "Milnor |mu(123)|:  " << *mu << "\n";

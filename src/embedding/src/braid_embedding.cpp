@@ -164,31 +164,8 @@ LinkEmbedding embed_braid_link(const BraidWord& word, const EmbeddingOptions& o)
   validate(o);
   require_input(word.length() > 0 && word.strands >= 1, "braid embedding: empty braid word");
   const std::vector<int> starts = cycle_starts(word);
-  const std::vector<Points> dense = dense_components(word, o, starts);
-  double total = 0.0;
-  for (const Points& D : dense) total += curve_length(D);
-  LinkEmbedding e;
-  double h = 0.0;
-  std::vector<EquilateralResult> parts;
-  for (const Points& D : dense) {
-    const int m = std::max(4, static_cast<int>(std::lround(o.vertices * curve_length(D) / total)));
-    try {
-      parts.push_back(resample_equilateral(D, m));
-    } catch (const std::invalid_argument&) {
-      throw InputError("braid embedding: cannot place " + std::to_string(m) +
-                       " equal edges along a component; use more vertices");
-    }
-    h += parts.back().edge_length / static_cast<double>(starts.size());
-  }
-  const double scale = o.edge_length / h;
-  for (const EquilateralResult& p : parts) {
-    e.components.push_back(p.points * scale);
-    const VecX edges = edge_lengths(e.components.back());
-    e.max_edge_deviation = std::max(e.max_edge_deviation, (edges.array() - o.edge_length).abs().maxCoeff());
-  }
-  e.edge_length = o.edge_length;
+  LinkEmbedding e = finish_link_embedding(dense_components(word, o, starts), o, "braid embedding");
   e.linking_numbers = braid_linking_numbers(word);
-  validate_link(e.components, "braid embedding");
   if (o.verify) {
     const Eigen::MatrixXi got = linking_matrix(e.components).array().round().cast<int>();
     if (got != e.linking_numbers)

@@ -16,4 +16,12 @@ void validate(const EmbeddingOptions& options);
 Embedding finish_embedding(const Points& dense, const EmbeddingOptions& options, const std::string& method,
                            const AlexanderPolynomial* expected);
 
+/// The link of dense closed polylines: about options.vertices vertices in
+/// all, shared in proportion to the components' lengths (at least 4 each),
+/// every component's edges equal, all scaled together so that the mean edge
+/// is options.edge_length; checked for touching components (validate_link).
+/// `method` names the embedding in messages. linking_numbers is left empty.
+LinkEmbedding finish_link_embedding(const std::vector<Points>& dense, const EmbeddingOptions& options,
+                                    const std::string& method);
+
 }  // namespace ek

@@ -1,8 +1,11 @@
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "common.hpp"
 #include "ek/core/errors.hpp"
 #include "ek/embedding/embedding.hpp"
+#include "ek/geometry/link.hpp"
 #include "ek/geometry/polyline.hpp"
 #include "ek/geometry/resample.hpp"
 #include "ek/knots/alexander.hpp"
@@ -23,6 +26,34 @@ void validate(const EmbeddingOptions& o) {
                 "embedding: the strand spacing must be positive");
   require_input(o.pd_crossing_height > 0.0, "embedding: PD crossing height must be positive");
   require_input(o.samples_per_letter >= 4 && o.samples_per_piece >= 2, "embedding: too few dense samples");
+}
+
+LinkEmbedding finish_link_embedding(const std::vector<Points>& dense, const EmbeddingOptions& o,
+                                    const std::string& method) {
+  double total = 0.0;
+  for (const Points& D : dense) total += curve_length(D);
+  LinkEmbedding e;
+  double h = 0.0;
+  std::vector<EquilateralResult> parts;
+  for (const Points& D : dense) {
+    const int m = std::max(4, static_cast<int>(std::lround(o.vertices * curve_length(D) / total)));
+    try {
+      parts.push_back(resample_equilateral(D, m));
+    } catch (const std::invalid_argument&) {
+      throw InputError(method + ": cannot place " + std::to_string(m) +
+                       " equal edges along a component; use more vertices");
+    }
+    h += parts.back().edge_length / static_cast<double>(dense.size());
+  }
+  const double scale = o.edge_length / h;
+  for (const EquilateralResult& p : parts) {
+    e.components.push_back(p.points * scale);
+    const VecX edges = edge_lengths(e.components.back());
+    e.max_edge_deviation = std::max(e.max_edge_deviation, (edges.array() - o.edge_length).abs().maxCoeff());
+  }
+  e.edge_length = o.edge_length;
+  validate_link(e.components, method);
+  return e;
 }
 
 Embedding finish_embedding(const Points& dense, const EmbeddingOptions& o, const std::string& method,

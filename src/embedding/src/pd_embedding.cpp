@@ -1,15 +1,19 @@
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <optional>
 #include <set>
+#include <string>
 #include <vector>
 
 #include "common.hpp"
 #include "ek/core/errors.hpp"
+#include "ek/geometry/link.hpp"
 #include "ek/knots/alexander.hpp"
+#include "ek/knots/invariants.hpp"
 
 namespace ek {
 namespace {
@@ -207,21 +211,21 @@ void tutte_layout(const std::vector<std::set<int>>& adj, TutteLayout& L, int rou
   }
 }
 
-/// The knot's corners in order: edge e leaves crossing s(e) and enters
-/// t(e) = s(e + 1); it runs s(e) -> midpoint(e), at height +1 at s(e) when
-/// the strand is over there (e is the over strand's head), -1 under, 0 at the midpoint.
-std::vector<Corner> knot_corners(const PlaneGraph& g, const TutteNodes& nodes, const std::vector<Vec2>& pos) {
-  const PDCode& pd = *g.pd;
+/// One component's corners in order: edge e leaves crossing s(e) and
+/// enters t(e) = s(e + 1); it runs s(e) -> midpoint(e), at height +1 at s(e)
+/// when the strand is over there (e is the over strand's head), -1 under, 0
+/// at the midpoint. `range` is the component's labels [first, last] and
+/// over_in[i] the over strand's incoming label at crossing i.
+std::vector<Corner> component_corners(const PlaneGraph& g, const TutteNodes& nodes, const std::vector<Vec2>& pos,
+                                      const std::array<int, 2>& range, const std::vector<int>& over_in) {
   std::vector<Corner> corners;
-  for (int e = 1; e <= nodes.m; ++e) {
+  for (int e = range[0]; e <= range[1]; ++e) {
     // the crossing where e is outgoing: slot 2 (under) or the over strand's head
     int from = -1;
     bool over = false;
     for (const Dart& d : g.where[static_cast<size_t>(e)]) {
-      const auto& X = pd.crossings[static_cast<size_t>(d.crossing)];
-      const int sign = X.sign(nodes.m);
-      const int over_head_slot = sign > 0 ? 1 : 3;
-      if (d.slot == 2 || d.slot == over_head_slot) {
+      const bool over_head = (d.slot == 1 || d.slot == 3) && over_in[static_cast<size_t>(d.crossing)] != e;
+      if (d.slot == 2 || over_head) {
         from = d.crossing;
         over = (d.slot != 2);
       }
@@ -278,18 +282,51 @@ Points dense_samples(const std::vector<Vec3>& ctrl, int K) {
   return dense;
 }
 
-/// The dense 3D curve of the PD drawing after `rounds` Tutte reweightings.
-Points pd_dense_curve(const PDCode& pd, const EmbeddingOptions& o, int rounds) {
-  const int c = pd.size();
+/// The dense 3D curves of the PD drawing after `rounds` Tutte
+/// reweightings, one per component (label ranges of `pd`).
+std::vector<Points> pd_dense_curves(const PDLinkCode& pd, const EmbeddingOptions& o, int rounds) {
+  const int c = pd.code.size();
   require_input(c >= 1, "PD embedding: empty code");
-  const PlaneGraph g = plane_graph(pd);
+  const PlaneGraph g = plane_graph(pd.code);
   const TutteNodes nodes{c, 2 * c, static_cast<int>(g.faces.size())};
   const std::vector<std::set<int>> adj = tutte_adjacency(g, nodes);
   TutteLayout layout = pin_outer_face(g, nodes);
   tutte_layout(adj, layout, rounds);
-  std::vector<Vec3> ctrl = control_polygon(knot_corners(g, nodes, layout.pos), o);
-  chaikin(ctrl, 3);
-  return dense_samples(ctrl, o.samples_per_piece);
+  std::vector<Points> out;
+  for (const auto& range : pd.components) {
+    std::vector<Vec3> ctrl = control_polygon(component_corners(g, nodes, layout.pos, range, pd.over_in), o);
+    chaikin(ctrl, 3);
+    out.push_back(dense_samples(ctrl, o.samples_per_piece));
+  }
+  return out;
+}
+
+/// A knot's code as a one-component link code (its over strands ordered by PDCrossing::sign).
+PDLinkCode knot_code(const PDCode& pd) {
+  PDLinkCode out;
+  out.code = pd;
+  out.components = {{1, 2 * pd.size()}};
+  for (const PDCrossing& x : pd.crossings) out.over_in.push_back(x.sign(2 * pd.size()) > 0 ? x.e[3] : x.e[1]);
+  return out;
+}
+
+/// The first of `attempts` (Tutte reweighting rounds) that `finish` accepts,
+/// or the best by `score` when one is good enough.
+template <class Result, class Finish, class Score>
+Result best_drawing(const std::vector<int>& attempts, Finish finish, Score score, double good) {
+  std::optional<Result> best;
+  std::string last_error;
+  for (int rounds : attempts) {
+    try {
+      Result r = finish(rounds);
+      if (!best || score(r) > score(*best)) best = std::move(r);
+      if (score(*best) > good) break;
+    } catch (const InputError& err) {
+      last_error = err.what();
+    }
+  }
+  if (!best) throw InputError(last_error);
+  return *best;
 }
 
 }  // namespace
@@ -297,22 +334,33 @@ Points pd_dense_curve(const PDCode& pd, const EmbeddingOptions& o, int rounds) {
 Embedding embed_pd(const PDCode& pd, const EmbeddingOptions& o) {
   validate(o);
   const AlexanderPolynomial expected = alexander(pd);
-  if (!o.verify) return finish_embedding(pd_dense_curve(pd, o, o.pd_reweighting_rounds), o, "pd", &expected);
+  const PDLinkCode code = knot_code(pd);
+  const auto finish = [&](int rounds) {
+    return finish_embedding(pd_dense_curves(code, o, rounds).front(), o, "pd", &expected);
+  };
+  if (!o.verify) return finish(o.pd_reweighting_rounds);
   // The resampled polygon can miss the drawing's tightest places when n is
   // small; try a few reweightings and keep the valid one with most clearance.
-  std::optional<Embedding> best;
-  std::string last_error;
-  for (int rounds : {o.pd_reweighting_rounds, 1, 3, 0, 4, 6}) {
-    try {
-      Embedding e = finish_embedding(pd_dense_curve(pd, o, rounds), o, "pd", &expected);
-      if (!best || e.clearance > best->clearance) best = std::move(e);
-      if (best->clearance > 0.5 * o.edge_length) break;
-    } catch (const InputError& err) {
-      last_error = err.what();
-    }
-  }
-  if (!best) throw InputError(last_error);
-  return *best;
+  return best_drawing<Embedding>({o.pd_reweighting_rounds, 1, 3, 0, 4, 6}, finish,
+                                 [](const Embedding& e) { return e.clearance; }, 0.5 * o.edge_length);
+}
+
+LinkEmbedding embed_pd_link(const PDLinkCode& pd, const EmbeddingOptions& o) {
+  validate(o);
+  require_input(pd.components.size() >= 2, "PD embedding: the code has one component (a knot: use embed_pd)");
+  const LinkType expected = link_type(link_diagram_from_pd(pd));
+  const auto finish = [&](int rounds) {
+    LinkEmbedding e = finish_link_embedding(pd_dense_curves(pd, o, rounds), o, "PD embedding");
+    e.linking_numbers = expected.linking_numbers;
+    if (o.verify && link_type(e.components) != expected)
+      throw InputError("PD embedding with " + std::to_string(o.vertices) +
+                       " vertices does not keep the code's link type; use more vertices");
+    return e;
+  };
+  if (!o.verify) return finish(o.pd_reweighting_rounds);
+  return best_drawing<LinkEmbedding>({o.pd_reweighting_rounds, 1, 3, 0, 4, 6}, finish,
+                                     [](const LinkEmbedding& e) { return validate_link(e.components, "PD embedding"); },
+                                     0.5 * o.edge_length);
 }
 
 }  // namespace ek

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <functional>
+#include <map>
 #include <numeric>
 
 #include "ek/core/errors.hpp"
@@ -133,9 +135,11 @@ DTCode parse_dt(const std::string& text) {
   return code;
 }
 
-PDCode parse_pd(const std::string& text) {
-  const std::string what = "PD code";
-  Lexer lex(text, what);
+namespace {
+
+/// The crossings of a PD code with every label 1..2c used exactly twice
+/// (the checks that knots and links share).
+PDCode read_pd_groups(Lexer& lex) {
   Token t = lex.next();
   if (t.kind != Token::Open) lex.fail("expected '[' at the start");
   PDCode code;
@@ -178,14 +182,28 @@ PDCode parse_pd(const std::string& text) {
     if (count[static_cast<size_t>(label)] != 2)
       lex.fail("label " + std::to_string(label) + " appears " + std::to_string(count[static_cast<size_t>(label)]) +
                " times (every edge label must pair up: exactly 2)");
+  return code;
+}
+
+std::string crossing_text(const PDCode& code, int i) {
+  const auto& e = code.crossings[static_cast<size_t>(i)].e;
+  return "crossing " + std::to_string(i + 1) + " [" + std::to_string(e[0]) + ";" + std::to_string(e[1]) + ";" +
+         std::to_string(e[2]) + ";" + std::to_string(e[3]) + "]";
+}
+
+}  // namespace
+
+PDCode parse_pd(const std::string& text) {
+  Lexer lex(text, "PD code");
+  const PDCode code = read_pd_groups(lex);
+  const int c = code.size(), m = 2 * c;
   auto succ = [m](int x) { return x % m + 1; };
   // Each edge label must leave one crossing and enter another: incoming edges
   // are a (under) and the over-strand's tail; outgoing are c and the head.
   std::vector<int> incoming(static_cast<size_t>(m + 1), 0);
   for (int i = 0; i < c; ++i) {
     const auto& e = code.crossings[static_cast<size_t>(i)].e;
-    const std::string xs = "crossing " + std::to_string(i + 1) + " [" + std::to_string(e[0]) + ";" +
-                           std::to_string(e[1]) + ";" + std::to_string(e[2]) + ";" + std::to_string(e[3]) + "]";
+    const std::string xs = crossing_text(code, i);
     if (succ(e[0]) != e[2])
       lex.fail(xs + ": under-strand edges " + std::to_string(e[0]) + " -> " + std::to_string(e[2]) +
                " are not consecutive labels");
@@ -201,6 +219,127 @@ PDCode parse_pd(const std::string& text) {
       lex.fail("edge " + std::to_string(label) + " enters " + std::to_string(incoming[static_cast<size_t>(label)]) +
                " crossings (the orientation of the labels is inconsistent)");
   return code;
+}
+
+int PDLinkCode::sign(int crossing) const {
+  const auto& e = code.crossings[static_cast<size_t>(crossing)].e;
+  return over_in[static_cast<size_t>(crossing)] == e[3] ? +1 : -1;
+}
+
+namespace {
+
+/// The components of a PD code: labels joined along the strands (a with c,
+/// b with d), each component a range of consecutive labels.
+std::vector<std::array<int, 2>> pd_label_ranges(const PDCode& code, Lexer& lex) {
+  const int m = 2 * code.size();
+  std::vector<int> parent(static_cast<size_t>(m + 1));
+  std::iota(parent.begin(), parent.end(), 0);
+  const std::function<int(int)> find = [&](int x) {
+    return parent[static_cast<size_t>(x)] == x ? x : parent[static_cast<size_t>(x)] = find(parent[static_cast<size_t>(x)]);
+  };
+  for (const PDCrossing& x : code.crossings) {
+    parent[static_cast<size_t>(find(x.e[0]))] = find(x.e[2]);
+    parent[static_cast<size_t>(find(x.e[1]))] = find(x.e[3]);
+  }
+  std::map<int, std::array<int, 3>> groups;  // root -> lowest label, highest label, size
+  for (int label = 1; label <= m; ++label) {
+    auto [it, fresh] = groups.try_emplace(find(label), std::array<int, 3>{label, label, 0});
+    it->second[1] = label;
+    ++it->second[2];
+  }
+  std::vector<std::array<int, 2>> ranges;
+  for (const auto& [root, g] : groups) {
+    if (g[1] - g[0] + 1 != g[2])
+      lex.fail("the labels of the component through label " + std::to_string(g[0]) +
+               " are not consecutive (each component's edges are numbered in a row along it)");
+    if (g[2] < 2) lex.fail("edge " + std::to_string(g[0]) + " is a component of one edge (a kink closed on itself)");
+    ranges.push_back({g[0], g[1]});
+  }
+  std::sort(ranges.begin(), ranges.end());
+  return ranges;
+}
+
+/// The over strands of the two-edge components ({l, l'}, each the other's
+/// successor), which the labels leave unordered: an edge that ends as an
+/// under strand's a elsewhere leaves here, one that starts as a c elsewhere
+/// enters here, and one whose other end is an oriented over strand follows
+/// it. A component that only passes over has no such end: its orientation is
+/// a choice, made by sending its smaller label into the first crossing that
+/// lists it.
+void orient_two_edge_components(PDLinkCode& out, const std::vector<int>& under_role) {
+  const int c = out.code.size(), m = 2 * c;
+  std::vector<std::vector<int>> over_at(static_cast<size_t>(m + 1));
+  for (int i = 0; i < c; ++i)
+    for (int slot : {1, 3}) over_at[static_cast<size_t>(out.code.crossings[static_cast<size_t>(i)].e[static_cast<size_t>(slot)])].push_back(i);
+  // +1: `label` enters crossing i, -1: it leaves i, 0: not known yet
+  const auto direction = [&](int label, int i) {
+    if (under_role[static_cast<size_t>(label)] != 0) return -under_role[static_cast<size_t>(label)];
+    for (int j : over_at[static_cast<size_t>(label)])
+      if (j != i && out.over_in[static_cast<size_t>(j)] != 0) return out.over_in[static_cast<size_t>(j)] == label ? -1 : +1;
+    return 0;
+  };
+  for (;;) {
+    bool changed = false;
+    for (int i = 0; i < c; ++i) {
+      if (out.over_in[static_cast<size_t>(i)] != 0) continue;
+      const auto& e = out.code.crossings[static_cast<size_t>(i)].e;
+      const int db = direction(e[1], i), dd = direction(e[3], i);
+      if (db == +1 || dd == -1) out.over_in[static_cast<size_t>(i)] = e[1];
+      else if (db == -1 || dd == +1) out.over_in[static_cast<size_t>(i)] = e[3];
+      else continue;
+      changed = true;
+    }
+    if (changed) continue;
+    int open = -1;
+    for (int i = 0; i < c && open < 0; ++i)
+      if (out.over_in[static_cast<size_t>(i)] == 0) open = i;
+    if (open < 0) return;
+    const auto& e = out.code.crossings[static_cast<size_t>(open)].e;
+    out.over_in[static_cast<size_t>(open)] = std::min(e[1], e[3]);
+  }
+}
+
+}  // namespace
+
+PDLinkCode parse_pd_link(const std::string& text) {
+  Lexer lex(text, "PD code");
+  PDLinkCode out;
+  out.code = read_pd_groups(lex);
+  out.components = pd_label_ranges(out.code, lex);
+  const int c = out.code.size(), m = 2 * c;
+  std::vector<std::array<int, 2>> range_of(static_cast<size_t>(m + 1));
+  for (const auto& r : out.components)
+    for (int label = r[0]; label <= r[1]; ++label) range_of[static_cast<size_t>(label)] = r;
+  const auto succ = [&](int x) { return x == range_of[static_cast<size_t>(x)][1] ? range_of[static_cast<size_t>(x)][0] : x + 1; };
+  const auto size = [&](int x) { return range_of[static_cast<size_t>(x)][1] - range_of[static_cast<size_t>(x)][0] + 1; };
+  // where each label ends (+1: as the under strand's a) or starts (-1: as c) outside the over strands
+  std::vector<int> under_role(static_cast<size_t>(m + 1), 0);
+  out.over_in.assign(static_cast<size_t>(c), 0);
+  for (int i = 0; i < c; ++i) {
+    const auto& e = out.code.crossings[static_cast<size_t>(i)].e;
+    if (succ(e[0]) != e[2])
+      lex.fail(crossing_text(out.code, i) + ": under-strand edges " + std::to_string(e[0]) + " -> " +
+               std::to_string(e[2]) + " are not consecutive labels");
+    under_role[static_cast<size_t>(e[0])] = +1;
+    under_role[static_cast<size_t>(e[2])] = -1;
+    if (size(e[1]) >= 3) {  // the labels order the over strand
+      if (succ(e[1]) == e[3]) out.over_in[static_cast<size_t>(i)] = e[1];
+      else if (succ(e[3]) == e[1]) out.over_in[static_cast<size_t>(i)] = e[3];
+      else lex.fail(crossing_text(out.code, i) + ": over-strand edges " + std::to_string(e[1]) + ", " +
+                    std::to_string(e[3]) + " are not consecutive labels");
+    }
+  }
+  orient_two_edge_components(out, under_role);
+  std::vector<int> incoming(static_cast<size_t>(m + 1), 0);
+  for (int i = 0; i < c; ++i) {
+    ++incoming[static_cast<size_t>(out.code.crossings[static_cast<size_t>(i)].e[0])];
+    ++incoming[static_cast<size_t>(out.over_in[static_cast<size_t>(i)])];
+  }
+  for (int label = 1; label <= m; ++label)
+    if (incoming[static_cast<size_t>(label)] != 1)
+      lex.fail("edge " + std::to_string(label) + " enters " + std::to_string(incoming[static_cast<size_t>(label)]) +
+               " crossings (the orientation of the labels is inconsistent)");
+  return out;
 }
 
 std::vector<std::vector<int>> closure_cycles(const BraidWord& word) {

@@ -66,6 +66,56 @@ LinkDiagram link_diagram_from_braid(const BraidWord& word) {
   return d;
 }
 
+LinkDiagram link_diagram_from_pd(const PDLinkCode& pd) {
+  const int c = pd.code.size(), m = 2 * c;
+  LinkDiagram d;
+  std::vector<GaussDiagram::Visit> enters(static_cast<size_t>(m + 1), {-1, false});  // where edge `label` ends
+  for (int i = 0; i < c; ++i) {
+    d.signs.push_back(pd.sign(i));
+    enters[static_cast<size_t>(pd.code.crossings[static_cast<size_t>(i)].e[0])] = {i, false};
+    enters[static_cast<size_t>(pd.over_in[static_cast<size_t>(i)])] = {i, true};
+  }
+  for (const auto& r : pd.components) {
+    std::vector<GaussDiagram::Visit> visits;
+    for (int label = r[0]; label <= r[1]; ++label) {
+      require(enters[static_cast<size_t>(label)].crossing >= 0, "link_diagram_from_pd: PD code was not validated");
+      visits.push_back(enters[static_cast<size_t>(label)]);
+    }
+    d.components.push_back(std::move(visits));
+  }
+  return d;
+}
+
+PDLinkCode pd_from_braid(const BraidWord& word) {
+  const LinkDiagram d = link_diagram_from_braid(word);
+  PDLinkCode out;
+  out.code.crossings.resize(d.signs.size());
+  out.over_in.resize(d.signs.size());
+  // edge base + p enters the component's visit p and leaves visit p - 1
+  int base = 1;
+  for (const auto& visits : d.components) {
+    const int n = static_cast<int>(visits.size());
+    require_input(n > 0, "a braid closure with a component that meets no letter (a split circle) has no PD code");
+    out.components.push_back({base, base + n - 1});
+    for (int p = 0; p < n; ++p) {
+      const auto& v = visits[static_cast<size_t>(p)];
+      const int in = base + p, out_label = base + (p + 1) % n;
+      auto& e = out.code.crossings[static_cast<size_t>(v.crossing)].e;
+      const bool positive = d.signs[static_cast<size_t>(v.crossing)] > 0;
+      if (!v.over) {
+        e[0] = in;
+        e[2] = out_label;
+      } else {  // a positive crossing's over strand runs d -> b
+        e[positive ? 3 : 1] = in;
+        e[positive ? 1 : 3] = out_label;
+        out.over_in[static_cast<size_t>(v.crossing)] = in;
+      }
+    }
+    base += n;
+  }
+  return out;
+}
+
 GaussDiagram component_diagram(const LinkDiagram& d, int k) {
   require(k >= 0 && k < static_cast<int>(d.components.size()), "component_diagram: no component " + std::to_string(k));
   std::vector<int> count(d.signs.size(), 0);

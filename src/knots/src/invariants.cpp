@@ -47,6 +47,15 @@ LinkType link_type(const Link& link) {
   return t;
 }
 
+LinkType link_type(const LinkDiagram& diagram) {
+  LinkType t;
+  for (int k = 0; k < static_cast<int>(diagram.components.size()); ++k)
+    t.alexander.push_back(alexander(component_diagram(diagram, k)));
+  t.linking_numbers = linking_numbers(diagram);
+  t.conway = conway(diagram);
+  return t;
+}
+
 LinkInvariants link_invariants(const Link& link) {
   require_input(link.size() >= 2, "link invariants: a link needs at least 2 components");
   LinkInvariants out;

@@ -36,6 +36,7 @@ Json link_info_json(const LinkRecord& l) {
   j["crossing_number"] = l.crossing_number;
   j["braid"] = to_string(l.braid);
   j["braid_strands"] = l.braid.strands;
+  j["pd"] = to_string(l.pd().code);
   j["component_types"] = l.component_types;
   j["linking_numbers"] = integer_matrix_json(l.linking_matrix());
   j["conway"] = l.conway.coefficients;

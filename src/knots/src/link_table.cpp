@@ -14,6 +14,8 @@ Eigen::MatrixXi LinkRecord::linking_matrix() const {
 
 std::optional<int> LinkRecord::milnor_triple() const { return milnor_triple_linking(conway, linking_matrix()); }
 
+PDLinkCode LinkRecord::pd() const { return pd_from_braid(braid); }
+
 const std::vector<LinkRecord>& link_table() {
   // Conway polynomials as the Knot Atlas and LinkInfo list them, and as
   // they follow by hand: T(2, n) from the skein relation

@@ -140,6 +140,17 @@ LinkEmbedding embed_braid_link(const BraidWord& word, const EmbeddingOptions& op
 /// code whose diagram is not planar or has a nugatory crossing.
 Embedding embed_pd(const PDCode& pd, const EmbeddingOptions& options = {});
 
+/// A link's PD code (parse_pd_link, at least 2 components) drawn as
+/// embed_pd() draws a knot's: one Tutte layout of the diagram, each
+/// component traced through its labels, then finished as embed_braid_link()
+/// finishes a braid (vertices shared by length, equal edges, one scale).
+/// With options.verify the polygons' link type (components' Alexander
+/// polynomials, linking numbers, ∇) must equal the code's, and the best of a
+/// few reweighting rounds by the components' clearance is kept. Throws
+/// InputError for a code of one component, a non-planar or split diagram,
+/// and when no drawing keeps the link type (use more vertices).
+LinkEmbedding embed_pd_link(const PDLinkCode& pd, const EmbeddingOptions& options = {});
+
 /// Which code an embedding of a table knot is built from.
 enum class EmbeddingSource { Braid, PD };
 EmbeddingSource parse_embedding_source(const std::string& text);  ///< "braid" | "pd"; InputError otherwise

@@ -57,6 +57,28 @@ DTCode parse_dt(const std::string& text);
 /// edges form one closed strand (a knot).
 PDCode parse_pd(const std::string& text);
 
+/// PD code of a knot or a link (KnotInfo's and LinkInfo's convention): the
+/// crossings as for a knot, the edge labels 1..2c, each component's labels
+/// a range of consecutive integers in the order of its orientation (its
+/// last label followed by its first). A knot's code is one range [1, 2c].
+struct PDLinkCode {
+  PDCode code;
+  std::vector<std::array<int, 2>> components;  ///< [first, last] label of each component, by first label
+  std::vector<int> over_in;                    ///< per crossing: the over strand's incoming label, b or d
+  /// +1 when the over strand runs d -> b (a right-handed crossing, as PDCrossing::sign), -1 otherwise.
+  int sign(int crossing) const;
+};
+
+/// Parses a PD code of a knot or a link. Checks those of parse_pd() for the
+/// groups and labels; the components are the label sets that the strands
+/// join (a with c, b with d), each a range of consecutive labels of at least
+/// two edges; at every crossing a -> c, and b, d in one order or the other,
+/// are consecutive in their component, and every edge enters exactly one
+/// crossing. A component of two edges does not order its over strands by
+/// the labels: they are oriented from its under crossings, or, when it only
+/// passes over, by sending its smaller label into the first crossing listing it.
+PDLinkCode parse_pd_link(const std::string& text);
+
 /// Parses a braid word. Checks: non-empty; no letter 0. The number of strands
 /// is 1 + max |letter| unless `strands` > 0 is given (then every |letter| must
 /// be < strands). The closure must be a knot (one component): the braid's

@@ -71,6 +71,18 @@ LinkDiagram link_diagram_from_curves(const Link& link, const ProjectionOptions& 
 /// word's letters as in diagram_from_braid().
 LinkDiagram link_diagram_from_braid(const BraidWord& word);
 
+/// The diagram of a knot's or link's PD code (parse_pd_link): one component
+/// per label range, visits in label order (each crossing where a label's edge
+/// ends), signs from the over strands' orientation.
+LinkDiagram link_diagram_from_pd(const PDLinkCode& pd);
+
+/// The PD code of a braid's closure (LinkInfo's convention, so that
+/// parse_pd_link reads it back): the components in the order of
+/// closure_cycles(), each labelled in a row along its orientation from the
+/// edge that enters its first visit in the word. InputError when a component
+/// meets no letter (a split circle has no PD code).
+PDLinkCode pd_from_braid(const BraidWord& word);
+
 /// Component k of a link diagram alone: its visits with the crossings it
 /// shares with other components dropped and the rest renumbered densely.
 GaussDiagram component_diagram(const LinkDiagram& diagram, int k);

@@ -63,6 +63,11 @@ struct LinkType {
 /// the Gauss sums rounded, the link's projection).
 LinkType link_type(const Link& link);
 
+/// The link type of a diagram (for example link_diagram_from_pd()): each
+/// component alone (component_diagram), the half signed crossings between
+/// components, ∇ of the diagram.
+LinkType link_type(const LinkDiagram& diagram);
+
 /// The invariants of a link (validate_link: disjoint components, each a
 /// simple polygon). Throws InputError for a link of one component (use
 /// curve_invariants) and as curve_invariants does.

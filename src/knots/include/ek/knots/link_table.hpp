@@ -34,6 +34,10 @@ struct LinkRecord {
   Eigen::MatrixXi linking_matrix() const;
   /// |μ̄(123)| when defined (three components, vanishing linking numbers).
   std::optional<int> milnor_triple() const;
+  /// The PD code of the braid's closure (pd_from_braid(), LinkInfo's
+  /// labelling convention); the tests check its link type against the
+  /// entry's.
+  PDLinkCode pd() const;
 };
 
 /// Every entry, in order of crossing number.
