@@ -8,6 +8,7 @@ import shutil
 import subprocess
 import tempfile
 import time
+import unittest
 
 from selenium import webdriver
 from selenium.webdriver.chrome.service import Service
@@ -92,3 +93,25 @@ def wait_for(predicate, timeout=30, step=0.1):
             return value
         time.sleep(step)
     raise AssertionError("timed out")
+
+
+class ExplorerCase(unittest.TestCase):
+    """Tests of the explorer of the data set EK_EXPLORER_DATASET, served by
+    `knots serve` (EK_KNOTS) to one browser for the whole class; skipped when
+    the data set is missing (its CTest fixture builds it)."""
+
+    dataset = os.environ.get("EK_EXPLORER_DATASET", "")
+    knots_bin = os.environ.get("EK_KNOTS", "knots")
+
+    @classmethod
+    def setUpClass(cls):
+        if not cls.dataset or not os.path.exists(cls.dataset):
+            raise unittest.SkipTest("EK_EXPLORER_DATASET is not a file (the fixture builds it)")
+        cls.server = Server(cls.knots_bin, cls.dataset)
+        cls.browser = Browser()
+        cls.d = cls.browser.driver
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.browser.close()
+        cls.server.stop()

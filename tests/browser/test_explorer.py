@@ -27,7 +27,7 @@ from selenium.webdriver.common.by import By
 from selenium.webdriver.common.keys import Keys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from explorer_driver import Browser, Server, wait_for  # noqa: E402
+from explorer_driver import ExplorerCase, wait_for  # noqa: E402
 
 KNOTS = os.environ.get("EK_KNOTS", "knots")
 DATASET = os.environ.get("EK_EXPLORER_DATASET", "")
@@ -51,23 +51,14 @@ def dataset_facts():
     return names, facts
 
 
-class Explorer(unittest.TestCase):
+class Explorer(ExplorerCase):
     @classmethod
     def setUpClass(cls):
-        if not DATASET or not os.path.exists(DATASET):
-            raise unittest.SkipTest("EK_EXPLORER_DATASET is not a file (the fixture builds it)")
+        super().setUpClass()
         cls.names, cls.facts = dataset_facts()
         # the knot with the most distinct states (then equilibria), for the per-knot views
         cls.knot = max(cls.names, key=lambda n: (len(knots_json("cluster", DATASET, n, "--cut", "0.02")["clusters"])
                                                  if cls.facts[n]["m"] else 0, cls.facts[n]["m"]))
-        cls.server = Server(KNOTS, DATASET)
-        cls.browser = Browser()
-        cls.d = cls.browser.driver
-
-    @classmethod
-    def tearDownClass(cls):
-        cls.browser.close()
-        cls.server.stop()
 
     def shot(self, name, element=None):
         if SHOTS:

@@ -13,28 +13,15 @@ from PIL import Image
 from selenium.webdriver.common.by import By
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from explorer_driver import Browser, Server, wait_for  # noqa: E402
-
-KNOTS = os.environ.get("EK_KNOTS", "knots")
-DATASET = os.environ.get("EK_EXPLORER_DATASET", "")
-class LinkExplorer(unittest.TestCase):
-
+from explorer_driver import ExplorerCase, wait_for  # noqa: E402
+class LinkExplorer(ExplorerCase):
     @classmethod
     def setUpClass(cls):
-        if not DATASET or not os.path.exists(DATASET):
-            raise unittest.SkipTest("EK_EXPLORER_DATASET is not a file (the fixture builds it)")
-        with h5py.File(DATASET, "r") as f:
+        super().setUpClass()
+        with h5py.File(cls.dataset, "r") as f:
             g = f["knots"]["borromean"]
             cls.components = [int(c) for c in g.attrs["components"]]
             cls.P = np.array(g["equilibria"][0])
-        cls.server = Server(KNOTS, DATASET)
-        cls.browser = Browser()
-        cls.d = cls.browser.driver
-
-    @classmethod
-    def tearDownClass(cls):
-        cls.browser.close()
-        cls.server.stop()
 
     def test_components_in_their_own_colours_and_loops(self):
         self.browser.go(self.server.url + "#/view/borromean/0", "view")

@@ -353,16 +353,20 @@ KnotEntry entry_header(const KnotRecord& knot, const ExploreOptions& o) {
   return entry;
 }
 
-// The BFACF walk of one knot. Sample k continues the walk from sample k - 1
-// with its own seed derived from (knot seed, k): the samples do not depend on
-// how they are batched, so an adaptive run uses exactly the first samples of a
+// The BFACF walk of one knot or link (State: its lattice polygon, or one
+// polygon per component). Sample k continues the walk from sample k - 1 with
+// its own seed derived from (knot seed, k): the samples do not depend on how
+// they are batched, so an adaptive run uses exactly the first samples of a
 // fixed-budget run. With a burn-in the walk first makes o.burn_in samples
 // (walk indices 0 .. burn_in - 1) and drops them; sample k is walk sample
-// burn_in + k.
+// burn_in + k. step(state, options) makes the next state (options.count = 1,
+// options.seed set).
+template <class State>
 class SampleWalk {
  public:
-  SampleWalk(const LatticeStart& start, const ExploreOptions& o, std::uint64_t seed, const std::string& name)
-      : start_(start), o_(o), seed_(seed), name_(name), last_(start.points) {}
+  using Step = std::function<State(const State&, const SampleOptions&)>;
+  SampleWalk(State start, const ExploreOptions& o, std::uint64_t seed, Step step)
+      : o_(o), seed_(seed), step_(std::move(step)), last_(std::move(start)) {}
 
   // Appends the next `count` samples to samples().
   void generate(int count) {
@@ -372,24 +376,22 @@ class SampleWalk {
       samples_.push_back(last_);
     }
   }
-  const std::vector<LatticePoints>& samples() const { return samples_; }
+  const std::vector<State>& samples() const { return samples_; }
 
  private:
   void next_sample() {
     SampleOptions so = o_.sampling;
     so.count = 1;
     so.seed = sample_seed(seed_, walk_index_++);
-    SampleBatch b = sample_lattice_polygons(last_, so, start_.alexander, name_);
-    last_ = std::move(b.samples.front());
+    last_ = step_(last_, so);
   }
 
-  const LatticeStart& start_;
   const ExploreOptions& o_;
   std::uint64_t seed_;
-  std::string name_;
-  LatticePoints last_;
+  Step step_;
+  State last_;
   int walk_index_ = 0;
-  std::vector<LatticePoints> samples_;
+  std::vector<State> samples_;
 };
 
 // The runs of one knot, keyed by sample index: those of the journal, then the
@@ -484,7 +486,9 @@ KnotEntry explore_knot(const KnotRecord& knot, const ExploreOptions& options, co
 
   const LatticeStart start = lattice_start(knot, o.start);
   entry.alexander = start.alexander.coefficients;
-  SampleWalk walk(start, o, seed, knot.name);
+  SampleWalk<LatticePoints> walk(start.points, o, seed, [&](const LatticePoints& last, const SampleOptions& so) {
+    return std::move(sample_lattice_polygons(last, so, start.alexander, knot.name).samples.front());
+  });
   AdaptiveScorer scorer(o);
 
   const auto relax_samples = [&](int begin, int end) {
@@ -610,43 +614,6 @@ JournalRun run_link_one(const Link& sample, int index, std::uint64_t seed, const
   return out;
 }
 
-/// The BFACF walk of one link: sample k continues from sample k − 1 with the
-/// seed sample_seed(link seed, burn_in + k), as SampleWalk for knots.
-class LinkSampleWalk {
- public:
-  LinkSampleWalk(const LatticeLinkStart& start, const ExploreOptions& o, std::uint64_t seed, const std::string& name)
-      : start_(start), o_(o), seed_(seed), name_(name), last_(start.components) {}
-
-  void generate(int count) {
-    while (walk_index_ < o_.burn_in) next_sample();
-    for (int c = 0; c < count; ++c) {
-      next_sample();
-      samples_.push_back(to_link(last_));
-    }
-  }
-  const std::vector<Link>& samples() const { return samples_; }
-  const std::vector<int>& component_vertices() const { return sizes_; }
-
- private:
-  void next_sample() {
-    SampleOptions so = o_.sampling;
-    so.count = 1;
-    so.seed = sample_seed(seed_, walk_index_++);
-    LinkSampleBatch b = sample_lattice_link(last_, so, start_.type, name_);
-    last_ = std::move(b.samples.front());
-    sizes_ = b.component_vertices;
-  }
-
-  const LatticeLinkStart& start_;
-  const ExploreOptions& o_;
-  std::uint64_t seed_;
-  std::string name_;
-  std::vector<LatticePoints> last_;
-  std::vector<int> sizes_;
-  int walk_index_ = 0;
-  std::vector<Link> samples_;
-};
-
 }  // namespace
 
 const std::vector<std::string>& link_attribute_names() {
@@ -680,11 +647,15 @@ KnotEntry explore_link(const LinkRecord& link, const ExploreOptions& o, const st
   runs.on_run = &on_run;
 
   const LatticeLinkStart start = lattice_link_start(link);
-  LinkSampleWalk walk(start, o, seed, link.name);
+  using Polygons = std::vector<LatticePoints>;
+  SampleWalk<Polygons> walk(start.components, o, seed, [&](const Polygons& last, const SampleOptions& so) {
+    LinkSampleBatch b = sample_lattice_link(last, so, start.type, link.name);
+    entry.components = b.component_vertices;
+    return std::move(b.samples.front());
+  });
   walk.generate(o.samples);
-  entry.components = walk.component_vertices();
   relax_range(0, o.samples, o, runs, [&](int k) {
-    return run_link_one(walk.samples()[static_cast<size_t>(k)], k, sample_seed(seed, o.burn_in + k), o);
+    return run_link_one(to_link(walk.samples()[static_cast<size_t>(k)]), k, sample_seed(seed, o.burn_in + k), o);
   });
   entry.samples_used = o.samples;
   const AttributeOptions ao = attribute_options(o);

@@ -86,6 +86,11 @@ export function tubeGeometry(points, radius, colors, components = [points.length
       q += 6;
     }
   }
+  return indexedGeometry(pos, nor, col, index);
+}
+
+/** An indexed BufferGeometry of positions, normals and colours (3 floats per vertex). */
+function indexedGeometry(pos, nor, col, index) {
   const g = new THREE.BufferGeometry();
   g.setAttribute("position", new THREE.BufferAttribute(pos, 3));
   g.setAttribute("normal", new THREE.BufferAttribute(nor, 3));
@@ -116,12 +121,7 @@ function mergedTubes(points, radius, colors, components) {
     q += idx.length;
     g.dispose();
   }
-  const g = new THREE.BufferGeometry();
-  g.setAttribute("position", new THREE.BufferAttribute(pos, 3));
-  g.setAttribute("normal", new THREE.BufferAttribute(nor, 3));
-  g.setAttribute("color", new THREE.BufferAttribute(col, 3));
-  g.setIndex(new THREE.BufferAttribute(index, 1));
-  return g;
+  return indexedGeometry(pos, nor, col, index);
 }
 
 export class TubeViewer {
