@@ -180,7 +180,7 @@ TEST(Cli, InvariantsOfALink) {
 // The link table from the command line: `knots info` of a link by name and
 // by alias (text and JSON: components, their types, linking numbers, ∇,
 // |μ̄(123)|); `knots embed NAME` of a link writes its components, whose
-// invariants are the table's; --from pd is refused for a link.
+// invariants are the table's, also drawn from its PD code (--from pd).
 TEST(Cli, InfoAndEmbedOfATableLink) {
   const auto j = run("info L6a4 --json");
   ASSERT_EQ(j.status, 0) << j.err;
@@ -201,7 +201,11 @@ TEST(Cli, InfoAndEmbedOfATableLink) {
   ASSERT_EQ(inv.status, 0) << inv.err;
   EXPECT_EQ(inv.json().at("conway"), nlohmann::json::parse("[0,0,0,1]"));  // not the unlink's []
   EXPECT_EQ(inv.json().at("linking_numbers"), nlohmann::json::parse("[[0,0],[0,0]]"));
-  expect_bad_input("embed hopf --from pd -o " + dir + "/h.obj", "--from pd applies to knots");
+  const auto pd = run("embed hopf --from pd -n 160 -o " + dir + "/h.obj --json");  // the drawing of its PD code
+  ASSERT_EQ(pd.status, 0) << pd.err;
+  EXPECT_EQ(pd.json().at("from"), "pd");
+  EXPECT_EQ(pd.json().at("conway"), nlohmann::json::parse("[0,1]"));
+  expect_bad_input("embed hopf --from dt -o " + dir + "/h.obj", "unknown embedding source 'dt'");
   std::filesystem::remove_all(dir);
 }
 
