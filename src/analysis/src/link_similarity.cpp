@@ -13,11 +13,8 @@ namespace {
 Eigen::MatrixXd relative_centroid_distances(const Link& link) {
   const Eigen::Index m = static_cast<Eigen::Index>(link.size());
   std::vector<Vec3> c;
-  double length = 0.0;
-  for (const Points& P : link) {
-    c.push_back(P.colwise().mean().transpose());
-    length += curve_length(P) / static_cast<double>(m);
-  }
+  for (const Points& P : link) c.push_back(P.colwise().mean().transpose());
+  const double length = mean_component_length(link);
   Eigen::MatrixXd D(m, m);
   for (Eigen::Index i = 0; i < m; ++i)
     for (Eigen::Index j = 0; j < m; ++j) D(i, j) = (c[static_cast<size_t>(i)] - c[static_cast<size_t>(j)]).norm() / length;

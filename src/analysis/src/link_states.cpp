@@ -11,12 +11,6 @@
 namespace ek {
 namespace {
 
-double polygon_length(const Points& p) {
-  double s = 0.0;
-  for (Eigen::Index i = 0; i < p.rows(); ++i) s += (p.row((i + 1) % p.rows()) - p.row(i)).norm();
-  return s;
-}
-
 /// Quantiles of a component's point distances divided by `scale`.
 Eigen::VectorXd distance_quantiles(const Points& resampled, double scale, int quantiles) {
   const Eigen::Index q = resampled.rows();
@@ -47,12 +41,8 @@ void LinkShapeOptions::validate() const {
 LinkShape link_shape(const Link& link, const LinkShapeOptions& options) {
   options.validate();
   require_input(!link.empty(), "link shape: a link needs at least one component");
-  double total = 0.0;
-  for (const Points& c : link) {
-    require_input(c.rows() >= 3, "link shape: every component needs at least 3 vertices");
-    total += polygon_length(c);
-  }
-  const double scale = total / static_cast<double>(link.size());
+  for (const Points& c : link) require_input(c.rows() >= 3, "link shape: every component needs at least 3 vertices");
+  const double scale = mean_component_length(link);
   require_input(std::isfinite(scale) && scale > 0.0, "link shape: components need a positive finite length");
   LinkShape out;
   for (const Points& c : link)

@@ -54,6 +54,20 @@ int write_embedded_link(const LinkEmbedding& e, const std::string& from, const s
   return 0;
 }
 
+/// A knot's polygon: written, summarised (`what` says where it came from).
+int write_embedded_knot(const Embedding& e, const std::string& name, const std::string& what, const std::string& out,
+                        bool json) {
+  write_curve(out, e.points);
+  if (json) {
+    print_json(embedding_json(name, e, out));
+    return 0;
+  }
+  std::cout << "wrote " << out << ": " << what << ", " << e.points.rows() << " vertices, edge length "
+            << fmt(e.edge_length) << ", clearance " << fmt(e.clearance) << ", Alexander " << e.alexander->to_string()
+            << "\n";
+  return 0;
+}
+
 }  // namespace
 
 int cmd_embed(int argc, char** argv) {
@@ -110,46 +124,28 @@ int cmd_embed(int argc, char** argv) {
   if (!pd.empty()) {
     const PDLinkCode code = parse_pd_link(pd);
     if (code.components.size() > 1) return write_embedded_link(embed_pd_link(code, opt), "pd", to_string(code.code), nullptr, out, json);
-    const Embedding e = embed_pd(parse_pd(pd), opt);
-    write_curve(out, e.points);
-    if (json) print_json(embedding_json("pd " + to_string(code.code), e, out));
-    else
-      std::cout << "wrote " << out << ": the PD code " << to_string(code.code) << ", " << e.points.rows()
-                << " vertices, edge length " << fmt(e.edge_length) << ", clearance " << fmt(e.clearance)
-                << ", Alexander " << e.alexander->to_string() << "\n";
-    return 0;
+    const std::string text = to_string(code.code);
+    return write_embedded_knot(embed_pd(parse_pd(pd), opt), "pd " + text, "the PD code " + text, out, json);
   }
   if (!braid.empty()) {
     const bool braced = braid.find_first_not_of(" \t") != std::string::npos && braid[braid.find_first_not_of(" \t")] == '{';
     const BraidWord word = parse_braid_word(braced ? braid : "{" + braid + "}", strands);
     if (closure_components(word) > 1)
       return write_embedded_link(embed_braid_link(word, opt), "braid", to_string(word), nullptr, out, json);
-    const Embedding e = embed_braid(word, opt);
-    write_curve(out, e.points);
-    if (json) print_json(embedding_json("braid " + to_string(word), e, out));
-    else
-      std::cout << "wrote " << out << ": the closure of " << to_string(word) << ", " << e.points.rows()
-                << " vertices, edge length " << fmt(e.edge_length) << ", clearance " << fmt(e.clearance)
-                << ", Alexander " << e.alexander->to_string() << "\n";
-    return 0;
+    return write_embedded_knot(embed_braid(word, opt), "braid " + to_string(word), "the closure of " + to_string(word),
+                               out, json);
   }
   const std::string& name = names[0];
   if (const LinkRecord* link = find_link(name)) {
-    if (parse_embedding_source(from) == EmbeddingSource::PD)
-      return write_embedded_link(embed_pd_link(link->pd(), opt), "pd", to_string(link->pd().code), link, out, json);
+    if (parse_embedding_source(from) == EmbeddingSource::PD) {
+      const PDLinkCode code = link->pd();
+      return write_embedded_link(embed_pd_link(code, opt), "pd", to_string(code.code), link, out, json);
+    }
     return write_embedded_link(embed_braid_link(link->braid, opt), "braid", to_string(link->braid), link, out, json);
   }
   const KnotRecord& knot = KnotTable::global().at(name);
   const Embedding e = embed_knot(knot, parse_embedding_source(from), opt);
-  write_curve(out, e.points);
-  if (json) {
-    print_json(embedding_json(knot.name, e, out));
-  } else {
-    std::cout << "wrote " << out << ": " << knot.name << " from " << e.method << ", " << e.points.rows()
-              << " vertices, edge length " << fmt(e.edge_length) << ", clearance " << fmt(e.clearance)
-              << ", Alexander " << e.alexander->to_string() << "\n";
-  }
-  return 0;
+  return write_embedded_knot(e, knot.name, knot.name + " from " + e.method, out, json);
 }
 
 }  // namespace ek::cli

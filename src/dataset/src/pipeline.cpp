@@ -397,8 +397,17 @@ class SampleWalk {
 // The runs of one knot, keyed by sample index: those of the journal, then the
 // new ones, each appended to the journal as it finishes.
 struct KnotRuns {
+  /// Opens the journal at `journal_path` (none when empty) with the key of
+  /// `name` and `o`, and takes the runs it already holds.
+  KnotRuns(const std::string& journal_path, const std::string& name, const ExploreOptions& o,
+           const RunCallback& callback)
+      : on_run(&callback) {
+    if (journal_path.empty()) return;
+    journal = std::make_unique<Journal>(journal_path, options_text(name, o));
+    done = journal->runs();
+  }
   std::map<int, JournalRun> done;
-  Journal* journal = nullptr;
+  std::unique_ptr<Journal> journal;
   const RunCallback* on_run = nullptr;
   std::mutex mutex;
 };
@@ -477,12 +486,7 @@ KnotEntry explore_knot(const KnotRecord& knot, const ExploreOptions& options, co
   KnotEntry entry = entry_header(knot, o);
   const std::uint64_t seed = knot_seed(o.seed, knot.name);
 
-  std::unique_ptr<Journal> journal;
-  if (!journal_path.empty()) journal = std::make_unique<Journal>(journal_path, options_text(knot.name, o));
-  KnotRuns runs;
-  if (journal) runs.done = journal->runs();
-  runs.journal = journal.get();
-  runs.on_run = &on_run;
+  KnotRuns runs(journal_path, knot.name, o, on_run);
 
   const LatticeStart start = lattice_start(knot, o.start);
   entry.alexander = start.alexander.coefficients;
@@ -639,21 +643,15 @@ KnotEntry explore_link(const LinkRecord& link, const ExploreOptions& o, const st
   entry.alexander = {1};
   const std::uint64_t seed = knot_seed(o.seed, link.name);
 
-  std::unique_ptr<Journal> journal;
-  if (!journal_path.empty()) journal = std::make_unique<Journal>(journal_path, options_text(link.name, o));
-  KnotRuns runs;
-  if (journal) runs.done = journal->runs();
-  runs.journal = journal.get();
-  runs.on_run = &on_run;
+  KnotRuns runs(journal_path, link.name, o, on_run);
 
   const LatticeLinkStart start = lattice_link_start(link);
   using Polygons = std::vector<LatticePoints>;
   SampleWalk<Polygons> walk(start.components, o, seed, [&](const Polygons& last, const SampleOptions& so) {
-    LinkSampleBatch b = sample_lattice_link(last, so, start.type, link.name);
-    entry.components = b.component_vertices;
-    return std::move(b.samples.front());
+    return std::move(sample_lattice_link(last, so, start.type, link.name).samples.front());
   });
-  walk.generate(o.samples);
+  walk.generate(o.samples);  // o.samples >= 1: every sample has the components' target lengths
+  for (const LatticePoints& polygon : walk.samples().front()) entry.components.push_back(static_cast<int>(polygon.rows()));
   relax_range(0, o.samples, o, runs, [&](int k) {
     return run_link_one(to_link(walk.samples()[static_cast<size_t>(k)]), k, sample_seed(seed, o.burn_in + k), o);
   });

@@ -6,10 +6,17 @@
 
 #include "ek/core/errors.hpp"
 #include "ek/geometry/curve_io.hpp"
+#include "ek/geometry/polyline.hpp"
 #include "ek/geometry/segment_distance.hpp"
 #include "ek/geometry/writhe.hpp"
 
 namespace ek {
+
+double mean_component_length(const Link& link) {
+  double total = 0.0;
+  for (const Points& P : link) total += curve_length(P);
+  return link.empty() ? 0.0 : total / static_cast<double>(link.size());
+}
 
 Points all_vertices(const Link& link) {
   Eigen::Index rows = 0;

@@ -191,33 +191,51 @@ std::string crossing_text(const PDCode& code, int i) {
          std::to_string(e[2]) + ";" + std::to_string(e[3]) + "]";
 }
 
-}  // namespace
-
-PDCode parse_pd(const std::string& text) {
-  Lexer lex(text, "PD code");
-  const PDCode code = read_pd_groups(lex);
-  const int c = code.size(), m = 2 * c;
-  auto succ = [m](int x) { return x % m + 1; };
-  // Each edge label must leave one crossing and enter another: incoming edges
-  // are a (under) and the over-strand's tail; outgoing are c and the head.
-  std::vector<int> incoming(static_cast<size_t>(m + 1), 0);
-  for (int i = 0; i < c; ++i) {
+/// The strand checks of knot and link codes, with succ(x) the label after x
+/// along its component: at every crossing a -> c are consecutive, and b, d
+/// in one order or the other. Returns each crossing's incoming over label, 0
+/// where both orders hold (a component of two edges).
+std::vector<int> check_strands(const PDCode& code, const std::function<int(int)>& succ, const Lexer& lex) {
+  std::vector<int> over_in(static_cast<size_t>(code.size()), 0);
+  for (int i = 0; i < code.size(); ++i) {
     const auto& e = code.crossings[static_cast<size_t>(i)].e;
-    const std::string xs = crossing_text(code, i);
     if (succ(e[0]) != e[2])
-      lex.fail(xs + ": under-strand edges " + std::to_string(e[0]) + " -> " + std::to_string(e[2]) +
-               " are not consecutive labels");
-    if (succ(e[1]) != e[3] && succ(e[3]) != e[1])
-      lex.fail(xs + ": over-strand edges " + std::to_string(e[1]) + ", " + std::to_string(e[3]) +
-               " are not consecutive labels");
-    ++incoming[static_cast<size_t>(e[0])];
-    const int over_in = (succ(e[3]) == e[1]) ? e[3] : e[1];
-    ++incoming[static_cast<size_t>(over_in)];
+      lex.fail(crossing_text(code, i) + ": under-strand edges " + std::to_string(e[0]) + " -> " +
+               std::to_string(e[2]) + " are not consecutive labels");
+    const bool b_to_d = succ(e[1]) == e[3], d_to_b = succ(e[3]) == e[1];
+    if (!b_to_d && !d_to_b)
+      lex.fail(crossing_text(code, i) + ": over-strand edges " + std::to_string(e[1]) + ", " +
+               std::to_string(e[3]) + " are not consecutive labels");
+    if (b_to_d != d_to_b) over_in[static_cast<size_t>(i)] = b_to_d ? e[1] : e[3];
+  }
+  return over_in;
+}
+
+/// Each edge label must leave one crossing and enter another: incoming edges
+/// are a (under) and the over strand's tail over_in.
+void check_incoming(const PDCode& code, const std::vector<int>& over_in, const Lexer& lex) {
+  const int m = 2 * code.size();
+  std::vector<int> incoming(static_cast<size_t>(m + 1), 0);
+  for (int i = 0; i < code.size(); ++i) {
+    ++incoming[static_cast<size_t>(code.crossings[static_cast<size_t>(i)].e[0])];
+    ++incoming[static_cast<size_t>(over_in[static_cast<size_t>(i)])];
   }
   for (int label = 1; label <= m; ++label)
     if (incoming[static_cast<size_t>(label)] != 1)
       lex.fail("edge " + std::to_string(label) + " enters " + std::to_string(incoming[static_cast<size_t>(label)]) +
                " crossings (the orientation of the labels is inconsistent)");
+}
+
+}  // namespace
+
+PDCode parse_pd(const std::string& text) {
+  Lexer lex(text, "PD code");
+  const PDCode code = read_pd_groups(lex);
+  const int m = 2 * code.size();
+  std::vector<int> over_in = check_strands(code, [m](int x) { return x % m + 1; }, lex);
+  for (int i = 0; i < code.size(); ++i)  // one crossing (2c = 2): both orders hold; take d -> b
+    if (over_in[static_cast<size_t>(i)] == 0) over_in[static_cast<size_t>(i)] = code.crossings[static_cast<size_t>(i)].e[3];
+  check_incoming(code, over_in, lex);
   return code;
 }
 
@@ -266,8 +284,14 @@ std::vector<std::array<int, 2>> pd_label_ranges(const PDCode& code, Lexer& lex) 
 /// it. A component that only passes over has no such end: its orientation is
 /// a choice, made by sending its smaller label into the first crossing that
 /// lists it.
-void orient_two_edge_components(PDLinkCode& out, const std::vector<int>& under_role) {
+void orient_two_edge_components(PDLinkCode& out) {
   const int c = out.code.size(), m = 2 * c;
+  // +1: the label ends at an under strand's a, -1: it starts at a c
+  std::vector<int> under_role(static_cast<size_t>(m + 1), 0);
+  for (const PDCrossing& x : out.code.crossings) {
+    under_role[static_cast<size_t>(x.e[0])] = +1;
+    under_role[static_cast<size_t>(x.e[2])] = -1;
+  }
   std::vector<std::vector<int>> over_at(static_cast<size_t>(m + 1));
   for (int i = 0; i < c; ++i)
     for (int slot : {1, 3}) over_at[static_cast<size_t>(out.code.crossings[static_cast<size_t>(i)].e[static_cast<size_t>(slot)])].push_back(i);
@@ -306,39 +330,13 @@ PDLinkCode parse_pd_link(const std::string& text) {
   PDLinkCode out;
   out.code = read_pd_groups(lex);
   out.components = pd_label_ranges(out.code, lex);
-  const int c = out.code.size(), m = 2 * c;
-  std::vector<std::array<int, 2>> range_of(static_cast<size_t>(m + 1));
+  std::vector<std::array<int, 2>> range_of(static_cast<size_t>(2 * out.code.size() + 1));
   for (const auto& r : out.components)
     for (int label = r[0]; label <= r[1]; ++label) range_of[static_cast<size_t>(label)] = r;
   const auto succ = [&](int x) { return x == range_of[static_cast<size_t>(x)][1] ? range_of[static_cast<size_t>(x)][0] : x + 1; };
-  const auto size = [&](int x) { return range_of[static_cast<size_t>(x)][1] - range_of[static_cast<size_t>(x)][0] + 1; };
-  // where each label ends (+1: as the under strand's a) or starts (-1: as c) outside the over strands
-  std::vector<int> under_role(static_cast<size_t>(m + 1), 0);
-  out.over_in.assign(static_cast<size_t>(c), 0);
-  for (int i = 0; i < c; ++i) {
-    const auto& e = out.code.crossings[static_cast<size_t>(i)].e;
-    if (succ(e[0]) != e[2])
-      lex.fail(crossing_text(out.code, i) + ": under-strand edges " + std::to_string(e[0]) + " -> " +
-               std::to_string(e[2]) + " are not consecutive labels");
-    under_role[static_cast<size_t>(e[0])] = +1;
-    under_role[static_cast<size_t>(e[2])] = -1;
-    if (size(e[1]) >= 3) {  // the labels order the over strand
-      if (succ(e[1]) == e[3]) out.over_in[static_cast<size_t>(i)] = e[1];
-      else if (succ(e[3]) == e[1]) out.over_in[static_cast<size_t>(i)] = e[3];
-      else lex.fail(crossing_text(out.code, i) + ": over-strand edges " + std::to_string(e[1]) + ", " +
-                    std::to_string(e[3]) + " are not consecutive labels");
-    }
-  }
-  orient_two_edge_components(out, under_role);
-  std::vector<int> incoming(static_cast<size_t>(m + 1), 0);
-  for (int i = 0; i < c; ++i) {
-    ++incoming[static_cast<size_t>(out.code.crossings[static_cast<size_t>(i)].e[0])];
-    ++incoming[static_cast<size_t>(out.over_in[static_cast<size_t>(i)])];
-  }
-  for (int label = 1; label <= m; ++label)
-    if (incoming[static_cast<size_t>(label)] != 1)
-      lex.fail("edge " + std::to_string(label) + " enters " + std::to_string(incoming[static_cast<size_t>(label)]) +
-               " crossings (the orientation of the labels is inconsistent)");
+  out.over_in = check_strands(out.code, succ, lex);
+  orient_two_edge_components(out);
+  check_incoming(out.code, out.over_in, lex);
   return out;
 }
 

@@ -49,6 +49,10 @@ double validate_link(const Link& link, const std::string& source);
 /// vertices in all).
 Points all_vertices(const Link& link);
 
+/// [length] The components' mean length (1/m) Σ_c curve_length(x_c); 0 for
+/// no component.
+double mean_component_length(const Link& link);
+
 /// Smallest distance between a segment of polygon A and one of polygon B
 /// (n_A by 3, n_B by 3, both closed). O(n_A·n_B).
 double component_distance(const Points& A, const Points& B);
