@@ -12,7 +12,7 @@
 #include <optional>
 #include <vector>
 
-#include "ek/dataset/dataset_file.hpp"
+#include "ek/dataset/ledger.hpp"
 #include "experiment.hpp"
 #include "milnor_summary.hpp"
 #include "scales.hpp"
@@ -31,7 +31,7 @@ struct Row {
   std::optional<double> planar_ratio;
 };
 
-Row knot_row(const KnotEntry& e) {
+Row knot_row(const LedgerEntry& e) {
   const int tc = e.attribute_column("total_curvature"), td = e.attribute_column("threedim");
   const double bound = 2.0 * M_PI * e.bridge_index;
   Row r;
@@ -77,19 +77,20 @@ void fill_summary(const std::vector<Row>& rows, results::MilnorSummary& sum) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  return run_experiment(argc, argv, "exp_milnor", "Milnor-bound ratios of the data set (reads ../dataset/dataset.h5).", [](const Args& a) {
-    const std::string in = a.results + "/dataset/dataset.h5";
+  return run_experiment(argc, argv, "exp_milnor",
+                        "Milnor-bound ratios of the data set (reads ../dataset/dataset.h5, else the ledgers ../ledgers/).",
+                        [](const Args& a) {
+    std::string in;
+    const std::vector<LedgerEntry> entries = read_results_entries(a.results, kClusterCut, &in);
     announce(a, "exp_milnor", "analyse " + in, 5.0);
-    DatasetReader reader(in);
     Csv csv(a.out + "/milnor.csv", {"knot", "crossing_number", "bridge_index", "braid_index", "bb", "two_bridge",
                                     "equilibria", "min_total_curvature", "ratio", "threedim_at_min", "violations",
                                     "planar_ratio"});
     std::vector<Row> rows;
-    for (const auto& name : reader.knot_names()) {
-      const KnotEntry e = reader.read(name);
-      if (e.equilibria.empty() || e.bridge_index < 1) continue;
+    for (const LedgerEntry& e : entries) {
+      if (e.equilibria() == 0 || e.bridge_index < 1) continue;
       const Row r = rows.emplace_back(knot_row(e));
-      csv.row({name, std::to_string(r.crossings), std::to_string(r.bridge), std::to_string(r.braid),
+      csv.row({e.name, std::to_string(r.crossings), std::to_string(r.bridge), std::to_string(r.braid),
                Csv::flag(r.bridge == r.braid), Csv::flag(r.bridge == 2), std::to_string(r.equilibria),
                Csv::num(r.min_total_curvature), Csv::num(r.ratio), Csv::num(r.threedim), std::to_string(r.violations),
                r.planar_ratio ? Csv::num(*r.planar_ratio) : ""});

@@ -4,7 +4,7 @@
 // Writes planarity.csv (per knot) and summary.json.
 #include <iostream>
 
-#include "ek/dataset/dataset_file.hpp"
+#include "ek/dataset/ledger.hpp"
 #include "experiment.hpp"
 #include "planarity_summary.hpp"
 #include "scales.hpp"
@@ -13,17 +13,19 @@ using namespace ek;
 using namespace ek::exp;
 
 int main(int argc, char** argv) {
-  return run_experiment(argc, argv, "exp_planarity", "Share of planar equilibria (reads ../dataset/dataset.h5).", [](const Args& a) {
-    const std::string in = a.results + "/dataset/dataset.h5";
+  return run_experiment(argc, argv, "exp_planarity",
+                        "Share of planar equilibria (reads ../dataset/dataset.h5, else the ledgers ../ledgers/).",
+                        [](const Args& a) {
+    std::string in;
+    const std::vector<LedgerEntry> entries = read_results_entries(a.results, kClusterCut, &in);
     announce(a, "exp_planarity", "analyse " + in, 5.0);
-    DatasetReader reader(in);
     Csv csv(a.out + "/planarity.csv", {"knot", "equilibria", "planar", "share"});
     long total = 0, planar = 0;
     nlohmann::ordered_json hist = nlohmann::ordered_json::array();
     std::vector<double> all;
-    for (const auto& name : reader.knot_names()) {
-      const KnotEntry e = reader.read(name);
-      const int td = e.equilibria.empty() ? -1 : e.attribute_column("threedim");
+    for (const LedgerEntry& e : entries) {
+      const std::string& name = e.name;
+      const int td = e.equilibria() == 0 ? -1 : e.attribute_column("threedim");
       long p = 0;
       for (Eigen::Index i = 0; i < e.attributes.rows(); ++i) {
         all.push_back(e.attributes(i, td));

@@ -1,31 +1,28 @@
 // Paper Section 8.2, Fig. 9: Milnor's bound on the data set (ci scale: every
 // knot with 3..7 crossings, 12 samples each). Recomputed here from the data
-// set itself, not from the experiment's summary.
+// set itself (or, without it, from its ledgers: ek::read_results_entries),
+// not from the experiment's summary.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
 #include <vector>
 
-#include "ek/dataset/dataset_file.hpp"
+#include "ek/dataset/ledger.hpp"
 #include "milnor_summary.hpp"
 #include "results.hpp"
+#include "thresholds.hpp"
 
 using namespace ek;
 
-namespace {
-const std::string kDataset = paper::results("dataset") + "/dataset.h5";
-}
 
 // Milnor 1950: every closed curve of bridge index br has total curvature > 2π·br.
 // Tolerance: none (a violation is a bug); the curvature is Σ turning angles.
 TEST(PaperMilnor, EveryEquilibriumIsAboveTheBound) {
-  DatasetReader r(kDataset);
   int checked = 0, violations = 0;
   double closest = 1e9;
-  for (const auto& name : r.knot_names()) {
-    const KnotEntry e = r.read(name);
-    const int tc = e.equilibria.empty() ? 0 : e.attribute_column("total_curvature");
+  for (const LedgerEntry& e : read_results_entries(paper::results(""), results::kClusterCut)) {
+    const int tc = e.equilibria() == 0 ? 0 : e.attribute_column("total_curvature");
     for (Eigen::Index i = 0; i < e.attributes.rows(); ++i) {
       const double ratio = e.attributes(i, tc) / (2 * M_PI * e.bridge_index);
       closest = std::min(closest, ratio);

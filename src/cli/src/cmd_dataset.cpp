@@ -1,10 +1,15 @@
 // knots dataset (--max-crossings C [--min-crossings C0] [--stratified F] | --names A,B,...) -o DATASET.h5
 //               [--jobs J] [--shard I/N] [--adaptive] ...
+#include <sys/resource.h>
+
 #include <iostream>
+#include <thread>
 #include <algorithm>
 #include <sstream>
 
 #include "commands.hpp"
+#include "ek/core/paths.hpp"
+#include "ek/dataset/ledger.hpp"
 #include "ek/dataset/run.hpp"
 #include "ek/knots/link_table.hpp"
 #include "ek/knots/selection.hpp"
@@ -13,8 +18,40 @@
 
 namespace ek::cli {
 
+namespace {
+
+/// [s] user + system CPU time of this process (every thread).
+double cpu_seconds() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  const auto s = [](const timeval& t) { return static_cast<double>(t.tv_sec) + 1e-6 * static_cast<double>(t.tv_usec); };
+  return s(u.ru_utime) + s(u.ru_stime);
+}
+
+/// The ledger of the finished data set, with this run's provenance: its
+/// commit, command line, machine, wall and CPU time (of this invocation: a
+/// resumed run's earlier parts are not in them, which `source` says).
+void write_run_ledger(const DatasetRunOptions& ro, const DatasetRunSummary& s, int argc, char** argv,
+                      const std::string& path) {
+  LedgerProvenance p;
+  p.cut = ro.explore.novelty_distance;
+  p.commit = source_commit();
+  p.created = now_iso8601();
+  p.source = "knots";
+  for (int k = 1; k < argc; ++k) p.source += std::string(" ") + argv[k];
+  if (s.knots_skipped + s.knots_resumed > 0)
+    p.source += " (resumed: " + std::to_string(s.knots_skipped + s.knots_resumed) + " knots from an earlier invocation)";
+  p.cores = static_cast<int>(std::thread::hardware_concurrency());
+  p.jobs = ro.explore.jobs;
+  p.wall_seconds = s.seconds;
+  p.cpu_seconds = cpu_seconds();
+  write_ledger(path, ledger_of_dataset(ro.output, p));
+}
+
+}  // namespace
+
 int cmd_dataset(int argc, char** argv) {
-  std::string out, names, shard = "1/1";
+  std::string out, names, shard = "1/1", ledger;
   std::optional<int> max_crossings, min_crossings;
   std::optional<double> stratified;
   bool json = false;
@@ -30,6 +67,9 @@ int cmd_dataset(int argc, char** argv) {
   args.option("--names", &names, "comma-separated knot names, or links of the link table (hopf, borromean, ...)");
   args.option("-o,--output", &out, "data-set file (HDF5); an existing one with the same parameters is resumed/extended");
   args.option("--shard", &shard, "I/N: only the knots k with k mod N = I - 1 (table order), for clusters");
+  args.option("--ledger", &ledger,
+              "also write the data set's ledger (its states at the novelty distance, runs, attributes, provenance) "
+              "to this file once the data set is complete");
   add_explore_options(args, a);
   args.flag("--json", &json, "print a JSON summary");
   if (!args.parse(argc, argv)) return 0;
@@ -80,6 +120,7 @@ int cmd_dataset(int argc, char** argv) {
   ro.explore = a.options;
   ro.progress = !a.quiet && !json;
   const DatasetRunSummary s = run_dataset(ro);
+  if (!ledger.empty()) write_run_ledger(ro, s, argc, argv, ledger);
   if (json) {
     Json j;
     j["output"] = out;

@@ -14,6 +14,7 @@ int cmd_attributes(int argc, char** argv);
 int cmd_explore(int argc, char** argv);
 int cmd_dataset(int argc, char** argv);
 int cmd_merge(int argc, char** argv);
+int cmd_ledger(int argc, char** argv);
 int cmd_describe(int argc, char** argv);
 int cmd_cluster(int argc, char** argv);
 int cmd_query(int argc, char** argv);

@@ -1,9 +1,13 @@
 #include <cstdlib>
+#include <ctime>
 
 #include "ek/core/config.hpp"
 #include "ek/core/paths.hpp"
 
 namespace ek {
+namespace detail {
+extern const char* const kSourceCommit;  // generated/commit.cpp (cmake/ek_commit.cmake)
+}
 
 std::string knot_table_path() {
   const char* env = std::getenv("KNOT_TABLE");
@@ -12,5 +16,16 @@ std::string knot_table_path() {
 }
 
 std::string project_version() { return config::kVersion; }
+
+std::string source_commit() { return detail::kSourceCommit; }
+
+std::string now_iso8601() {
+  const std::time_t t = std::time(nullptr);
+  std::tm utc{};
+  gmtime_r(&t, &utc);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", &utc);
+  return buf;
+}
 
 }  // namespace ek

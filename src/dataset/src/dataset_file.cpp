@@ -19,6 +19,7 @@
 #include "ek/core/atomic_file.hpp"
 #include "ek/core/errors.hpp"
 #include "child_read.hpp"
+#include "parameters_h5.hpp"
 #include "ek/dataset/h5.hpp"
 
 namespace ek {
@@ -36,19 +37,6 @@ void write_value(hid_t f, const std::string& name, const FieldValue& v) {
   else if (const auto* u = std::get_if<std::uint64_t>(&v)) h5::set_attr(f, name, static_cast<std::int64_t>(*u));
   else if (const auto* t = std::get_if<std::string>(&v)) h5::set_attr(f, name, *t);
   else if (const auto* list = std::get_if<std::vector<double>>(&v)) h5::set_attr(f, name, continuation_text(*list));
-}
-
-/// Every field of the table; an empty field is left out (not recorded), which
-/// only the fields that older files may lack allow.
-void write_meta(hid_t f, const DatasetMetadata& m) {
-  h5::set_attr(f, "format", std::string(kFormat));
-  h5::set_attr(f, "format_version", kFormatVersion);
-  for (const auto& field : metadata_fields()) {
-    const FieldValue v = field.get(m);
-    require(!std::holds_alternative<std::monostate>(v) || field.absent == WhenAbsent::NotRecorded,
-            "DatasetWriter: the metadata field '" + field.name + "' is not set");
-    write_value(f, field.name, v);
-  }
 }
 
 /// A field's attribute, which must hold one value of the field's kind: the
@@ -84,6 +72,33 @@ FieldValue read_value(hid_t f, const MetadataField& field, const std::string& pa
   return std::monostate{};
 }
 
+}  // namespace
+
+void detail::write_parameters(hid_t f, const DatasetMetadata& m) {
+  for (const auto& field : metadata_fields()) {
+    const FieldValue v = field.get(m);
+    require(!std::holds_alternative<std::monostate>(v) || field.absent == WhenAbsent::NotRecorded,
+            "DatasetWriter: the metadata field '" + field.name + "' is not set");
+    write_value(f, field.name, v);
+  }
+}
+
+DatasetMetadata detail::read_parameters(hid_t f, const std::string& path) {
+  DatasetMetadata m;
+  for (const auto& field : metadata_fields()) field.set(m, read_value(f, field, path));
+  return m;
+}
+
+namespace {
+
+/// Every field of the table; an empty field is left out (not recorded), which
+/// only the fields that older files may lack allow.
+void write_meta(hid_t f, const DatasetMetadata& m) {
+  h5::set_attr(f, "format", std::string(kFormat));
+  h5::set_attr(f, "format_version", kFormatVersion);
+  detail::write_parameters(f, m);
+}
+
 DatasetMetadata read_meta(hid_t f, const std::string& path) {
   if (!h5::has_attr(f, "format") || h5::get_attr_string(f, "format") != kFormat)
     throw InputError("'" + path + "' is an HDF5 file but not an elastic-knots data set");
@@ -91,10 +106,9 @@ DatasetMetadata read_meta(hid_t f, const std::string& path) {
   if (version != kFormatVersion)
     throw InputError("'" + path + "' has data-set format version " + std::to_string(version) + ", expected " +
                      std::to_string(kFormatVersion));
-  DatasetMetadata m;
-  for (const auto& field : metadata_fields()) field.set(m, read_value(f, field, path));
-  return m;
+  return detail::read_parameters(f, path);
 }
+
 
 /// The columns of a knot's runs/ group (docs/dataset-format.md): one
 /// dataset per column, one row per run, written and read from these tables

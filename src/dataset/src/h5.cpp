@@ -163,27 +163,27 @@ void seal(const std::string& path) {
     fail("cannot write the checksum of data set '" + path + "'");
 }
 
-bool verify(const std::string& path) {
+bool verify(const std::string& path, const std::string& kind) {
   const Fd f{::open(path.c_str(), O_RDONLY)};
   struct stat st {};
-  if (f.fd < 0 || ::fstat(f.fd, &st) != 0) fail("cannot open data set '" + path + "': " + std::strerror(errno));
+  if (f.fd < 0 || ::fstat(f.fd, &st) != 0) fail("cannot open " + kind + " '" + path + "': " + std::strerror(errno));
   char header[kUserBlock + 1] = {};
   const ssize_t got = ::pread(f.fd, header, kUserBlock, 0);
   if (got >= 8 && std::memcmp(header, kSignature, 8) == 0) return false;  // written before checksums
   const size_t tag = sizeof kChecksumHeader - 1;
   if (got < static_cast<ssize_t>(tag) || std::memcmp(header, kChecksumHeader, tag) != 0)
-    fail("'" + path + "' is not a readable HDF5 data set");
+    fail("'" + path + "' is not a readable HDF5 " + kind);
   unsigned crc = 0;
   long long length = -1;
   char canonical[kUserBlock];
   if (got != static_cast<ssize_t>(kUserBlock) || std::sscanf(header + tag, "crc32 %8x\nlength %lld\n", &crc, &length) != 2 ||
       (checksum_header(canonical, crc, length), std::memcmp(header, canonical, kUserBlock) != 0))
-    fail("data set '" + path + "' is damaged: its checksum header is unreadable");
+    fail(kind + " '" + path + "' is damaged: its checksum header is unreadable");
   if (length != static_cast<long long>(st.st_size))
-    fail("data set '" + path + "' is damaged: " + std::to_string(st.st_size) + " bytes, but it was written with " +
+    fail(kind + " '" + path + "' is damaged: " + std::to_string(st.st_size) + " bytes, but it was written with " +
          std::to_string(length) + " (truncated or extended since)");
   if (crc_of(f.fd, static_cast<off_t>(kUserBlock), st.st_size, path) != crc)
-    fail("data set '" + path + "' is damaged: its checksum does not match (its bytes changed after it was written)");
+    fail(kind + " '" + path + "' is damaged: its checksum does not match (its bytes changed after it was written)");
   return true;
 }
 
@@ -219,6 +219,10 @@ std::vector<std::string> children(hid_t group) {
 
 void write_doubles(hid_t parent, const std::string& name, const std::vector<hsize_t>& shape, const double* data) {
   write_numeric(parent, name, shape, data, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE);
+}
+
+void write_float32(hid_t parent, const std::string& name, const std::vector<hsize_t>& shape, const double* data) {
+  write_numeric(parent, name, shape, data, H5T_NATIVE_DOUBLE, H5T_IEEE_F32LE);
 }
 
 void write_int64(hid_t parent, const std::string& name, const std::vector<hsize_t>& shape, const std::int64_t* data) {

@@ -1,5 +1,7 @@
 #include "ek/dataset/json.hpp"
 
+#include <sstream>
+
 #include "ek/dataset/dataset_search.hpp"
 
 namespace ek {
@@ -41,6 +43,85 @@ Json describe_json(const DatasetReader& reader) {
   j["parameters"] = Json::parse(reader.metadata().json());
   j["knots"] = reader.knot_names();
   return j;
+}
+
+namespace {
+
+template <class T>
+Json optional_json(const std::optional<T>& v) {
+  return v ? Json(*v) : Json(nullptr);
+}
+
+Json state_json(const LedgerEntry& e, int s) {
+  const LedgerState& x = e.states[static_cast<size_t>(s)];
+  Json j;
+  j["members"] = x.members;
+  j["representative"] = x.representative;
+  for (size_t c = 0; c < e.attribute_names.size(); ++c) {
+    const AttributeSpread a = e.spread(s, static_cast<int>(c));
+    j[e.attribute_names[c]] = {{"value", json_number(e.attributes(x.representative, static_cast<Eigen::Index>(c)))},
+                               {"min", json_number(a.min)},
+                               {"median", json_number(a.median)},
+                               {"max", json_number(a.max)}};
+  }
+  return j;
+}
+
+}  // namespace
+
+Json ledger_json(const Ledger& l) {
+  Json j;
+  j["parameters"] = Json::parse(l.parameters.json());
+  const LedgerProvenance& p = l.provenance;
+  j["provenance"] = {{"cut", json_number(p.cut)},       {"commit", p.commit},
+                     {"created", p.created},             {"source", p.source},
+                     {"cores", optional_json(p.cores)},  {"jobs", optional_json(p.jobs)},
+                     {"wall_seconds", optional_json(p.wall_seconds)},
+                     {"cpu_seconds", optional_json(p.cpu_seconds)}};
+  j["knots"] = Json::array();
+  for (const LedgerEntry& e : l.entries) {
+    Json k;
+    k["name"] = e.name;
+    k["crossing_number"] = e.crossing_number;
+    k["bridge_index"] = e.bridge_index;
+    k["braid_index"] = e.braid_index;
+    k["samples_used"] = e.samples_used;
+    k["stable"] = e.stable_runs();
+    k["statuses"] = e.status_counts();
+    k["run_seconds"] = json_number(e.run_seconds());
+    k["equilibria"] = e.equilibria();
+    k["states"] = Json::array();
+    for (int s = 0; s < static_cast<int>(e.states.size()); ++s) k["states"].push_back(state_json(e, s));
+    j["knots"].push_back(k);
+  }
+  return j;
+}
+
+std::string ledger_text(const Ledger& l, bool states) {
+  std::ostringstream out;
+  const LedgerProvenance& p = l.provenance;
+  const auto opt = [](const auto& v) { return v ? std::to_string(*v) : std::string("not recorded"); };
+  out << l.parameters.text() << "ledger: cut " << p.cut << ", commit " << (p.commit.empty() ? "not recorded" : p.commit)
+      << ", created " << p.created << ", cores " << opt(p.cores) << ", jobs " << opt(p.jobs) << ", wall s "
+      << opt(p.wall_seconds) << ", CPU s " << opt(p.cpu_seconds) << "\nsource: " << p.source << "\n";
+  for (const LedgerEntry& e : l.entries) {
+    out << e.name << ": " << e.samples_used << " samples, " << e.stable_runs() << " stable, " << e.states.size()
+        << " states";
+    if (e.states.empty()) {
+      out << "\n";
+      continue;
+    }
+    const int energy = e.attribute_column("energy");
+    out << ", lowest energy " << e.attributes(e.states.front().representative, energy) << "\n";
+    if (!states) continue;
+    for (int s = 0; s < static_cast<int>(e.states.size()); ++s) {
+      const AttributeSpread a = e.spread(s, energy);
+      out << "  state " << s << ": " << e.states[static_cast<size_t>(s)].members << " members, energy "
+          << e.attributes(e.states[static_cast<size_t>(s)].representative, energy) << " (" << a.min << " .. "
+          << a.max << ")\n";
+    }
+  }
+  return out.str();
 }
 
 Json closest_equilibrium_json(const DatasetReader* reader, const Points& x) {

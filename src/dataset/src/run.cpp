@@ -11,6 +11,7 @@
 #include <map>
 
 #include "ek/core/atomic_file.hpp"
+#include "ek/core/paths.hpp"
 #include "ek/core/errors.hpp"
 #include "ek/knots/table.hpp"
 
@@ -19,13 +20,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
-
-std::string now_iso() {
-  std::time_t t = std::time(nullptr);
-  char buf[32];
-  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&t));
-  return buf;
-}
 
 std::string hms(double seconds) {
   if (!std::isfinite(seconds) || seconds < 0) return "--:--:--";
@@ -154,7 +148,7 @@ DatasetRunSummary run_dataset(const DatasetRunOptions& o) {
   check_writable(o.output);
   const auto t0 = Clock::now();
   DatasetMetadata meta = dataset_metadata(o.explore);
-  meta.created = now_iso();
+  meta.created = now_iso8601();
   // An existing output must have the same parameters; its knots are kept.
   std::vector<std::string> existing;
   if (fs::exists(o.output)) {

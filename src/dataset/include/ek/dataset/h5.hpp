@@ -67,8 +67,9 @@ void seal(const std::string& path);
 /// Checks a file before HDF5 opens it. A sealed file must match its header:
 /// returns true. A file whose HDF5 signature is at byte 0 has no header
 /// (written before data sets carried a checksum): returns false, unchecked.
-/// Throws InputError naming the file otherwise (damaged, or not a data set).
-bool verify(const std::string& path);
+/// Throws InputError naming the file otherwise (damaged, or not a data set);
+/// `kind` names what the file should be in the messages ("data set", "ledger").
+bool verify(const std::string& path, const std::string& kind = "data set");
 Handle create_group(hid_t parent, const std::string& name);
 Handle open_group(hid_t parent, const std::string& name);
 bool exists(hid_t parent, const std::string& name);
@@ -76,6 +77,8 @@ std::vector<std::string> children(hid_t group);   ///< names of the members, in 
 
 /// Datasets of doubles / int64 / strings with an arbitrary shape (row-major).
 void write_doubles(hid_t parent, const std::string& name, const std::vector<hsize_t>& shape, const double* data);
+/// Doubles stored as float32 (rounded to nearest); read_doubles reads them back as doubles.
+void write_float32(hid_t parent, const std::string& name, const std::vector<hsize_t>& shape, const double* data);
 void write_int64(hid_t parent, const std::string& name, const std::vector<hsize_t>& shape, const std::int64_t* data);
 void write_strings(hid_t parent, const std::string& name, const std::vector<std::string>& values);
 std::vector<double> read_doubles(hid_t parent, const std::string& name, std::vector<hsize_t>* shape = nullptr);

@@ -7,6 +7,7 @@
 
 #include "ek/core/json.hpp"
 #include "ek/dataset/dataset_file.hpp"
+#include "ek/dataset/ledger.hpp"
 #include "ek/dataset/pipeline.hpp"
 #include "ek/dataset/query.hpp"
 
@@ -23,6 +24,20 @@ Json query_json(const QueryResult& result);
 /// parameters (DatasetMetadata::json(): attribute name -> value, null when
 /// not recorded), knots (names in table order).
 Json describe_json(const DatasetReader& reader);
+
+/// A ledger (`knots describe LEDGER --json`): parameters (as describe_json),
+/// provenance {cut, commit, created, source, cores, jobs, wall_seconds,
+/// cpu_seconds; null when not recorded}, knots: [{name, crossing_number,
+/// bridge_index, braid_index, samples_used, stable, statuses {status:
+/// count}, run_seconds, equilibria, states: [{members, representative, and
+/// per attribute {value (the representative's), min, median, max}}]}].
+Json ledger_json(const Ledger& ledger);
+
+/// The same as text: the parameters, the provenance, and one line per knot
+/// (samples, stable runs, states, the lowest state's energy), then with
+/// `states` one line per state (members, energy of the representative and
+/// its spread).
+std::string ledger_text(const Ledger& ledger, bool states);
 
 /// The data set's equilibrium closest to x (n by 3; ICP after the
 /// pre-filter, as `knots search`): knot, index, distance; null without a

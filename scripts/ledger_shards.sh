@@ -1,0 +1,99 @@
+#!/usr/bin/env bash
+# Runs a paper-scale data set shard by shard and keeps each finished shard's
+# ledger (docs/dataset-format.md, "Ledgers") under docs/results/SCALE/ledgers/,
+# so that an interrupted run loses at most the shard in progress. Each shard
+# is `knots dataset` with the experiments' parameters of SCALE (those of
+# exp_dataset: adaptive sampling 50 + 10 up to 500, novelty distance 0.05, the
+# default model and method, seed 1) and --shard I/N; its data set goes to
+# results/SCALE/shards/ (not committed), its ledger to
+# docs/results/SCALE/ledgers/shard-II-of-NN.ledger.h5. A shard whose ledger
+# exists is skipped; an interrupted shard resumes from its journals.
+# docs/reproducing.md ("The ledgers") describes the workflow.
+set -euo pipefail
+
+usage() {
+  cat <<'EOF'
+usage: scripts/ledger_shards.sh SCALE [--shards N] [--only I,J,...] [--jobs J] [--knots PATH]
+                                [--commit] [--nice]
+
+  SCALE          sample12 (the stratified 10% of the 11- and 12-crossing knots, every BB knot)
+                 or paper10 (every knot with 3 to 10 crossings)
+  --shards N     shards of the scale (default: sample12 20, paper10 16; about 15 minutes each on 2 cores)
+  --only LIST    these shards only (comma-separated, 1-based); default every shard without a ledger
+  --jobs J       relaxations in parallel per shard (default 2)
+  --knots PATH   the knots program (default build/bin/knots of this checkout)
+  --commit       git commit each finished shard's ledger (that file alone) as soon as it is written
+  --nice         run the shards at the lowest CPU priority (nice 19)
+
+Progress: one line per shard start and end in results/SCALE/shards/progress.log.
+EOF
+}
+
+fail() {
+  echo "ledger_shards.sh: error: $*" >&2
+  exit 2
+}
+
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+[[ $# -ge 1 ]] || { usage >&2; exit 2; }
+[[ "$1" == "-h" || "$1" == "--help" ]] && { usage; exit 0; }
+scale=$1
+shift
+shards="" only="" jobs=2 knots="$here/build/bin/knots" commit=0 nice_cmd=()
+while [[ $# -gt 0 ]]; do
+  case "$1" in
+    --shards) [[ $# -ge 2 ]] || fail "--shards needs a value"; shards=$2; shift 2 ;;
+    --only) [[ $# -ge 2 ]] || fail "--only needs a value"; only=$2; shift 2 ;;
+    --jobs) [[ $# -ge 2 ]] || fail "--jobs needs a value"; jobs=$2; shift 2 ;;
+    --knots) [[ $# -ge 2 ]] || fail "--knots needs a value"; knots=$2; shift 2 ;;
+    --commit) commit=1; shift ;;
+    --nice) nice_cmd=(nice -n 19); shift ;;
+    -h | --help) usage; exit 0 ;;
+    *) fail "unknown option '$1' (see --help)" ;;
+  esac
+done
+case "$scale" in
+  sample12) select=(--max-crossings 12 --min-crossings 11 --stratified 0.1); shards=${shards:-20} ;;
+  paper10) select=(--max-crossings 10); shards=${shards:-16} ;;
+  *) fail "unknown scale '$scale' (sample12 or paper10)" ;;
+esac
+[[ "$shards" =~ ^[1-9][0-9]*$ ]] || fail "--shards must be a positive integer"
+[[ "$jobs" =~ ^[1-9][0-9]*$ ]] || fail "--jobs must be a positive integer"
+[[ -x "$knots" ]] || fail "no knots program at '$knots' (build it first: make build)"
+
+ledgers="$here/docs/results/$scale/ledgers"
+work="$here/results/$scale/shards"
+mkdir -p "$ledgers" "$work"
+log="$work/progress.log"
+
+list=()
+if [[ -n "$only" ]]; then
+  IFS=, read -r -a list <<<"$only"
+else
+  for ((i = 1; i <= shards; i++)); do list+=("$i"); done
+fi
+
+for i in "${list[@]}"; do
+  [[ "$i" =~ ^[1-9][0-9]*$ && "$i" -le "$shards" ]] || fail "shard '$i' is not in 1..$shards"
+  name=$(printf 'shard-%02d-of-%02d' "$i" "$shards")
+  ledger="$ledgers/$name.ledger.h5"
+  if [[ -f "$ledger" ]]; then
+    echo "$(date -u +%FT%TZ) $scale $name: ledger exists, skipped" >>"$log"
+    continue
+  fi
+  echo "$(date -u +%FT%TZ) $scale $name: started" >>"$log"
+  start=$(date +%s)
+  "${nice_cmd[@]}" "$knots" dataset "${select[@]}" --adaptive --novelty-distance 0.05 --jobs "$jobs" \
+    --shard "$i/$shards" --quiet -o "$work/$name.h5" --ledger "$ledger"
+  echo "$(date -u +%FT%TZ) $scale $name: finished in $(($(date +%s) - start)) s, ledger $(du -k "$ledger" | cut -f1) kB" >>"$log"
+  if [[ $commit -eq 1 ]]; then
+    # the ledger alone (git commit --only): whatever else is staged stays staged
+    for attempt in 1 2 3 4 5; do
+      if git -C "$here" add "$ledger" && git -C "$here" commit -q --only "$ledger" \
+        -m "Ledger of $scale $name (knots dataset --shard $i/$shards)"; then
+        break
+      fi
+      sleep 5  # another git command holds the index lock
+    done
+  fi
+done

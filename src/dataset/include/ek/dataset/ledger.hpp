@@ -1,0 +1,152 @@
+#pragma once
+/// The ledger: a data set's result, small enough to commit and read without
+/// the data set (paper Section 7.4 builds the data set; Fig. 9 and the
+/// planarity claim only need per-knot results). Per knot type it keeps the
+/// runs (sample, status, stored row, iterations, seconds), every stored
+/// equilibrium's attributes and its state, the complete-linkage dendrogram,
+/// and for each distinct state at the ledger's cut its member count and its
+/// representative's curve; it drops the other curves and the m × m
+/// similarity matrix, which hold almost all of a data set's bytes.
+///
+/// States are clusters_at_cut() (pipeline.hpp) at `cut`: sorted by
+/// increasing lowest energy, represented by their lowest-energy member. The
+/// dendrogram is kept, so the states at any coarser cut are unions of these,
+/// and their representatives (the lowest-energy member of the union) are
+/// among the stored curves.
+///
+/// File layout (docs/dataset-format.md, "Ledgers"): HDF5 with the data set's
+/// checksum header; root attributes format = "elastic-knots-ledger",
+/// format_version = 1, the data set's parameters (metadata_fields()) and the
+/// provenance (LedgerProvenance); columnar tables over all knots of the file
+/// (runs/, equilibria/, states/, each column one HDF5 dataset, compressed),
+/// and one group per knot under knots/ holding its scalar fields and its
+/// rows of the tables.
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "ek/dataset/dataset_file.hpp"
+#include "ek/dataset/metadata.hpp"
+
+namespace ek {
+
+/// One relaxation run, as the ledger keeps it.
+struct LedgerRun {
+  int sample = 0;             ///< [1] index of the lattice sample within the knot
+  std::string status;         ///< RunRecord::status
+  int equilibrium = -1;       ///< [1] row of the knot's attribute table, -1 when not stored
+  int iterations = 0;         ///< [1]
+  double seconds = 0.0;       ///< [s] wall time of the relaxation (one thread)
+  bool topology_kept = true;  ///< RunRecord::alexander_preserved
+};
+
+/// One distinct state at the ledger's cut.
+struct LedgerState {
+  int representative = -1;  ///< [1] row of the knot's attribute table: the member of lowest energy
+  int members = 0;          ///< [1] stored equilibria in the state
+  Points curve;             ///< n by 3: the representative (stored as float32)
+};
+
+/// The smallest, median and largest value of one attribute over a state's members.
+struct AttributeSpread {
+  double min = 0.0, median = 0.0, max = 0.0;
+};
+
+/// One knot type (or link) of a ledger.
+struct LedgerEntry {
+  std::string name;
+  int crossing_number = 0;
+  int bridge_index = -1;                    ///< -1: unknown (and for links)
+  int braid_index = -1;
+  std::vector<std::int64_t> alexander;      ///< coefficients, as KnotEntry::alexander
+  std::vector<int> components;              ///< a link's vertices per component; empty for a knot
+  std::vector<std::int64_t> conway;         ///< a link's ∇ (empty for a knot)
+  std::vector<std::int64_t> linking_numbers;  ///< a link's m × m linking numbers (empty for a knot)
+  int samples_used = 0;                     ///< [samples]
+  bool adaptive = false;
+  bool complete = true;
+  std::vector<double> score_history;        ///< [1] adaptive score after each batch
+  std::vector<LedgerRun> runs;
+  std::vector<std::string> attribute_names;  ///< k names (KnotEntry::attribute_names)
+  Eigen::MatrixXd attributes;               ///< m by k: every stored equilibrium's attributes
+  std::vector<int> state;                   ///< m: each equilibrium's state (index into `states`)
+  Eigen::MatrixXd linkage;                  ///< (m−1) by 4: complete-linkage merges (a, b, height, size)
+  std::vector<LedgerState> states;          ///< by increasing lowest energy
+
+  bool is_link() const { return components.size() > 1; }
+  int equilibria() const { return static_cast<int>(attributes.rows()); }
+  /// Column of an attribute by name; InputError naming the known ones otherwise.
+  int attribute_column(const std::string& attribute) const;
+  /// Runs that ended converged-stable.
+  int stable_runs() const;
+  /// Runs per status.
+  std::map<std::string, int> status_counts() const;
+  /// [s] summed relaxation time of the runs (one thread each).
+  double run_seconds() const;
+  /// min, median (the mean of the middle two for an even count) and max of
+  /// attribute `column` over the members of state `s`.
+  AttributeSpread spread(int s, int column) const;
+  /// The rows of the attribute table in state `s`, increasing.
+  std::vector<int> members(int s) const;
+};
+
+/// Where and how a ledger was made. Empty fields are "not recorded" (a
+/// ledger made from an existing data set knows neither its wall time nor
+/// the machine that ran it).
+struct LedgerProvenance {
+  double cut = 0.05;                   ///< [1] the states' cut in 1 − similarity
+  std::string commit;                  ///< source_commit() of the program that computed the runs
+  std::string created;                 ///< ISO 8601 time the ledger was written
+  std::string source;                  ///< what it summarises, e.g. "knots dataset --shard 3/20"
+  std::optional<int> cores;            ///< [1] hardware threads of the machine
+  std::optional<int> jobs;             ///< [1] worker threads of the run
+  std::optional<double> wall_seconds;  ///< [s] the run's wall time
+  std::optional<double> cpu_seconds;   ///< [s] the run's process CPU time (user + system)
+};
+
+struct Ledger {
+  DatasetMetadata parameters;          ///< the data set's parameters (metadata.hpp)
+  LedgerProvenance provenance;
+  std::vector<LedgerEntry> entries;    ///< in the data set's order
+};
+
+/// The ledger entry of a data set's knot: its states at `cut` (clusters_at_cut).
+LedgerEntry ledger_entry(const KnotEntry& entry, double cut);
+
+/// The ledger of a whole data-set file at `cut`, with `provenance`'s other fields.
+Ledger ledger_of_dataset(const std::string& dataset_path, const LedgerProvenance& provenance);
+
+/// The knots of a results folder (the experiments' layout) as ledger
+/// entries: DIR/dataset/dataset.h5, each knot's states at `cut`, when it
+/// exists; else the ledgers DIR/ledgers/*.ledger.h5 merged (their own cut).
+/// `source` (optional) receives which was read. InputError when neither exists.
+std::vector<LedgerEntry> read_results_entries(const std::string& folder, double cut, std::string* source = nullptr);
+
+/// Writes `ledger` to `path` (a temporary renamed into place: an existing
+/// file is replaced only by a complete one). Throws InputError when the
+/// file cannot be written, std::invalid_argument for an inconsistent ledger
+/// (tables of different lengths, curves of different sizes).
+void write_ledger(const std::string& path, const Ledger& ledger);
+
+/// Reads a ledger. A damaged file (checksum), another kind of file, a file
+/// without the checksum header or any table that contradicts another is
+/// refused with one InputError naming the file.
+Ledger read_ledger(const std::string& path);
+
+/// Whether `path` is a ledger (its root attribute `format`), checked
+/// without reading its tables: false for a data set; InputError for a file
+/// that is damaged or not HDF5.
+bool is_ledger_file(const std::string& path);
+
+/// The ledgers as one: equal parameters (DatasetMetadata::difference) and
+/// cut, each knot in one ledger only (InputError otherwise). Entries keep
+/// their order, ledger by ledger; the provenance keeps the cut and the
+/// parameters, sums wall and CPU time where every ledger records them, and
+/// lists the commits (comma-separated, each once) and sources.
+Ledger merge_ledgers(const std::vector<Ledger>& ledgers);
+
+/// Every ledger file (*.ledger.h5) in `folder`, in name order, merged. InputError for none.
+Ledger read_ledger_folder(const std::string& folder);
+
+}  // namespace ek

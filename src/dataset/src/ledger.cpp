@@ -1,0 +1,506 @@
+#include "ek/dataset/ledger.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <numeric>
+#include <set>
+
+#include "ek/core/atomic_file.hpp"
+#include "ek/core/errors.hpp"
+#include "ek/dataset/h5.hpp"
+#include "parameters_h5.hpp"
+
+namespace ek {
+namespace {
+
+constexpr const char* kFormat = "elastic-knots-ledger";
+constexpr std::int64_t kFormatVersion = 1;
+constexpr const char* kStable = "converged-stable";
+
+using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
+
+/// A knot's rows of the file's tables: [first, first + count).
+struct Rows {
+  std::int64_t runs_first = 0, runs = 0, equilibria_first = 0, equilibria = 0, linkage_first = 0, states_first = 0,
+               states = 0;
+  std::vector<std::int64_t> list() const {
+    return {runs_first, runs, equilibria_first, equilibria, linkage_first, states_first, states};
+  }
+};
+
+std::vector<std::string> attribute_union(const std::vector<LedgerEntry>& entries) {
+  std::vector<std::string> names;
+  for (const LedgerEntry& e : entries)
+    for (const std::string& a : e.attribute_names)
+      if (std::find(names.begin(), names.end(), a) == names.end()) names.push_back(a);
+  return names;
+}
+
+int vertices_of(const std::vector<LedgerEntry>& entries) {
+  int n = -1;
+  for (const LedgerEntry& e : entries)
+    for (const LedgerState& s : e.states) {
+      require(n < 0 || s.curve.rows() == n, "write_ledger: representative curves of different sizes");
+      n = static_cast<int>(s.curve.rows());
+    }
+  return std::max(n, 0);
+}
+
+void check_entry(const LedgerEntry& e) {
+  const auto m = e.attributes.rows();
+  require(e.attributes.cols() == static_cast<Eigen::Index>(e.attribute_names.size()),
+          "write_ledger: " + e.name + "'s attribute table does not match its names");
+  require(static_cast<Eigen::Index>(e.state.size()) == m, "write_ledger: " + e.name + " needs one state per equilibrium");
+  require(e.linkage.rows() == std::max<Eigen::Index>(m - 1, 0) && (e.linkage.rows() == 0 || e.linkage.cols() == 4),
+          "write_ledger: " + e.name + "'s linkage is not (m-1) by 4");
+  for (int s : e.state)
+    require(s >= 0 && s < static_cast<int>(e.states.size()), "write_ledger: " + e.name + " names a missing state");
+  for (const LedgerState& s : e.states)
+    require(s.representative >= 0 && s.representative < m, "write_ledger: " + e.name + " has a bad representative");
+  for (const LedgerRun& r : e.runs)
+    require(r.equilibrium >= -1 && r.equilibrium < m, "write_ledger: " + e.name + " has a run naming a missing row");
+}
+
+void write_provenance(hid_t f, const LedgerProvenance& p) {
+  h5::set_attr(f, "cut", p.cut);
+  h5::set_attr(f, "commit", p.commit);
+  h5::set_attr(f, "ledger_created", p.created);
+  h5::set_attr(f, "source", p.source);
+  if (p.cores) h5::set_attr(f, "cores", static_cast<std::int64_t>(*p.cores));
+  if (p.jobs) h5::set_attr(f, "jobs", static_cast<std::int64_t>(*p.jobs));
+  if (p.wall_seconds) h5::set_attr(f, "wall_seconds", *p.wall_seconds);
+  if (p.cpu_seconds) h5::set_attr(f, "cpu_seconds", *p.cpu_seconds);
+}
+
+LedgerProvenance read_provenance(hid_t f) {
+  LedgerProvenance p;
+  p.cut = h5::get_attr_double(f, "cut");
+  p.commit = h5::get_attr_string(f, "commit");
+  p.created = h5::get_attr_string(f, "ledger_created");
+  p.source = h5::get_attr_string(f, "source");
+  if (h5::has_attr(f, "cores")) p.cores = static_cast<int>(h5::get_attr_int(f, "cores"));
+  if (h5::has_attr(f, "jobs")) p.jobs = static_cast<int>(h5::get_attr_int(f, "jobs"));
+  if (h5::has_attr(f, "wall_seconds")) p.wall_seconds = h5::get_attr_double(f, "wall_seconds");
+  if (h5::has_attr(f, "cpu_seconds")) p.cpu_seconds = h5::get_attr_double(f, "cpu_seconds");
+  return p;
+}
+
+/// The knots' scalar fields, one group each, with the knot's table rows and
+/// its attribute columns (indices into the table's names).
+void write_knot(hid_t knots, const LedgerEntry& e, const Rows& rows, const std::vector<std::string>& columns) {
+  h5::Handle g = h5::create_group(knots, e.name);
+  const hid_t id = g.id();
+  h5::set_attr(id, "name", e.name);
+  h5::set_attr(id, "crossing_number", static_cast<std::int64_t>(e.crossing_number));
+  h5::set_attr(id, "bridge_index", static_cast<std::int64_t>(e.bridge_index));
+  h5::set_attr(id, "braid_index", static_cast<std::int64_t>(e.braid_index));
+  h5::set_attr(id, "alexander", e.alexander);
+  h5::set_attr(id, "samples_used", static_cast<std::int64_t>(e.samples_used));
+  h5::set_attr(id, "adaptive", static_cast<std::int64_t>(e.adaptive ? 1 : 0));
+  h5::set_attr(id, "complete", static_cast<std::int64_t>(e.complete ? 1 : 0));
+  h5::set_attr(id, "rows", rows.list());
+  std::vector<std::int64_t> own;
+  for (const std::string& a : e.attribute_names)
+    own.push_back(std::find(columns.begin(), columns.end(), a) - columns.begin());
+  h5::set_attr(id, "attribute_columns", own);
+  h5::write_doubles(id, "score_history", {e.score_history.size()}, e.score_history.data());
+  if (e.is_link()) {
+    h5::set_attr(id, "components", std::vector<std::int64_t>(e.components.begin(), e.components.end()));
+    h5::set_attr(id, "conway", e.conway);
+    h5::set_attr(id, "linking_numbers", e.linking_numbers);
+  }
+}
+
+/// Integer columns of one table, appended entry by entry.
+struct IntColumns {
+  std::vector<std::string> names;
+  std::vector<std::vector<std::int64_t>> values;
+  explicit IntColumns(std::vector<std::string> n) : names(std::move(n)), values(names.size()) {}
+  void write(hid_t group) const {
+    for (size_t c = 0; c < names.size(); ++c) h5::write_int64(group, names[c], {values[c].size()}, values[c].data());
+  }
+};
+
+}  // namespace
+
+int LedgerEntry::attribute_column(const std::string& attribute) const {
+  for (size_t k = 0; k < attribute_names.size(); ++k)
+    if (attribute_names[k] == attribute) return static_cast<int>(k);
+  std::string known;
+  for (const auto& a : attribute_names) known += (known.empty() ? "" : ", ") + a;
+  throw InputError("unknown attribute '" + attribute + "' (known: " + known + ")");
+}
+
+int LedgerEntry::stable_runs() const {
+  return static_cast<int>(std::count_if(runs.begin(), runs.end(), [](const LedgerRun& r) { return r.status == kStable; }));
+}
+
+std::map<std::string, int> LedgerEntry::status_counts() const {
+  std::map<std::string, int> out;
+  for (const LedgerRun& r : runs) ++out[r.status];
+  return out;
+}
+
+double LedgerEntry::run_seconds() const {
+  double s = 0.0;
+  for (const LedgerRun& r : runs) s += r.seconds;
+  return s;
+}
+
+std::vector<int> LedgerEntry::members(int s) const {
+  std::vector<int> out;
+  for (size_t i = 0; i < state.size(); ++i)
+    if (state[i] == s) out.push_back(static_cast<int>(i));
+  return out;
+}
+
+AttributeSpread LedgerEntry::spread(int s, int column) const {
+  require(s >= 0 && s < static_cast<int>(states.size()), "LedgerEntry::spread: no state " + std::to_string(s));
+  require(column >= 0 && column < attributes.cols(), "LedgerEntry::spread: no column " + std::to_string(column));
+  std::vector<double> v;
+  for (int i : members(s)) v.push_back(attributes(i, column));
+  require(!v.empty(), "LedgerEntry::spread: state " + std::to_string(s) + " has no member");
+  std::sort(v.begin(), v.end());
+  const size_t h = v.size() / 2;
+  return {v.front(), v.size() % 2 == 1 ? v[h] : 0.5 * (v[h - 1] + v[h]), v.back()};
+}
+
+void write_ledger(const std::string& path, const Ledger& ledger) {
+  for (const LedgerEntry& e : ledger.entries) check_entry(e);
+  const std::vector<std::string> columns = attribute_union(ledger.entries);
+  const int n = vertices_of(ledger.entries);
+  check_writable(path);
+  const std::string tmp = temporary_path(path);
+  try {
+    h5::Handle f = h5::create_file(tmp);
+    h5::set_attr(f.id(), "format", std::string(kFormat));
+    h5::set_attr(f.id(), "format_version", kFormatVersion);
+    detail::write_parameters(f.id(), ledger.parameters);
+    write_provenance(f.id(), ledger.provenance);
+    // status names, in order of first appearance
+    std::vector<std::string> statuses;
+    for (const LedgerEntry& e : ledger.entries)
+      for (const LedgerRun& r : e.runs)
+        if (std::find(statuses.begin(), statuses.end(), r.status) == statuses.end()) statuses.push_back(r.status);
+    IntColumns runs({"sample", "status", "equilibrium", "iterations", "topology_kept"});
+    std::vector<double> seconds, attributes, linkage, curves;
+    IntColumns eq({"state"});
+    IntColumns st({"representative", "members"});
+    std::vector<std::string> names;
+    std::vector<Rows> rows;
+    Rows at;
+    for (const LedgerEntry& e : ledger.entries) {
+      Rows r;
+      r.runs_first = at.runs_first;
+      r.runs = static_cast<std::int64_t>(e.runs.size());
+      r.equilibria_first = at.equilibria_first;
+      r.equilibria = e.attributes.rows();
+      r.linkage_first = at.linkage_first;
+      r.states_first = at.states_first;
+      r.states = static_cast<std::int64_t>(e.states.size());
+      for (const LedgerRun& x : e.runs) {
+        const auto code = std::find(statuses.begin(), statuses.end(), x.status) - statuses.begin();
+        const std::int64_t v[] = {x.sample, code, x.equilibrium, x.iterations, x.topology_kept ? 1 : 0};
+        for (size_t c = 0; c < 5; ++c) runs.values[c].push_back(v[c]);
+        seconds.push_back(x.seconds);
+      }
+      for (Eigen::Index i = 0; i < e.attributes.rows(); ++i) {
+        for (const std::string& name : columns) {
+          const auto k = std::find(e.attribute_names.begin(), e.attribute_names.end(), name);
+          attributes.push_back(k == e.attribute_names.end() ? std::nan("")
+                                                            : e.attributes(i, k - e.attribute_names.begin()));
+        }
+        eq.values[0].push_back(e.state[static_cast<size_t>(i)]);
+      }
+      for (Eigen::Index i = 0; i < e.linkage.rows(); ++i)
+        for (int c = 0; c < 4; ++c) linkage.push_back(e.linkage(i, c));
+      for (const LedgerState& s : e.states) {
+        st.values[0].push_back(s.representative);
+        st.values[1].push_back(s.members);
+        for (Eigen::Index v = 0; v < s.curve.rows(); ++v)
+          for (int c = 0; c < 3; ++c) curves.push_back(s.curve(v, c));
+      }
+      at.runs_first += r.runs;
+      at.equilibria_first += r.equilibria;
+      at.linkage_first += e.linkage.rows();
+      at.states_first += r.states;
+      names.push_back(e.name);
+      rows.push_back(r);
+    }
+    h5::write_strings(f.id(), "knot_names", names);
+    h5::write_strings(f.id(), "status_names", statuses);
+    {
+      h5::Handle g = h5::create_group(f.id(), "runs");
+      runs.write(g.id());
+      h5::write_doubles(g.id(), "seconds", {seconds.size()}, seconds.data());
+    }
+    {
+      h5::Handle g = h5::create_group(f.id(), "equilibria");
+      h5::write_strings(g.id(), "attribute_names", columns);
+      h5::write_doubles(g.id(), "attributes", {static_cast<hsize_t>(at.equilibria_first), columns.size()},
+                        attributes.data());
+      eq.write(g.id());
+      h5::write_doubles(g.id(), "linkage", {static_cast<hsize_t>(at.linkage_first), 4}, linkage.data());
+    }
+    {
+      h5::Handle g = h5::create_group(f.id(), "states");
+      st.write(g.id());
+      h5::write_float32(g.id(), "curves", {static_cast<hsize_t>(at.states_first), static_cast<hsize_t>(n), 3},
+                        curves.data());
+    }
+    {
+      h5::Handle knots = h5::create_group(f.id(), "knots");
+      for (size_t k = 0; k < ledger.entries.size(); ++k) write_knot(knots.id(), ledger.entries[k], rows[k], columns);
+    }
+    if (H5Fflush(f.id(), H5F_SCOPE_GLOBAL) < 0 || !f.close()) throw InputError("cannot write ledger '" + path + "'");
+    h5::seal(tmp);
+    atomic_replace(tmp, path);
+  } catch (...) {
+    std::remove(tmp.c_str());
+    throw;
+  }
+}
+
+namespace {
+
+/// Reads a ledger file's tables back into entries, checking every length,
+/// range and index the writer guarantees.
+class LedgerFileReader {
+ public:
+  LedgerFileReader(hid_t file, std::string path) : f_(file), path_(std::move(path)) {}
+
+  [[noreturn]] void damaged(const std::string& what) const {
+    throw InputError("ledger '" + path_ + "' is damaged (" + what + ")");
+  }
+
+  Ledger read() {
+    if (!h5::has_attr(f_, "format") || h5::get_attr_string(f_, "format") != kFormat)
+      throw InputError("'" + path_ + "' is an HDF5 file but not an elastic-knots ledger");
+    const auto version = h5::get_attr_int(f_, "format_version");
+    if (version != kFormatVersion)
+      throw InputError("'" + path_ + "' has ledger format version " + std::to_string(version) + ", expected " +
+                       std::to_string(kFormatVersion));
+    Ledger out;
+    out.parameters = detail::read_parameters(f_, path_);
+    out.provenance = read_provenance(f_);
+    if (!(out.provenance.cut > 0.0 && out.provenance.cut < 1.0)) damaged("its cut is not in (0, 1)");
+    read_tables();
+    const std::vector<std::string> names = h5::read_strings(f_, "knot_names");
+    h5::Handle knots = h5::open_group(f_, "knots");
+    for (const std::string& name : names) out.entries.push_back(entry(knots.id(), name));
+    if (runs_next_ != runs_[0].size() || eq_next_ != state_.size() || linkage_next_ != linkage_rows_ ||
+        states_next_ != representative_.size())
+      damaged("its tables hold rows that no knot owns");
+    return out;
+  }
+
+ private:
+  std::vector<std::int64_t> ints(hid_t g, const char* name, size_t length, const std::string& table) const {
+    std::vector<hsize_t> shape;
+    auto v = h5::read_int64(g, name, &shape);
+    if (shape.size() != 1 || v.size() != length) damaged(table + "/" + name + " is not one value per row");
+    return v;
+  }
+
+  void read_tables() {
+    statuses_ = h5::read_strings(f_, "status_names");
+    {
+      h5::Handle g = h5::open_group(f_, "runs");
+      seconds_ = h5::read_doubles(g.id(), "seconds");
+      for (const char* c : {"sample", "status", "equilibrium", "iterations", "topology_kept"})
+        runs_.push_back(ints(g.id(), c, seconds_.size(), "runs"));
+    }
+    {
+      h5::Handle g = h5::open_group(f_, "equilibria");
+      columns_ = h5::read_strings(g.id(), "attribute_names");
+      std::vector<hsize_t> shape;
+      attributes_ = h5::read_doubles(g.id(), "attributes", &shape);
+      if (shape.size() != 2 || shape[1] != columns_.size()) damaged("the attribute table is not m by k");
+      state_ = ints(g.id(), "state", shape[0], "equilibria");
+      linkage_ = h5::read_doubles(g.id(), "linkage", &shape);
+      if (shape.size() != 2 || shape[1] != 4) damaged("the linkage table does not have 4 columns");
+      linkage_rows_ = shape[0];
+    }
+    {
+      h5::Handle g = h5::open_group(f_, "states");
+      std::vector<hsize_t> shape;
+      curves_ = h5::read_doubles(g.id(), "curves", &shape);
+      if (shape.size() != 3 || shape[2] != 3) damaged("the curves are not an [s, n, 3] array");
+      n_ = shape[1];
+      representative_ = ints(g.id(), "representative", shape[0], "states");
+      members_ = ints(g.id(), "members", shape[0], "states");
+    }
+  }
+
+  /// One knot: its rows of every table, which follow the previous knot's.
+  LedgerEntry entry(hid_t knots, const std::string& name) {
+    h5::Handle g = h5::open_group(knots, name);
+    const hid_t id = g.id();
+    LedgerEntry e;
+    e.name = h5::get_attr_string(id, "name");
+    if (e.name != name) damaged("knot group " + name + " has the name attribute " + e.name);
+    e.crossing_number = static_cast<int>(h5::get_attr_int(id, "crossing_number"));
+    e.bridge_index = static_cast<int>(h5::get_attr_int(id, "bridge_index"));
+    e.braid_index = static_cast<int>(h5::get_attr_int(id, "braid_index"));
+    e.alexander = h5::get_attr_ints(id, "alexander");
+    e.samples_used = static_cast<int>(h5::get_attr_int(id, "samples_used"));
+    e.adaptive = h5::get_attr_int(id, "adaptive") != 0;
+    e.complete = h5::get_attr_int(id, "complete") != 0;
+    std::vector<hsize_t> shape;
+    e.score_history = h5::read_doubles(id, "score_history", &shape);
+    if (shape.size() != 1) damaged(name + "'s score_history is not a list");
+    if (h5::has_attr(id, "components")) {
+      for (std::int64_t c : h5::get_attr_ints(id, "components")) {
+        if (c < 4 || c > (1 << 24)) damaged(name + " has a component of " + std::to_string(c) + " vertices");
+        e.components.push_back(static_cast<int>(c));
+      }
+      e.conway = h5::get_attr_ints(id, "conway");
+      e.linking_numbers = h5::get_attr_ints(id, "linking_numbers");
+      if (e.components.size() < 2 || e.linking_numbers.size() != e.components.size() * e.components.size())
+        damaged(name + "'s link attributes do not fit its components");
+    }
+    const std::vector<std::int64_t> r = h5::get_attr_ints(id, "rows");
+    if (r.size() != 7) damaged(name + "'s rows are not 7 numbers");
+    const auto m = r[3];
+    if (r[0] != static_cast<std::int64_t>(runs_next_) || r[2] != static_cast<std::int64_t>(eq_next_) ||
+        r[4] != static_cast<std::int64_t>(linkage_next_) || r[5] != static_cast<std::int64_t>(states_next_) ||
+        r[1] < 0 || m < 0 || r[6] < 0 || runs_next_ + r[1] > runs_[0].size() || eq_next_ + m > state_.size() ||
+        linkage_next_ + std::max<std::int64_t>(m - 1, 0) > linkage_rows_ ||
+        states_next_ + r[6] > representative_.size() || (m > 0) != (r[6] > 0))
+      damaged(name + "'s rows do not follow the previous knot's within the tables");
+    read_runs(e, static_cast<size_t>(r[1]), m);
+    read_equilibria(e, h5::get_attr_ints(id, "attribute_columns"), m, r[6]);
+    read_states(e, static_cast<size_t>(r[6]), m);
+    return e;
+  }
+
+  void read_runs(LedgerEntry& e, size_t count, std::int64_t m) {
+    for (size_t k = runs_next_; k < runs_next_ + count; ++k) {
+      const std::int64_t status = runs_[1][k], equilibrium = runs_[2][k];
+      if (status < 0 || status >= static_cast<std::int64_t>(statuses_.size()) || equilibrium < -1 || equilibrium >= m)
+        damaged(e.name + "'s run " + std::to_string(k - runs_next_) + " names a missing status or row");
+      e.runs.push_back({static_cast<int>(runs_[0][k]), statuses_[static_cast<size_t>(status)],
+                        static_cast<int>(equilibrium), static_cast<int>(runs_[3][k]), seconds_[k], runs_[4][k] != 0});
+    }
+    runs_next_ += count;
+  }
+
+  void read_equilibria(LedgerEntry& e, const std::vector<std::int64_t>& own, std::int64_t m, std::int64_t states) {
+    const size_t k = columns_.size();
+    for (std::int64_t c : own) {
+      if (c < 0 || c >= static_cast<std::int64_t>(k)) damaged(e.name + " names a missing attribute column");
+      e.attribute_names.push_back(columns_[static_cast<size_t>(c)]);
+    }
+    e.attributes.resize(m, static_cast<Eigen::Index>(own.size()));
+    for (std::int64_t i = 0; i < m; ++i) {
+      for (size_t c = 0; c < own.size(); ++c)
+        e.attributes(i, static_cast<Eigen::Index>(c)) = attributes_[(eq_next_ + static_cast<size_t>(i)) * k + static_cast<size_t>(own[c])];
+      const std::int64_t s = state_[eq_next_ + static_cast<size_t>(i)];
+      if (s < 0 || s >= states) damaged(e.name + "'s equilibrium " + std::to_string(i) + " names a missing state");
+      e.state.push_back(static_cast<int>(s));
+    }
+    const std::int64_t links = std::max<std::int64_t>(m - 1, 0);
+    e.linkage = Eigen::Map<const RowMajor>(linkage_.data() + linkage_next_ * 4, links, 4);
+    eq_next_ += static_cast<size_t>(m);
+    linkage_next_ += static_cast<size_t>(links);
+  }
+
+  void read_states(LedgerEntry& e, size_t count, std::int64_t m) {
+    for (size_t s = states_next_; s < states_next_ + count; ++s) {
+      LedgerState x;
+      x.representative = static_cast<int>(representative_[s]);
+      x.members = static_cast<int>(members_[s]);
+      if (representative_[s] < 0 || representative_[s] >= m || x.members < 1)
+        damaged(e.name + "'s state " + std::to_string(s - states_next_) + " has a missing representative");
+      x.curve = Eigen::Map<const Points>(curves_.data() + s * n_ * 3, static_cast<Eigen::Index>(n_), 3);
+      if (!x.curve.allFinite()) damaged(e.name + "'s state " + std::to_string(s - states_next_) + " has a coordinate that is not finite");
+      e.states.push_back(std::move(x));
+    }
+    for (size_t s = 0; s < count; ++s)
+      if (static_cast<int>(e.members(static_cast<int>(s)).size()) != e.states[s].members)
+        damaged(e.name + "'s state " + std::to_string(s) + " does not have its member count");
+    states_next_ += count;
+  }
+
+  hid_t f_;
+  std::string path_;
+  std::vector<std::string> statuses_, columns_;
+  std::vector<std::vector<std::int64_t>> runs_;
+  std::vector<double> seconds_, attributes_, linkage_, curves_;
+  std::vector<std::int64_t> state_, representative_, members_;
+  size_t n_ = 0, linkage_rows_ = 0;
+  size_t runs_next_ = 0, eq_next_ = 0, linkage_next_ = 0, states_next_ = 0;
+};
+
+}  // namespace
+
+Ledger read_ledger(const std::string& path) {
+  if (!h5::verify(path, "ledger")) throw InputError("'" + path + "' is not a ledger (it has no checksum header)");
+  try {
+    h5::Handle f = h5::open_file(path, false);
+    return LedgerFileReader(f.id(), path).read();
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    if (message.find("'" + path + "'") != std::string::npos) throw;
+    throw InputError("ledger '" + path + "': " + message);
+  }
+}
+
+bool is_ledger_file(const std::string& path) {
+  if (!h5::verify(path, "data set or ledger")) return false;  // a data set written before checksums
+  h5::Handle f = h5::open_file(path, false);
+  return h5::has_attr(f.id(), "format") && h5::get_attr_string(f.id(), "format") == kFormat;
+}
+
+Ledger merge_ledgers(const std::vector<Ledger>& ledgers) {
+  if (ledgers.empty()) throw InputError("merge_ledgers: no ledger");
+  Ledger out;
+  out.parameters = ledgers.front().parameters;
+  out.provenance.cut = ledgers.front().provenance.cut;
+  std::set<std::string> names, commits;
+  bool wall = true, cpu = true;
+  double wall_s = 0.0, cpu_s = 0.0;
+  for (const Ledger& l : ledgers) {
+    if (const std::string d = out.parameters.difference(l.parameters); !d.empty())
+      throw InputError("ledgers with different parameters cannot be merged: " + d);
+    if (l.provenance.cut != out.provenance.cut)
+      throw InputError("ledgers with different cuts cannot be merged: " + std::to_string(out.provenance.cut) + " vs " +
+                       std::to_string(l.provenance.cut));
+    out.parameters.forget_unrecorded(l.parameters);
+    for (const LedgerEntry& e : l.entries) {
+      if (!names.insert(e.name).second) throw InputError("knot " + e.name + " is in two of the ledgers");
+      out.entries.push_back(e);
+    }
+    if (!l.provenance.commit.empty() && commits.insert(l.provenance.commit).second)
+      out.provenance.commit += (out.provenance.commit.empty() ? "" : ",") + l.provenance.commit;
+    out.provenance.source += (out.provenance.source.empty() ? "" : "; ") + l.provenance.source;
+    out.provenance.created = std::max(out.provenance.created, l.provenance.created);
+    wall = wall && l.provenance.wall_seconds.has_value();
+    cpu = cpu && l.provenance.cpu_seconds.has_value();
+    wall_s += l.provenance.wall_seconds.value_or(0.0);
+    cpu_s += l.provenance.cpu_seconds.value_or(0.0);
+    if (l.provenance.cores && (!out.provenance.cores || *out.provenance.cores == *l.provenance.cores))
+      out.provenance.cores = l.provenance.cores;
+  }
+  if (wall) out.provenance.wall_seconds = wall_s;
+  if (cpu) out.provenance.cpu_seconds = cpu_s;
+  return out;
+}
+
+Ledger read_ledger_folder(const std::string& folder) {
+  std::vector<std::string> files;
+  std::error_code ec;
+  for (const auto& p : std::filesystem::directory_iterator(folder, ec)) {
+    const std::string name = p.path().filename().string();
+    if (name.size() > 10 && name.compare(name.size() - 10, 10, ".ledger.h5") == 0) files.push_back(p.path().string());
+  }
+  if (ec) throw InputError("cannot read the ledger folder '" + folder + "': " + ec.message());
+  if (files.empty()) throw InputError("no ledger (*.ledger.h5) in '" + folder + "'");
+  std::sort(files.begin(), files.end());
+  std::vector<Ledger> ledgers;
+  for (const std::string& f : files) ledgers.push_back(read_ledger(f));
+  return merge_ledgers(ledgers);
+}
+
+}  // namespace ek

@@ -1,0 +1,65 @@
+// The ledger of a data set (ledger.hpp): its knots' states at a cut. Apart
+// from the file (ledger.cpp), which the parsers-only build reads without the
+// pipeline.
+#include "ek/dataset/ledger.hpp"
+#include "ek/dataset/pipeline.hpp"
+
+#include <filesystem>
+
+#include "ek/core/errors.hpp"
+
+namespace ek {
+
+LedgerEntry ledger_entry(const KnotEntry& k, double cut) {
+  LedgerEntry e;
+  e.name = k.name;
+  e.crossing_number = k.crossing_number;
+  e.bridge_index = k.bridge_index;
+  e.braid_index = k.braid_index;
+  e.alexander = k.alexander;
+  e.components = k.components;
+  e.conway = k.conway;
+  e.linking_numbers = k.linking_numbers;
+  e.samples_used = k.samples_used;
+  e.adaptive = k.adaptive;
+  e.complete = k.complete;
+  e.score_history = k.score_history;
+  for (const RunRecord& r : k.runs)
+    e.runs.push_back({r.sample, r.status, r.equilibrium, r.iterations, r.seconds, r.alexander_preserved});
+  e.attribute_names = k.attribute_names;
+  e.attributes = k.attributes;
+  e.linkage = k.linkage;
+  if (k.equilibria.empty()) return e;
+  const std::vector<StateCluster> clusters = clusters_at_cut(k, cut, &e.state);
+  for (const StateCluster& c : clusters)
+    e.states.push_back({c.representative, static_cast<int>(c.members.size()),
+                        k.equilibria[static_cast<size_t>(c.representative)]});
+  return e;
+}
+
+Ledger ledger_of_dataset(const std::string& path, const LedgerProvenance& provenance) {
+  const DatasetReader reader(path);
+  Ledger out;
+  out.parameters = reader.metadata();
+  out.provenance = provenance;
+  for (const std::string& name : reader.knot_names())
+    out.entries.push_back(ledger_entry(reader.read(name), provenance.cut));
+  return out;
+}
+
+std::vector<LedgerEntry> read_results_entries(const std::string& folder, double cut, std::string* source) {
+  const std::string dataset = folder + "/dataset/dataset.h5", ledgers = folder + "/ledgers";
+  std::vector<LedgerEntry> out;
+  if (std::filesystem::exists(dataset)) {
+    if (source) *source = dataset;
+    const DatasetReader reader(dataset);
+    for (const std::string& name : reader.knot_names()) out.push_back(ledger_entry(reader.read(name), cut));
+    return out;
+  }
+  if (!std::filesystem::is_directory(ledgers))
+    throw InputError("neither a data set '" + dataset + "' nor a ledger folder '" + ledgers + "'");
+  if (source) *source = ledgers;
+  return read_ledger_folder(ledgers).entries;
+}
+
+}  // namespace ek

@@ -1,0 +1,102 @@
+// Ledgers of real data sets (ledger.hpp): `knots dataset --ledger`, the
+// states they keep, and a knot rerun from its ledger entry reproducing them.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "cli_runner.hpp"
+#include "ek/core/paths.hpp"
+#include "ek/dataset/dataset_file.hpp"
+#include "ek/dataset/ledger.hpp"
+#include "ek/dataset/pipeline.hpp"
+#include "ek/dataset/run.hpp"
+
+using ek::clitest::run;
+using ek::clitest::temp_dir;
+using namespace ek;
+
+namespace {
+
+/// Equal, NaN where NaN (the stiffness column of a run without it).
+bool same_table(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
+  return a.rows() == b.rows() && a.cols() == b.cols() &&
+         (a.array() == b.array() || (a.array().isNaN() && b.array().isNaN())).all();
+}
+
+const std::string kRun = " --samples 6 -n 100 --no-stiffness --novelty-distance 0.05 --quiet --jobs 2 ";
+
+}  // namespace
+
+// `knots dataset --ledger` writes, beside the data set, a ledger whose states
+// are the data set's clusters at the novelty distance: the same members, the
+// representative's curve (to float32), every attribute row and run, and the
+// provenance of the run (commit, cores, wall and CPU time, the command).
+TEST(Ledger, DatasetRunWritesTheLedgerOfItsStates) {
+  const std::string dir = temp_dir("ledger_run");
+  const std::string data = dir + "/d.h5", ledger = dir + "/d.ledger.h5";
+  const auto r = run("dataset --names 3_1,5_2" + kRun + "-o " + data + " --ledger " + ledger);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const Ledger l = read_ledger(ledger);
+  const DatasetReader d(data);
+  EXPECT_EQ(l.parameters.difference(d.metadata()), "");
+  EXPECT_EQ(l.provenance.cut, 0.05);
+  EXPECT_EQ(l.provenance.commit, source_commit());
+  EXPECT_EQ(l.provenance.jobs, 2);
+  EXPECT_GT(*l.provenance.wall_seconds, 0.0);
+  EXPECT_GT(*l.provenance.cpu_seconds, 0.0);
+  EXPECT_NE(l.provenance.source.find("dataset --names 3_1,5_2"), std::string::npos) << l.provenance.source;
+  ASSERT_EQ(l.entries.size(), 2u);
+  for (const LedgerEntry& e : l.entries) {
+    const KnotEntry k = d.read(e.name);
+    std::vector<int> rank;
+    const std::vector<StateCluster> clusters = clusters_at_cut(k, 0.05, &rank);
+    EXPECT_EQ(e.state, rank);
+    EXPECT_TRUE(same_table(e.attributes, k.attributes));
+    EXPECT_EQ(e.runs.size(), k.runs.size());
+    ASSERT_EQ(e.states.size(), clusters.size());
+    for (size_t s = 0; s < clusters.size(); ++s) {
+      EXPECT_EQ(e.states[s].members, static_cast<int>(clusters[s].members.size()));
+      EXPECT_EQ(e.states[s].representative, clusters[s].representative);
+      const Points& x = k.equilibria[static_cast<size_t>(clusters[s].representative)];
+      EXPECT_LE((e.states[s].curve - x).cwiseAbs().maxCoeff(), 1e-6 * x.cwiseAbs().maxCoeff());
+    }
+  }
+  // describe reads it; merge of ledgers works; a ledger from the data set alone has no wall time
+  const auto desc = run("describe " + ledger + " --states");
+  ASSERT_EQ(desc.status, 0) << desc.err;
+  EXPECT_NE(desc.out.find("5_2: 6 samples"), std::string::npos) << desc.out;
+  const auto again = run("ledger " + data + " -o " + dir + "/again.ledger.h5");
+  ASSERT_EQ(again.status, 0) << again.err;
+  EXPECT_FALSE(read_ledger(dir + "/again.ledger.h5").provenance.wall_seconds.has_value());
+  const auto merged = run("merge " + ledger + " " + dir + "/again.ledger.h5 -o " + dir + "/m.ledger.h5");
+  EXPECT_EQ(merged.status, 2) << merged.err;  // the same knots twice
+  EXPECT_NE(merged.err.find("in two of the ledgers"), std::string::npos) << merged.err;
+}
+
+// Rerunning a knot from its ledger entry (the ledger's parameters, the
+// knot's name, its samples) gives the same distinct states: the same number,
+// member counts and representatives' energies (bit for bit: relaxations are
+// deterministic), and curves equal to float32.
+TEST(Ledger, RerunFromTheLedgerReproducesTheStates) {
+  const std::string dir = temp_dir("ledger_rerun");
+  const std::string data = dir + "/d.h5", ledger = dir + "/d.ledger.h5";
+  ASSERT_EQ(run("dataset --names 4_1" + kRun + "-o " + data + " --ledger " + ledger).status, 0);
+  const Ledger l = read_ledger(ledger);
+  const LedgerEntry& e = l.entries.at(0);
+  // the rerun: a fresh data set of the same knot with the options the ledger records
+  const std::string again = dir + "/again.h5";
+  const auto r = run("explore " + e.name + " --samples " + std::to_string(e.samples_used) +
+                     " -n " + std::to_string(*l.parameters.vertices) + " --seed " + std::to_string(*l.parameters.seed) +
+                     " --no-stiffness --novelty-distance " + std::to_string(l.provenance.cut) + " --quiet -o " + again);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const DatasetReader d(again);
+  EXPECT_EQ(d.metadata().difference(l.parameters), "");
+  const LedgerEntry f = ledger_entry(d.read(e.name), l.provenance.cut);
+  ASSERT_EQ(f.states.size(), e.states.size());
+  const int energy = e.attribute_column("energy");
+  for (size_t s = 0; s < e.states.size(); ++s) {
+    EXPECT_EQ(f.states[s].members, e.states[s].members);
+    EXPECT_EQ(f.attributes(f.states[s].representative, energy), e.attributes(e.states[s].representative, energy));
+    EXPECT_LE((f.states[s].curve - e.states[s].curve).cwiseAbs().maxCoeff(), 1e-5);
+  }
+}
