@@ -38,6 +38,7 @@ ek::Ledger valid_ledger(FuzzedDataProvider& in) {
   for (int k = 0; k < knots; ++k) {
     ek::LedgerEntry e;
     e.name = "k" + std::to_string(k);
+    e.alexander = {1, -1, 1};
     e.attribute_names = {"energy", "threedim"};
     const int m = in.ConsumeIntegralInRange<int>(0, 4), states = m == 0 ? 0 : in.ConsumeIntegralInRange<int>(1, m);
     e.attributes = Eigen::MatrixXd::Constant(m, 2, 1.0);

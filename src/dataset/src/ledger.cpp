@@ -49,6 +49,7 @@ int vertices_of(const std::vector<LedgerEntry>& entries) {
 
 void check_entry(const LedgerEntry& e) {
   const auto m = e.attributes.rows();
+  require(!e.alexander.empty(), "write_ledger: " + e.name + " has no Alexander polynomial");
   require(e.attributes.cols() == static_cast<Eigen::Index>(e.attribute_names.size()),
           "write_ledger: " + e.name + "'s attribute table does not match its names");
   require(static_cast<Eigen::Index>(e.state.size()) == m, "write_ledger: " + e.name + " needs one state per equilibrium");
