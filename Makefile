@@ -13,7 +13,7 @@ CONFIGURE = cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DEK_KNOT_TABLE=$(
             -DPython3_EXECUTABLE=$(PYTHON) $(CMAKE_ARGS)
 CTEST     = cd $(BUILD) && KNOT_TABLE=$(KNOT_TABLE) ctest --output-on-failure -j$(JOBS)
 
-.PHONY: help help-experiments deps configure build python test unit sanitize fuzz fuzz-build fuzz-test fuzz-seeds stress slurm-test bench figures experiments studies claims paper-open manifest compare-methods clean \
+.PHONY: ledger-results ledger-shards help help-experiments deps configure build python test unit sanitize fuzz fuzz-build fuzz-test fuzz-seeds stress slurm-test bench figures experiments studies claims paper-open manifest compare-methods clean \
         explorer explorer-screenshots serve browser
 
 help:
@@ -24,6 +24,8 @@ help:
 	@echo "make claims    the paper checks on the results of SCALE (make figures ends with it; docs/reproducing.md)"
 	@echo "make studies   the studies beside the paper (the periodic braids' link scan) at SCALE, and their checks"
 	@echo "make paper-open  the claims not reproduced (paper_checks/open_claims.cpp), values printed"
+	@echo "make ledger-shards SCALE=sample12|paper10  run the scale shard by shard, committing each finished shard's ledger"
+	@echo "make ledger-results  Fig. 9, planarity and the sampling summary of the committed ledgers (docs/results/), and their checks"
 	@echo "make compare-methods  the default relaxation method against the direct one (hybrid) on the SCALE data sets"
 	@echo "make explorer  the data-set explorer of SCALE's data set in results/<scale>/explorer/ (docs/explorer.md)"
 	@echo "make serve     serve that data set's explorer on 127.0.0.1:8000"
@@ -204,6 +206,34 @@ explorer-screenshots: explorer
 
 manifest:
 	$(PYTHON) scripts/manifest.py
+
+# ---- the committed paper-scale results (docs/reproducing.md, "The ledgers") ----
+# ledger-shards: the paper-scale data set of SCALE (sample12 or paper10) shard
+# by shard in the background at the lowest priority, each finished shard's
+# ledger committed under docs/results/SCALE/ledgers/ (scripts/ledger_shards.sh;
+# progress in results/SCALE/shards/progress.log). ledger-results: those
+# ledgers analysed again without any relaxation: the sampling summary
+# (knots describe --summary), exp_milnor and exp_planarity, Fig. 9 and the
+# planarity histogram, and the data-set claims PaperMilnor.* and
+# PaperPlanarity.* checked on them, for every scale that has ledgers.
+LEDGER_SCALES ?= sample12 paper10
+ledger-shards: build
+	scripts/ledger_shards.sh $(SCALE) --commit --nice
+
+ledger-results: build
+	@for s in $(LEDGER_SCALES); do \
+	  d=docs/results/$$s; \
+	  if ! ls $$d/ledgers/*.ledger.h5 > /dev/null 2>&1; then echo "== $$s: no ledgers yet"; continue; fi; \
+	  echo "== $$s: $$(ls $$d/ledgers/*.ledger.h5 | wc -l) ledgers"; \
+	  $(BUILD)/bin/knots describe $$d/ledgers --summary > $$d/ledgers_summary.json.part && \
+	    mv $$d/ledgers_summary.json.part $$d/ledgers_summary.json && \
+	  $(EXP)/exp_milnor --scale $$s --out $$d/milnor && \
+	  $(EXP)/exp_planarity --scale $$s --out $$d/planarity && \
+	  MPLBACKEND=Agg $(PYTHON) figures/fig09_milnor.py --results $$d --out $$d && \
+	  MPLBACKEND=Agg $(PYTHON) figures/fig_planarity.py --results $$d --out $$d && \
+	  EK_PAPER_RESULTS=$(CURDIR)/$$d KNOT_TABLE=$(KNOT_TABLE) $(BUILD)/paper_checks/check_milnor && \
+	  EK_PAPER_RESULTS=$(CURDIR)/$$d KNOT_TABLE=$(KNOT_TABLE) $(BUILD)/paper_checks/check_planarity || exit 1; \
+	done
 
 # The default relaxation method (multilevel) against the direct one (hybrid): both
 # methods' data sets and their paper checks, then their comparison

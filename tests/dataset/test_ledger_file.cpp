@@ -56,6 +56,7 @@ Ledger sample_ledger() {
   l.provenance.wall_seconds = 12.5;
   l.provenance.cpu_seconds = 24.0;
   l.entries = {sample_entry("5_2", 7, 3, 40), sample_entry("3_1", 1, 1, 40), sample_entry("4_1", 0, 0, 40)};
+  l.entries[0].states[2].curve = Points(0, 3);  // beyond the curves kept
   return l;
 }
 
@@ -72,8 +73,9 @@ void spit(const std::string& path, const std::string& bytes) {
 
 }  // namespace
 
-// Every field reads back: integers and attributes exactly, curves to float32
-// (relative 6e-8 of the coordinates).
+// Every field reads back: integers and attributes exactly, the kept curves
+// within half the quantum (each coordinate rounded to the grid), a state
+// without a kept curve without one.
 TEST(LedgerFile, RoundTrip) {
   const std::string path = ::testing::TempDir() + "round.ledger.h5";
   const Ledger a = sample_ledger();
@@ -104,11 +106,15 @@ TEST(LedgerFile, RoundTrip) {
     ASSERT_EQ(y.states.size(), x.states.size());
     for (size_t s = 0; s < x.states.size(); ++s) {
       EXPECT_EQ(y.states[s].members, x.states[s].members);
-      EXPECT_LE((y.states[s].curve - x.states[s].curve).cwiseAbs().maxCoeff(),
-                6e-8 * x.states[s].curve.cwiseAbs().maxCoeff());
+      ASSERT_EQ(y.states[s].curve.rows(), x.states[s].curve.rows());
+      if (x.states[s].curve.rows() > 0)
+        EXPECT_LE((y.states[s].curve - x.states[s].curve).cwiseAbs().maxCoeff(), 0.5 * a.provenance.curve_quantum * (1 + 1e-9));
     }
   }
   EXPECT_EQ(b.entries[0].stable_runs(), 7);
+  EXPECT_EQ(b.entries[0].representative_sample(1), 1);
+  EXPECT_EQ(b.provenance.curves_per_knot, a.provenance.curves_per_knot);
+  EXPECT_EQ(b.provenance.curve_quantum, a.provenance.curve_quantum);
   EXPECT_EQ(b.entries[0].status_counts().at("max-iterations"), 1);
 }
 

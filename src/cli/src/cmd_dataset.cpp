@@ -32,9 +32,10 @@ double cpu_seconds() {
 /// commit, command line, machine, wall and CPU time (of this invocation: a
 /// resumed run's earlier parts are not in them, which `source` says).
 void write_run_ledger(const DatasetRunOptions& ro, const DatasetRunSummary& s, int argc, char** argv,
-                      const std::string& path) {
+                      const std::string& path, int curves) {
   LedgerProvenance p;
   p.cut = ro.explore.novelty_distance;
+  p.curves_per_knot = curves;
   p.commit = source_commit();
   p.created = now_iso8601();
   p.source = "knots";
@@ -52,6 +53,7 @@ void write_run_ledger(const DatasetRunOptions& ro, const DatasetRunSummary& s, i
 
 int cmd_dataset(int argc, char** argv) {
   std::string out, names, shard = "1/1", ledger;
+  int ledger_curves = LedgerProvenance{}.curves_per_knot;
   std::optional<int> max_crossings, min_crossings;
   std::optional<double> stratified;
   bool json = false;
@@ -70,10 +72,13 @@ int cmd_dataset(int argc, char** argv) {
   args.option("--ledger", &ledger,
               "also write the data set's ledger (its states at the novelty distance, runs, attributes, provenance) "
               "to this file once the data set is complete");
+  args.option("--ledger-curves", &ledger_curves,
+              "curves the ledger keeps per knot: those of its lowest-energy states (default 16)");
   add_explore_options(args, a);
   args.flag("--json", &json, "print a JSON summary");
   if (!args.parse(argc, argv)) return 0;
   if (out.empty()) throw InputError("missing -o DATASET.h5");
+  if (ledger_curves < 0) throw InputError("--ledger-curves must be 0 or more");
   if (max_crossings.has_value() == !names.empty()) throw InputError("give exactly one of --max-crossings and --names");
   DatasetRunOptions ro;
   ro.output = out;
@@ -120,7 +125,7 @@ int cmd_dataset(int argc, char** argv) {
   ro.explore = a.options;
   ro.progress = !a.quiet && !json;
   const DatasetRunSummary s = run_dataset(ro);
-  if (!ledger.empty()) write_run_ledger(ro, s, argc, argv, ledger);
+  if (!ledger.empty()) write_run_ledger(ro, s, argc, argv, ledger, ledger_curves);
   if (json) {
     Json j;
     j["output"] = out;

@@ -1,4 +1,4 @@
-// knots ledger INPUT... -o OUT.ledger.h5 [--cut C] [--json]
+// knots ledger INPUT... -o OUT.ledger.h5 [--cut C] [--curves K] [--json]
 // A ledger (docs/dataset-format.md, "Ledgers") of data sets, or ledgers
 // merged: each input is a data set (its states at the cut) or a ledger.
 #include <iostream>
@@ -17,17 +17,21 @@ int cmd_ledger(int argc, char** argv) {
   std::string first, out;
   std::vector<std::string> rest;
   std::optional<double> cut;
+  int curves = LedgerProvenance{}.curves_per_knot;
   bool json = false;
-  ArgParser args("ledger", "INPUT ... -o OUT.ledger.h5 [--cut C] [--json]");
+  ArgParser args("ledger", "INPUT ... -o OUT.ledger.h5 [--cut C] [--curves K] [--json]");
   args.positional("INPUT", &first, "a data set (its states at the cut) or a ledger");
   args.rest("...", &rest, "further data sets or ledgers (same parameters and cut; each knot in one of them)");
   args.option("-o,--output", &out, "the ledger to write (written atomically)");
   args.option("--cut", &cut, "[1] the states' cut in 1 - similarity for data-set inputs (default 0.05, the "
                              "experiments'); a ledger input keeps its own");
+  args.option("--curves", &curves,
+              "curves kept per knot for data-set inputs: those of its lowest-energy states (default 16)");
   args.flag("--json", &json, "print the written ledger as knots describe --json does");
   if (!args.parse(argc, argv)) return 0;
   if (out.empty()) throw InputError("missing -o OUT.ledger.h5");
   if (cut && !(*cut > 0.0 && *cut < 1.0)) throw InputError("--cut must be in (0, 1)");
+  if (curves < 0) throw InputError("--curves must be 0 or more");
   std::vector<std::string> inputs{first};
   inputs.insert(inputs.end(), rest.begin(), rest.end());
   std::vector<Ledger> parts;
@@ -38,6 +42,7 @@ int cmd_ledger(int argc, char** argv) {
     }
     LedgerProvenance p;
     p.cut = cut.value_or(p.cut);
+    p.curves_per_knot = curves;
     p.created = now_iso8601();
     p.source = "knots ledger " + in;
     parts.push_back(ledger_of_dataset(in, p));

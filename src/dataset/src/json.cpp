@@ -1,8 +1,10 @@
 #include "ek/dataset/json.hpp"
 
+#include <map>
 #include <sstream>
 
 #include "ek/dataset/dataset_search.hpp"
+#include "ek/dataset/sampling_cost.hpp"
 
 namespace ek {
 
@@ -93,6 +95,55 @@ Json ledger_json(const Ledger& l) {
     k["states"] = Json::array();
     for (int s = 0; s < static_cast<int>(e.states.size()); ++s) k["states"].push_back(state_json(e, s));
     j["knots"].push_back(k);
+  }
+  return j;
+}
+
+Json ledger_summary_json(const Ledger& l) {
+  long equilibria = 0, states = 0, runs = 0;
+  int links = 0;
+  std::map<std::string, int> statuses;
+  std::vector<KnotCost> costs;
+  std::map<int, std::pair<int, long>> states_by_crossings;  // crossing number -> knots, states
+  for (const LedgerEntry& e : l.entries) {
+    equilibria += e.equilibria();
+    states += static_cast<long>(e.states.size());
+    runs += static_cast<long>(e.runs.size());
+    for (const auto& [status, count] : e.status_counts()) statuses[status] += count;
+    if (e.is_link()) {
+      ++links;
+      continue;
+    }
+    costs.push_back({e.name, e.crossing_number, static_cast<int>(e.runs.size()), e.run_seconds()});
+    auto& [knots, s] = states_by_crossings[e.crossing_number];
+    ++knots;
+    s += static_cast<long>(e.states.size());
+  }
+  Json j;
+  j["knots"] = static_cast<long>(l.entries.size()) - links;
+  j["links"] = links;
+  j["equilibria"] = equilibria;
+  j["states"] = states;
+  j["runs"] = runs;
+  j["statuses"] = statuses;
+  j["wall_seconds"] = optional_json(l.provenance.wall_seconds);
+  j["cpu_seconds"] = optional_json(l.provenance.cpu_seconds);
+  if (costs.empty()) return j;
+  const SamplingCost c = sampling_cost(costs, 500);
+  j["median_samples"] = json_number(c.median_samples);
+  j["mean_samples"] = json_number(static_cast<double>(c.samples) / c.knots);
+  j["max_samples"] = c.max_samples;
+  j["saving_vs_500"] = json_number(c.saving_vs_budget);
+  j["run_core_seconds"] = json_number(c.run_seconds);
+  j["by_crossing_number"] = Json::array();
+  for (const CrossingCost& x : c.by_crossing_number) {
+    const auto& [knots, s] = states_by_crossings.at(x.crossing_number);
+    j["by_crossing_number"].push_back({{"crossing_number", x.crossing_number},
+                                       {"knots", x.knots},
+                                       {"median_samples", json_number(x.median_samples)},
+                                       {"mean_samples", json_number(x.mean_samples)},
+                                       {"seconds_per_run", json_number(x.seconds_per_run)},
+                                       {"mean_states", json_number(static_cast<double>(s) / knots)}});
   }
   return j;
 }

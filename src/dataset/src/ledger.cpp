@@ -1,6 +1,7 @@
 #include "ek/dataset/ledger.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <numeric>
@@ -41,6 +42,7 @@ int vertices_of(const std::vector<LedgerEntry>& entries) {
   int n = -1;
   for (const LedgerEntry& e : entries)
     for (const LedgerState& s : e.states) {
+      if (s.curve.rows() == 0) continue;
       require(n < 0 || s.curve.rows() == n, "write_ledger: representative curves of different sizes");
       n = static_cast<int>(s.curve.rows());
     }
@@ -65,6 +67,8 @@ void check_entry(const LedgerEntry& e) {
 
 void write_provenance(hid_t f, const LedgerProvenance& p) {
   h5::set_attr(f, "cut", p.cut);
+  h5::set_attr(f, "curves_per_knot", static_cast<std::int64_t>(p.curves_per_knot));
+  h5::set_attr(f, "curve_quantum", p.curve_quantum);
   h5::set_attr(f, "commit", p.commit);
   h5::set_attr(f, "ledger_created", p.created);
   h5::set_attr(f, "source", p.source);
@@ -77,6 +81,8 @@ void write_provenance(hid_t f, const LedgerProvenance& p) {
 LedgerProvenance read_provenance(hid_t f) {
   LedgerProvenance p;
   p.cut = h5::get_attr_double(f, "cut");
+  p.curves_per_knot = static_cast<int>(h5::get_attr_int(f, "curves_per_knot"));
+  p.curve_quantum = h5::get_attr_double(f, "curve_quantum");
   p.commit = h5::get_attr_string(f, "commit");
   p.created = h5::get_attr_string(f, "ledger_created");
   p.source = h5::get_attr_string(f, "source");
@@ -123,7 +129,30 @@ struct IntColumns {
   }
 };
 
+/// A curve on the grid of `quantum`: its first vertex and its n − 1 steps,
+/// integers (coordinates over the quantum, rounded), so that summing the
+/// steps gives every vertex back exactly on the grid.
+void add_curve(const Points& P, double quantum, std::vector<std::int64_t>& origins, std::vector<std::int64_t>& steps) {
+  std::array<std::int64_t, 3> previous{};
+  for (Eigen::Index v = 0; v < P.rows(); ++v)
+    for (int c = 0; c < 3; ++c) {
+      const double q = std::round(P(v, c) / quantum);
+      require(std::abs(q) < 9e15, "write_ledger: a coordinate is too large for the curve quantum");
+      const auto g = static_cast<std::int64_t>(q);
+      if (v == 0) origins.push_back(g);
+      else steps.push_back(g - previous[static_cast<size_t>(c)]);
+      previous[static_cast<size_t>(c)] = g;
+    }
+}
+
 }  // namespace
+
+int LedgerEntry::representative_sample(int s) const {
+  require(s >= 0 && s < static_cast<int>(states.size()), "LedgerEntry::representative_sample: no state " + std::to_string(s));
+  for (const LedgerRun& r : runs)
+    if (r.equilibrium == states[static_cast<size_t>(s)].representative) return r.sample;
+  return -1;
+}
 
 int LedgerEntry::attribute_column(const std::string& attribute) const {
   for (size_t k = 0; k < attribute_names.size(); ++k)
@@ -169,6 +198,8 @@ AttributeSpread LedgerEntry::spread(int s, int column) const {
 
 void write_ledger(const std::string& path, const Ledger& ledger) {
   for (const LedgerEntry& e : ledger.entries) check_entry(e);
+  require(ledger.provenance.curve_quantum > 0.0 && std::isfinite(ledger.provenance.curve_quantum),
+          "write_ledger: the curve quantum must be positive");
   const std::vector<std::string> columns = attribute_union(ledger.entries);
   const int n = vertices_of(ledger.entries);
   check_writable(path);
@@ -185,9 +216,10 @@ void write_ledger(const std::string& path, const Ledger& ledger) {
       for (const LedgerRun& r : e.runs)
         if (std::find(statuses.begin(), statuses.end(), r.status) == statuses.end()) statuses.push_back(r.status);
     IntColumns runs({"sample", "status", "equilibrium", "iterations", "topology_kept"});
-    std::vector<double> seconds, attributes, linkage, curves;
+    std::vector<double> seconds, attributes, linkage;
+    std::vector<std::int64_t> origins, steps;  // the kept curves on the quantum's grid
     IntColumns eq({"state"});
-    IntColumns st({"representative", "members"});
+    IntColumns st({"representative", "members", "curve"});
     std::vector<std::string> names;
     std::vector<Rows> rows;
     Rows at;
@@ -219,8 +251,8 @@ void write_ledger(const std::string& path, const Ledger& ledger) {
       for (const LedgerState& s : e.states) {
         st.values[0].push_back(s.representative);
         st.values[1].push_back(s.members);
-        for (Eigen::Index v = 0; v < s.curve.rows(); ++v)
-          for (int c = 0; c < 3; ++c) curves.push_back(s.curve(v, c));
+        st.values[2].push_back(s.curve.rows() == 0 ? -1 : static_cast<std::int64_t>(origins.size() / 3));
+        if (s.curve.rows() > 0) add_curve(s.curve, ledger.provenance.curve_quantum, origins, steps);
       }
       at.runs_first += r.runs;
       at.equilibria_first += r.equilibria;
@@ -247,8 +279,12 @@ void write_ledger(const std::string& path, const Ledger& ledger) {
     {
       h5::Handle g = h5::create_group(f.id(), "states");
       st.write(g.id());
-      h5::write_float32(g.id(), "curves", {static_cast<hsize_t>(at.states_first), static_cast<hsize_t>(n), 3},
-                        curves.data());
+    }
+    {
+      h5::Handle g = h5::create_group(f.id(), "curves");
+      const hsize_t c = origins.size() / 3;
+      h5::write_int64(g.id(), "origin", {c, 3}, origins.data());
+      h5::write_int64(g.id(), "steps", {c, static_cast<hsize_t>(std::max(n - 1, 0)), 3}, steps.data());
     }
     {
       h5::Handle knots = h5::create_group(f.id(), "knots");
@@ -286,6 +322,9 @@ class LedgerFileReader {
     out.parameters = detail::read_parameters(f_, path_);
     out.provenance = read_provenance(f_);
     if (!(out.provenance.cut > 0.0 && out.provenance.cut < 1.0)) damaged("its cut is not in (0, 1)");
+    quantum_ = out.provenance.curve_quantum;
+    if (!(quantum_ > 0.0 && quantum_ < 1e6) || out.provenance.curves_per_knot < 0)
+      damaged("its curve quantum or curves per knot are out of range");
     read_tables();
     const std::vector<std::string> names = h5::read_strings(f_, "knot_names");
     h5::Handle knots = h5::open_group(f_, "knots");
@@ -324,13 +363,22 @@ class LedgerFileReader {
       linkage_rows_ = shape[0];
     }
     {
+      h5::Handle g = h5::open_group(f_, "curves");
+      std::vector<hsize_t> shape;
+      origins_ = h5::read_int64(g.id(), "origin", &shape);
+      if (shape.size() != 2 || shape[1] != 3) damaged("the curves' origins are not a [c, 3] array");
+      const hsize_t c = shape[0];
+      steps_ = h5::read_int64(g.id(), "steps", &shape);
+      if (shape.size() != 3 || shape[0] != c || shape[2] != 3) damaged("the curves' steps are not a [c, n-1, 3] array");
+      n_ = shape[1] + 1;
+    }
+    {
       h5::Handle g = h5::open_group(f_, "states");
       std::vector<hsize_t> shape;
-      curves_ = h5::read_doubles(g.id(), "curves", &shape);
-      if (shape.size() != 3 || shape[2] != 3) damaged("the curves are not an [s, n, 3] array");
-      n_ = shape[1];
-      representative_ = ints(g.id(), "representative", shape[0], "states");
-      members_ = ints(g.id(), "members", shape[0], "states");
+      representative_ = h5::read_int64(g.id(), "representative", &shape);
+      if (shape.size() != 1) damaged("states/representative is not a list");
+      members_ = ints(g.id(), "members", representative_.size(), "states");
+      curve_ = ints(g.id(), "curve", representative_.size(), "states");
     }
   }
 
@@ -414,8 +462,9 @@ class LedgerFileReader {
       x.members = static_cast<int>(members_[s]);
       if (representative_[s] < 0 || representative_[s] >= m || x.members < 1)
         damaged(e.name + "'s state " + std::to_string(s - states_next_) + " has a missing representative");
-      x.curve = Eigen::Map<const Points>(curves_.data() + s * n_ * 3, static_cast<Eigen::Index>(n_), 3);
-      if (!x.curve.allFinite()) damaged(e.name + "'s state " + std::to_string(s - states_next_) + " has a coordinate that is not finite");
+      if (curve_[s] < -1 || curve_[s] >= static_cast<std::int64_t>(origins_.size() / 3))
+        damaged(e.name + "'s state " + std::to_string(s - states_next_) + " names a missing curve");
+      if (curve_[s] >= 0) x.curve = curve(static_cast<size_t>(curve_[s]));
       e.states.push_back(std::move(x));
     }
     for (size_t s = 0; s < count; ++s)
@@ -424,11 +473,26 @@ class LedgerFileReader {
     states_next_ += count;
   }
 
+  /// Kept curve `c`: its origin plus its steps, times the quantum.
+  Points curve(size_t c) const {
+    Points P(static_cast<Eigen::Index>(n_), 3);
+    std::array<std::int64_t, 3> g{origins_[3 * c], origins_[3 * c + 1], origins_[3 * c + 2]};
+    for (size_t v = 0; v < n_; ++v)
+      for (size_t d = 0; d < 3; ++d) {
+        if (v > 0) g[d] += steps_[(c * (n_ - 1) + v - 1) * 3 + d];
+        P(static_cast<Eigen::Index>(v), static_cast<Eigen::Index>(d)) = static_cast<double>(g[d]) * quantum_;
+      }
+    if (!P.allFinite()) damaged("a curve has a coordinate that is not finite");
+    return P;
+  }
+
   hid_t f_;
   std::string path_;
+  double quantum_ = 1.0;
+  std::vector<std::int64_t> origins_, steps_, curve_;
   std::vector<std::string> statuses_, columns_;
   std::vector<std::vector<std::int64_t>> runs_;
-  std::vector<double> seconds_, attributes_, linkage_, curves_;
+  std::vector<double> seconds_, attributes_, linkage_;
   std::vector<std::int64_t> state_, representative_, members_;
   size_t n_ = 0, linkage_rows_ = 0;
   size_t runs_next_ = 0, eq_next_ = 0, linkage_next_ = 0, states_next_ = 0;
@@ -459,6 +523,8 @@ Ledger merge_ledgers(const std::vector<Ledger>& ledgers) {
   Ledger out;
   out.parameters = ledgers.front().parameters;
   out.provenance.cut = ledgers.front().provenance.cut;
+  out.provenance.curve_quantum = ledgers.front().provenance.curve_quantum;
+  out.provenance.curves_per_knot = 0;
   std::set<std::string> names, commits;
   bool wall = true, cpu = true;
   double wall_s = 0.0, cpu_s = 0.0;
@@ -468,6 +534,9 @@ Ledger merge_ledgers(const std::vector<Ledger>& ledgers) {
     if (l.provenance.cut != out.provenance.cut)
       throw InputError("ledgers with different cuts cannot be merged: " + std::to_string(out.provenance.cut) + " vs " +
                        std::to_string(l.provenance.cut));
+    if (l.provenance.curve_quantum != out.provenance.curve_quantum)
+      throw InputError("ledgers with different curve quanta cannot be merged");
+    out.provenance.curves_per_knot = std::max(out.provenance.curves_per_knot, l.provenance.curves_per_knot);
     out.parameters.forget_unrecorded(l.parameters);
     for (const LedgerEntry& e : l.entries) {
       if (!names.insert(e.name).second) throw InputError("knot " + e.name + " is in two of the ledgers");

@@ -10,7 +10,7 @@
 
 namespace ek {
 
-LedgerEntry ledger_entry(const KnotEntry& k, double cut) {
+LedgerEntry ledger_entry(const KnotEntry& k, double cut, int curves_per_knot) {
   LedgerEntry e;
   e.name = k.name;
   e.crossing_number = k.crossing_number;
@@ -31,9 +31,11 @@ LedgerEntry ledger_entry(const KnotEntry& k, double cut) {
   e.linkage = k.linkage;
   if (k.equilibria.empty()) return e;
   const std::vector<StateCluster> clusters = clusters_at_cut(k, cut, &e.state);
-  for (const StateCluster& c : clusters)
+  for (const StateCluster& c : clusters) {
+    const bool kept = static_cast<int>(e.states.size()) < curves_per_knot;
     e.states.push_back({c.representative, static_cast<int>(c.members.size()),
-                        k.equilibria[static_cast<size_t>(c.representative)]});
+                        kept ? k.equilibria[static_cast<size_t>(c.representative)] : Points(0, 3)});
+  }
   return e;
 }
 
@@ -43,7 +45,7 @@ Ledger ledger_of_dataset(const std::string& path, const LedgerProvenance& proven
   out.parameters = reader.metadata();
   out.provenance = provenance;
   for (const std::string& name : reader.knot_names())
-    out.entries.push_back(ledger_entry(reader.read(name), provenance.cut));
+    out.entries.push_back(ledger_entry(reader.read(name), provenance.cut, provenance.curves_per_knot));
   return out;
 }
 
@@ -53,7 +55,7 @@ std::vector<LedgerEntry> read_results_entries(const std::string& folder, double 
   if (std::filesystem::exists(dataset)) {
     if (source) *source = dataset;
     const DatasetReader reader(dataset);
-    for (const std::string& name : reader.knot_names()) out.push_back(ledger_entry(reader.read(name), cut));
+    for (const std::string& name : reader.knot_names()) out.push_back(ledger_entry(reader.read(name), cut, 0));
     return out;
   }
   if (!std::filesystem::is_directory(ledgers))

@@ -33,6 +33,15 @@ Json describe_json(const DatasetReader& reader);
 /// per attribute {value (the representative's), min, median, max}}]}].
 Json ledger_json(const Ledger& ledger);
 
+/// The ledger's totals (`knots describe LEDGER --summary`): knots, links,
+/// equilibria, states, runs, statuses {status: count}, the provenance's
+/// wall and CPU seconds (null when not recorded), and for knots (links left
+/// out) the sampling cost against 500 samples per knot (sampling_cost.hpp):
+/// median_samples, mean_samples, max_samples, saving_vs_500,
+/// run_core_seconds, by_crossing_number [{crossing_number, knots,
+/// median_samples, mean_samples, seconds_per_run, mean_states}].
+Json ledger_summary_json(const Ledger& ledger);
+
 /// The same as text: the parameters, the provenance, and one line per knot
 /// (samples, stable runs, states, the lowest state's energy), then with
 /// `states` one line per state (members, energy of the representative and

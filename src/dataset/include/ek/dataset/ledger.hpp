@@ -5,8 +5,11 @@
 /// runs (sample, status, stored row, iterations, seconds), every stored
 /// equilibrium's attributes and its state, the complete-linkage dendrogram,
 /// and for each distinct state at the ledger's cut its member count and its
-/// representative's curve; it drops the other curves and the m × m
-/// similarity matrix, which hold almost all of a data set's bytes.
+/// representative's curve (for the lowest-energy states, up to a number per
+/// knot); it drops the other curves and the m × m similarity matrix, which
+/// hold almost all of a data set's bytes. A state whose curve is not kept
+/// is reproduced by rerunning its representative's sample (the ledger's
+/// parameters, the knot's name and representative_sample() determine it).
 ///
 /// States are clusters_at_cut() (pipeline.hpp) at `cut`: sorted by
 /// increasing lowest energy, represented by their lowest-energy member. The
@@ -18,7 +21,8 @@
 /// checksum header; root attributes format = "elastic-knots-ledger",
 /// format_version = 1, the data set's parameters (metadata_fields()) and the
 /// provenance (LedgerProvenance); columnar tables over all knots of the file
-/// (runs/, equilibria/, states/, each column one HDF5 dataset, compressed),
+/// (runs/, equilibria/, states/, curves/, each column one HDF5 dataset,
+/// compressed; the curves as integer steps on a grid of `curve_quantum`),
 /// and one group per knot under knots/ holding its scalar fields and its
 /// rows of the tables.
 #include <map>
@@ -45,7 +49,10 @@ struct LedgerRun {
 struct LedgerState {
   int representative = -1;  ///< [1] row of the knot's attribute table: the member of lowest energy
   int members = 0;          ///< [1] stored equilibria in the state
-  Points curve;             ///< n by 3: the representative (stored as float32)
+  /// n by 3: the representative, each coordinate rounded to the nearest
+  /// multiple of the ledger's curve_quantum (so within quantum / 2); empty
+  /// (0 rows) when the ledger does not keep it (beyond curves_per_knot)
+  Points curve;
 };
 
 /// The smallest, median and largest value of one attribute over a state's members.
@@ -89,6 +96,9 @@ struct LedgerEntry {
   AttributeSpread spread(int s, int column) const;
   /// The rows of the attribute table in state `s`, increasing.
   std::vector<int> members(int s) const;
+  /// The lattice sample whose relaxation is state `s`'s representative
+  /// (rerunning it reproduces the curve); -1 when no run names it.
+  int representative_sample(int s) const;
 };
 
 /// Where and how a ledger was made. Empty fields are "not recorded" (a
@@ -96,6 +106,13 @@ struct LedgerEntry {
 /// the machine that ran it).
 struct LedgerProvenance {
   double cut = 0.05;                   ///< [1] the states' cut in 1 − similarity
+  /// [1] curves kept per knot: those of its lowest-energy states (the
+  /// committed paper-scale ledgers, 645 knots with up to 256 states each,
+  /// must stay within tens of MB)
+  int curves_per_knot = 16;
+  /// [length] the grid the kept curves' coordinates are rounded to (1e-4:
+  /// within 5e-5 of the equilibrium, 1/4000 of the default wire radius)
+  double curve_quantum = 1e-4;
   std::string commit;                  ///< source_commit() of the program that computed the runs
   std::string created;                 ///< ISO 8601 time the ledger was written
   std::string source;                  ///< what it summarises, e.g. "knots dataset --shard 3/20"
@@ -111,10 +128,13 @@ struct Ledger {
   std::vector<LedgerEntry> entries;    ///< in the data set's order
 };
 
-/// The ledger entry of a data set's knot: its states at `cut` (clusters_at_cut).
-LedgerEntry ledger_entry(const KnotEntry& entry, double cut);
+/// The ledger entry of a data set's knot: its states at `cut`
+/// (clusters_at_cut), the curves of the first `curves_per_knot` of them (by
+/// energy; the others empty).
+LedgerEntry ledger_entry(const KnotEntry& entry, double cut, int curves_per_knot);
 
-/// The ledger of a whole data-set file at `cut`, with `provenance`'s other fields.
+/// The ledger of a whole data-set file at provenance.cut, keeping
+/// provenance.curves_per_knot curves per knot, with `provenance`'s other fields.
 Ledger ledger_of_dataset(const std::string& dataset_path, const LedgerProvenance& provenance);
 
 /// The knots of a results folder (the experiments' layout) as ledger
@@ -124,9 +144,12 @@ Ledger ledger_of_dataset(const std::string& dataset_path, const LedgerProvenance
 std::vector<LedgerEntry> read_results_entries(const std::string& folder, double cut, std::string* source = nullptr);
 
 /// Writes `ledger` to `path` (a temporary renamed into place: an existing
-/// file is replaced only by a complete one). Throws InputError when the
+/// file is replaced only by a complete one). Each kept curve is stored as
+/// its first vertex and its steps on the grid of provenance.curve_quantum
+/// (integers: reading sums them back exactly). Throws InputError when the
 /// file cannot be written, std::invalid_argument for an inconsistent ledger
-/// (tables of different lengths, curves of different sizes).
+/// (tables of different lengths, curves of different sizes, a quantum that
+/// is not positive).
 void write_ledger(const std::string& path, const Ledger& ledger);
 
 /// Reads a ledger. A damaged file (checksum), another kind of file, a file
@@ -139,8 +162,9 @@ Ledger read_ledger(const std::string& path);
 /// that is damaged or not HDF5.
 bool is_ledger_file(const std::string& path);
 
-/// The ledgers as one: equal parameters (DatasetMetadata::difference) and
-/// cut, each knot in one ledger only (InputError otherwise). Entries keep
+/// The ledgers as one: equal parameters (DatasetMetadata::difference), cut
+/// and curve quantum, each knot in one ledger only (InputError otherwise);
+/// curves_per_knot is the largest of theirs. Entries keep
 /// their order, ledger by ledger; the provenance keeps the cut and the
 /// parameters, sums wall and CPU time where every ledger records them, and
 /// lists the commits (comma-separated, each once) and sources.
