@@ -14,7 +14,8 @@
 //   paper:   the first 12 pairs, as default
 // Writes loads.csv (one row per run), snaps.csv (one row per snap),
 // paths/run_<k>.csv (each run's force-displacement path), curves/ (each
-// run's start and each snap's states) and summary.json (docs/results.md).
+// run's start and each snap's states: before it, fallen into under the load,
+// released) and summary.json (docs/results.md).
 #include <cmath>
 #include <filesystem>
 #include <iostream>
@@ -139,10 +140,13 @@ void run_one(const Args& a, int id, const Run& r, Csv& loads, Csv& snaps, result
     if (state == "other" && flip < 0) flip = static_cast<int>(k);
     const std::string files = tag + "_snap_" + std::to_string(k);
     write_curve(a.out + "/" + files + "_before.obj", as_points(res.path.points[static_cast<size_t>(z.point) - 1].dofs));
+    write_curve(a.out + "/" + files + "_loaded.obj", z.loaded);
     write_curve(a.out + "/" + files + "_released.obj", z.released);
+    const PathPoint& before = res.path.points[static_cast<size_t>(z.point) - 1];
     snaps.row({std::to_string(id), std::to_string(k), std::to_string(z.point), Csv::num(z.parameter),
                Csv::num(z.reaction), Csv::num(z.jump), Csv::num(z.energy_drop / s.energy_scale), z.released_status,
-               state, Csv::num(to_start), Csv::num(to_other), files + "_before.obj", files + "_released.obj"});
+               state, Csv::num(to_start), Csv::num(to_other), before.index >= 0 ? Csv::num(before.lowest_eigenvalue) : "",
+               files + "_before.obj", files + "_loaded.obj", files + "_released.obj"});
     ++sum.snaps;
   }
   const Snap* f = flip >= 0 ? &res.snaps[static_cast<size_t>(flip)] : nullptr;
@@ -150,7 +154,8 @@ void run_one(const Args& a, int id, const Run& r, Csv& loads, Csv& snaps, result
   loads.row({std::to_string(id), b.at("knot"), r.from_b ? b.at("state_b") : b.at("state_a"),
              r.from_b ? b.at("state_a") : b.at("state_b"), to_string(r.kind), res.parameter_name,
              Csv::num(res.from), Csv::num(s.options.to), to_string(res.path.status),
-             std::to_string(res.path.points.size()), std::to_string(res.snaps.size()), Csv::flag(f != nullptr),
+             std::to_string(res.path.points.size()), std::to_string(res.snaps.size()), std::to_string(res.branch_jumps),
+             Csv::flag(f != nullptr),
              f ? std::to_string(flip) : "", f ? Csv::num(f->parameter) : "", f ? Csv::num(f->reaction) : "",
              f ? Csv::num(path_work(res.path, static_cast<size_t>(f->point)) / s.energy_scale) : "", barrier,
              r.from_b ? "" : b.at("upper_bound_scaled"), Csv::num(res.work / s.energy_scale),
@@ -160,9 +165,11 @@ void run_one(const Args& a, int id, const Run& r, Csv& loads, Csv& snaps, result
   sum.runs_reached += res.path.status == PathStatus::Reached;
   sum.runs_with_snaps += !res.snaps.empty();
   sum.flips += f != nullptr;
+  sum.branch_jumps += res.branch_jumps;
   sum.radius = s.radius;
   std::cout << "  run " << id << ": " << b.at("knot") << " " << (r.from_b ? "B" : "A") << " " << to_string(r.kind)
-            << ": " << to_string(res.path.status) << ", " << res.snaps.size() << " snaps"
+            << ": " << to_string(res.path.status) << ", " << res.snaps.size() << " snaps, " << res.branch_jumps
+            << " branch jumps"
             << (f ? ", flips at force " + Csv::num(f->reaction, 4) : "") << " (" << res.path.seconds << " s)"
             << std::endl;
 }
@@ -178,12 +185,13 @@ int main(int argc, char** argv) {
     const std::vector<Pair> pairs = read_pairs(a, by_scale(a, 1, 4, 12));
     Csv loads(a.out + "/loads.csv",
               {"run", "knot", "state_from", "state_to", "load", "parameter", "from", "to", "status", "points",
-               "snaps", "flip", "flip_snap", "flip_parameter", "flip_reaction", "flip_work_scaled", "barrier_scaled",
+               "snaps", "branch_jumps", "flip", "flip_snap", "flip_parameter", "flip_reaction", "flip_work_scaled", "barrier_scaled",
                "upper_bound_scaled", "work_scaled", "dissipated_scaled", "alexander_preserved", "seconds",
                "curve_start"});
     Csv snaps(a.out + "/snaps.csv",
               {"run", "snap", "point", "parameter", "reaction", "jump", "energy_drop_scaled", "released_status",
-               "released_state", "similarity_start", "similarity_other", "curve_before", "curve_released"});
+               "released_state", "similarity_start", "similarity_other", "lowest_eigenvalue_before", "curve_before",
+               "curve_loaded", "curve_released"});
     results::LoadsSummary sum;
     sum.scale = a.scale_name;
     sum.plates_to = kPlatesTo;

@@ -1,15 +1,18 @@
-"""Knots under load (beyond the paper; Section 8.5 names it future work):
-(a) the reaction of each run's device against its control (the plates'
-force against their gap, the pull's tension against its distance) along the
-stable path, each snap marked by a cross at the control where its branch
-ended, a flip (the released state is the pair's other state) by a star;
-(b) the first run's relaxed start (of those that found one) and, when it snapped, the state before
-its first snap and that snap's state released from the load, as tubes of
-the wire's radius in the start's principal frame, seen along its axis of least extent."""
+"""Knots under load (beyond the paper; Section 8.5 names it future work).
+Top: one panel per puzzle pair and load: the reaction of the device (the
+plates' force, the pull's tension) against its control divided by the
+control at the start (the gap or distance at which the start just touches
+the device), one line per loaded state (from A, from B); a snap is marked by
+a cross at the control where its branch ended, a flip (the released state
+is the pair's other state) by a star, a branch jump (the path left its
+branch without releasing energy: no snap) by a circle. Bottom: the first
+flip's state before it snapped, the state it fell into under the load, and
+that state released, as tubes of the wire's radius in the first one's
+principal frame, seen along its axis of least extent (or, without a flip,
+the first snap's)."""
 import numpy as np
 
-from common import draw_framed, flag, frame_of, parse_args, plt, read_csv, read_obj, read_summary, save, save_empty
-
+from common import draw_framed, frame_of, parse_args, plt, read_csv, read_obj, read_summary, save, save_empty
 
 
 def number(cell):
@@ -27,40 +30,60 @@ if not started:
     save_empty(a.out, "fig_loads", "no puzzle pair loaded at this scale")
     raise SystemExit
 
-fig = plt.figure(figsize=(12, 4.4))
-grid = fig.add_gridspec(1, 4, width_ratios=[2.2, 1, 1, 1])
-ax = fig.add_subplot(grid[0, 0])
+# one panel per pair (knot and its two states) and load
+panels = []
 for r in runs:
-    path = read_csv(f"{d}/paths/run_{r['run']}.csv")
-    mu = np.array([float(p["parameter"]) for p in path])
-    force = np.array([float(p["reaction"]) for p in path])
-    line, = ax.plot(mu, force, "-", lw=1,
-                    label=f"run {r['run']}: {r['knot']} {r['state_from']} by {r['load']} ({r['status']})")
-    for z in (z for z in snaps if z["run"] == r["run"]):
-        marker = "*" if z["released_state"] == "other" else "x"
-        ax.plot([float(z["parameter"])], [float(z["reaction"])], marker, color=line.get_color(), ms=8)
-ax.set_xlabel("control: plates' gap or pull's distance [length]")
-ax.set_ylabel("reaction: force on the device [energy/length]")
-ax.legend(fontsize=6, loc="best")
-ax.set_title(f"{s['runs']} runs on {s['pairs']} pairs: {s['snaps']} snaps (x), {s['flips']} flips (*)", fontsize=9)
+    key = (r["knot"], *sorted((r["state_from"], r["state_to"]), key=int), r["load"])
+    if key not in panels:
+        panels.append(key)
+cols = min(4, len(panels))
+rows = (len(panels) + cols - 1) // cols
+fig = plt.figure(figsize=(3.0 * cols, 2.4 * rows + 3.0))
+grid = fig.add_gridspec(rows + 1, cols, height_ratios=[1.0] * rows + [1.25], hspace=0.55, wspace=0.32)
+for p, key in enumerate(panels):
+    ax = fig.add_subplot(grid[p // cols, p % cols])
+    for r in runs:
+        if (r["knot"], *sorted((r["state_from"], r["state_to"]), key=int), r["load"]) != key:
+            continue
+        path = read_csv(f"{d}/paths/run_{r['run']}.csv")
+        start = float(r["from"])
+        mu = np.array([float(q["parameter"]) for q in path]) / start
+        force = np.array([float(q["reaction"]) for q in path])
+        line, = ax.plot(mu, force, "-", lw=0.9, label=f"from {r['state_from']} ({r['status']})")
+        for q in path:
+            if q["event"] == "branch-jump":
+                ax.plot([float(q["parameter"]) / start], [float(q["reaction"])], "o", mfc="none",
+                        color=line.get_color(), ms=4)
+        for z in (z for z in snaps if z["run"] == r["run"]):
+            flip = z["released_state"] == "other"
+            ax.plot([float(z["parameter"]) / start], [float(z["reaction"])], "*" if flip else "x",
+                    color=line.get_color(), ms=8 if flip else 4, mew=0.8)
+    ax.set_title(f"{key[0]} {key[1]}–{key[2]}: {key[3]}", fontsize=8)
+    ax.tick_params(labelsize=6)
+    ax.legend(fontsize=5.5, loc="best")
+    if p % cols == 0:
+        ax.set_ylabel("force [energy/length]", fontsize=7)
+    ax.set_xlabel("control / control at the start", fontsize=7)
 
-first = started[0]
-names = [("relaxed start", first["curve_start"])]
-first_snaps = [z for z in snaps if z["run"] == first["run"]]
-if first_snaps:
-    z = first_snaps[0]
-    names += [(f"before snap 0 (control {float(z['parameter']):.3g})", z["curve_before"]),
-              (f"released: {z['released_state']}", z["curve_released"])]
-curves = [read_obj(f"{d}/{f}") for _, f in names]
-frame = frame_of(curves[0])
-for c, ((title, _), P) in enumerate(zip(names, curves)):
-    sub = fig.add_subplot(grid[0, c + 1])
-    draw_framed(sub, P, "top", frame, radius=float(s["radius"]))
-    sub.set_title(title, fontsize=8)
-flipped = flag(first["flip"])
-fig.suptitle(f"run {first['run']}: {first['knot']} state {first['state_from']} by {first['load']}, "
-             f"{'flips to state ' + first['state_to'] if flipped else 'no flip'}; "
-             f"computed barrier {number(first['barrier_scaled']) or 'not joined'}"
-             f"{', upper bound ' + number(first['upper_bound_scaled']) if first['upper_bound_scaled'] else ''} EI/L; "
-             f"work done {number(first['work_scaled'])} EI/L", fontsize=9)
+# the first flip's states (else the first snap's)
+flips = [z for z in snaps if z["released_state"] == "other"]
+z = flips[0] if flips else (snaps[0] if snaps else None)
+if z is not None:
+    run = next(r for r in runs if r["run"] == z["run"])
+    names = [(f"before (control {float(z['parameter']):.3g})", z["curve_before"]),
+             ("fallen into, loaded", z["curve_loaded"]),
+             (f"released: {z['released_state']}", z["curve_released"])]
+    curves = [read_obj(f"{d}/{f}") for _, f in names]
+    frame = frame_of(curves[0])
+    for c, ((title, _), P) in enumerate(zip(names, curves)):
+        sub = fig.add_subplot(grid[rows, c])
+        draw_framed(sub, P, "top", frame, radius=float(s["radius"]))
+        sub.set_title(title, fontsize=8)
+    what = (f"flip of run {run['run']}: {run['knot']} {run['state_from']} → {run['state_to']} by {run['load']}, "
+            f"force {number(z['reaction'])}, work {number(run['flip_work_scaled'])} EI/L against a computed barrier "
+            f"{number(run['barrier_scaled']) or 'not joined'} EI/L") if flips else \
+        f"first snap (run {run['run']}: {run['knot']} {run['state_from']} by {run['load']}); no flip at this scale"
+    fig.text(0.5, 1.0 / (rows + 1.25) * 1.25 + 0.01, what, ha="center", fontsize=8)
+fig.suptitle(f"{s['runs']} runs on {s['pairs']} pairs: {s['snaps']} snaps (x), {s['flips']} flips (*), "
+             f"branch jumps (o) are no snaps", fontsize=9)
 save(fig, a.out, "fig_loads")

@@ -18,9 +18,12 @@ struct LoadsSummary {
   int runs_with_snaps = 0;    ///< [1]
   int snaps = 0;              ///< [1] rows of snaps.csv
   int flips = 0;              ///< [1] runs in which a snap's released state is the pair's other state
+  /// [1] path points where a run left its branch without a snap (no energy
+  /// released at the same control: PathEvent::BranchJump), over all runs
+  int branch_jumps = 0;
   double seconds = 0.0;       ///< [s]
 };
 EK_JSON_FIELDS(LoadsSummary, scale, radius, plates_to, pull_stretch, reach, pairs, runs, runs_reached, runs_with_snaps,
-               snaps, flips, seconds)
+               snaps, flips, branch_jumps, seconds)
 
 }  // namespace ek::results

@@ -4,12 +4,17 @@
 // of energy, the distance following the control); the same trefoil pressed
 // between plates until it snaps (a stable state on each side, the released
 // state relaxed again); the stable path through the snapping system's fold
-// at its known load and jump; bad input.
+// at its known load and jump; a snap's energy released at one control,
+// where the difference across the two controls of the path's points is
+// negative (a stiff spring's synthetic snap and a pressed 8_1 at n = 400);
+// bad input.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
+#include "ek/core/config.hpp"
 #include "ek/core/errors.hpp"
+#include "ek/geometry/curve_io.hpp"
 #include "ek/geometry/polyline.hpp"
 #include "ek/knots/alexander.hpp"
 #include "ek/mechanics/knot_loading.hpp"
@@ -50,7 +55,117 @@ class Snapper : public ParameterizedObjective {
   double mu_ = -0.6;
 };
 
+/// A small snap under a large load: a stiff spring K between x and the
+/// control (and one between x and 0) carries a large reaction, and the
+/// snapping system in y, scaled by a, releases a·3/4 at its fold
+/// μ = 2/(3√3) (from y = −1/√3 to 2/√3: the energies a/12 and −2a/3):
+///   E(x, y; μ) = K(x − μ)²/2 + Kx²/2 + a(y⁴/4 − y²/2 − μy).
+/// The energy of one state at two controls μ and μ + Δμ differs by about
+/// the reaction K·μ/2 times Δμ, far more than a·3/4 at the path's smallest step.
+class StiffSnapper : public ParameterizedObjective {
+ public:
+  static constexpr double K = 1e4, a = 1e-3;
+  int num_dofs() const override { return 2; }
+  VecX dofs() const override { return x_; }
+  void set_dofs(const VecX& x) override { x_ = x; }
+  double energy() override { return energy_at(x_, mu_); }
+  static double energy_at(const VecX& v, double mu) {
+    const double x = v(0), y = v(1);
+    return K * (x - mu) * (x - mu) / 2 + K * x * x / 2 + a * (std::pow(y, 4) / 4 - y * y / 2 - mu * y);
+  }
+  VecX gradient() override {
+    return Eigen::Vector2d(K * (x_(0) - mu_) + K * x_(0), a * (std::pow(x_(1), 3) - x_(1) - mu_));
+  }
+  void assemble_hessian(SparseAssembler& A, HessianKind) override {
+    A.begin(2);
+    A.segment(0, 1);
+    A.add(0, 0, 2 * K);
+    A.add(0, 1, 0.0);
+    A.add(1, 1, a * (3 * x_(1) * x_(1) - 1));
+    A.end();
+  }
+  double parameter() const override { return mu_; }
+  void set_parameter(double mu) override { mu_ = mu; }
+  VecX parameter_gradient() override { return Eigen::Vector2d(-K, -a); }
+  double parameter_derivative() override { return -K * (x_(0) - mu_) - a * x_(1); }
+
+ private:
+  VecX x_ = Eigen::Vector2d(-0.3, -1.2);
+  double mu_ = -0.6;
+};
+
 }  // namespace
+
+// The stiff spring's snap (StiffSnapper): one snap, at the fold (to 1e-3),
+// whose energy drop is the energy released at the snap's control, a·3/4 to
+// 1%, recomputed here from the two states; the same two states compared at
+// their own controls (the branch's last point and the snap's) differ the
+// other way, because the large reaction times the step outweighs the
+// release: a snap measured that way would look like a rise in energy.
+TEST(Continuation, SnapReleasesEnergyAtTheSameControl) {
+  StiffSnapper f;
+  ContinuationOptions o;
+  o.target = 0.6;
+  o.minimizer = NewtonOptions{};
+  o.minimizer->gradient_tolerance = 1e-9;
+  o.max_jump = 0.5;
+  o.eigen_count = 0;
+  const LoadPath p = follow_path(f, o);
+  EXPECT_EQ(p.status, PathStatus::Reached);
+  int snaps = 0;
+  for (size_t k = 1; k < p.points.size(); ++k) {
+    const PathPoint &q = p.points[k], &before = p.points[k - 1];
+    EXPECT_NE(q.event, PathEvent::BranchJump);
+    if (q.event != PathEvent::Snap) continue;
+    ++snaps;
+    EXPECT_NEAR(before.parameter, 2.0 / (3.0 * std::sqrt(3.0)), 1e-3);
+    const double same_control =
+        StiffSnapper::energy_at(before.dofs, q.parameter) - StiffSnapper::energy_at(q.dofs, q.parameter);
+    EXPECT_NEAR(q.energy_drop, same_control, 1e-12 * std::abs(q.energy));
+    EXPECT_NEAR(q.energy_drop, 0.75 * StiffSnapper::a, 0.01 * 0.75 * StiffSnapper::a);
+    EXPECT_LT(before.energy - q.energy, 0.0) << "the cross-control difference";
+    std::cout << "[ measured ] snap at mu " << before.parameter << ": released " << q.energy_drop
+              << " at one control; across the step " << before.energy - q.energy << std::endl;
+  }
+  EXPECT_EQ(snaps, 1);
+}
+
+// A regression case at the size that showed it (8_1, n = 400, the default
+// model): its state 18 pressed between plates to a gap of 0.93081 (the
+// default loads experiment's run 10, the branch's last state before a snap,
+// stored in tests/mechanics/data), taken as it is and pressed on with that
+// run's first step (0.799). The branch ends at a fold (the lowest eigenvalue
+// below 1e-6, about 1e-5 elsewhere on the path) and the knot snaps into
+// state 39 (energy 0.9793881171 released): the energy released at the
+// snap's control is positive, while the energies of the two path points,
+// each at its own control, rise by the plates' force times the step
+// (0.024 × 1e-4): the negative "energy drop" that snap once reported.
+TEST(KnotLoading, PressedEightOneSnapReleasesEnergyAtItsControl) {
+  const Points X = read_curve(std::string(config::kSourceDir) + "/tests/mechanics/data/8_1_pressed_before_snap.obj");
+  KnotLoadOptions o;
+  o.kind = LoadKind::Plates;
+  o.relax_start = false;
+  o.from = 0.930810547783;
+  o.to = 0.131682;  // the first step |to - from| / steps = 0.799, as in the run
+  o.steps = 1;
+  o.normal = Vec3(0.48763379770361803, -0.13772313783943874, -0.86211693907544);
+  o.stop_at_snap = true;
+  const KnotLoadResult r = load_knot(X, VecX::Constant(X.rows(), 1.0), o);
+  EXPECT_TRUE(r.alexander_preserved);
+  EXPECT_EQ(r.branch_jumps, 0);
+  ASSERT_EQ(r.snaps.size(), 1u);
+  const Snap& s = r.snaps.front();
+  const PathPoint &before = r.path.points[static_cast<size_t>(s.point) - 1], &after = r.path.points[static_cast<size_t>(s.point)];
+  EXPECT_GT(s.energy_drop, 0.0);
+  EXPECT_LT(before.energy - after.energy, 0.0) << "the cross-control difference";
+  EXPECT_LT(before.lowest_eigenvalue, 1e-6);
+  EXPECT_GT(s.jump, 0.1);
+  EXPECT_EQ(s.released_status, "converged-stable");
+  EXPECT_NEAR(s.released_energy, 0.9793881171, 1e-8);
+  std::cout << "[ measured ] 8_1 pressed: snap at gap " << s.parameter << ", released " << s.energy_drop
+            << " at one control; across the step " << before.energy - after.energy << "; lowest eigenvalue before "
+            << before.lowest_eigenvalue << std::endl;
+}
 
 // The knot model plus a pull: the assembled Hessian against central
 // differences of the gradient (h = 1e-6), 1e-5 relative in the Frobenius norm.

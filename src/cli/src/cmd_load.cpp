@@ -29,7 +29,7 @@ namespace fs = std::filesystem;
 struct LoadCommand {
   std::string file, out, dataset;
   std::optional<std::string> pull, force, normal;
-  bool plates = false, go_on = false, json = false, overwrite = false;
+  bool plates = false, go_on = false, json = false, overwrite = false, as_is = false;
   std::optional<double> rest_length;  // [length]
   KnotLoadOptions options;
 };
@@ -37,7 +37,7 @@ struct LoadCommand {
 bool parse_load(int argc, char** argv, LoadCommand& c) {
   KnotLoadOptions& o = c.options;
   ArgParser args("load", "STATE (--pull I,J | --plates | --force I,J) --to X [--from X] [--normal X,Y,Z] [--steps N] "
-                         "[--max-points N] [--go-on] [--rest-length L] [--dataset FILE] -o DIR [--overwrite] [--json]");
+                         "[--max-points N] [--go-on] [--as-is] [--rest-length L] [--dataset FILE] -o DIR [--overwrite] [--json]");
   args.positional("STATE", &c.file, "a curve (.obj or .txt), relaxed first without load; e.g. from knots export");
   args.option("--pull", &c.pull, "pull vertices I and J (0-based) apart: the control is their distance");
   args.flag("--plates", &c.plates, "press the knot between two parallel plates: the control is their gap");
@@ -50,6 +50,9 @@ bool parse_load(int argc, char** argv, LoadCommand& c) {
   args.option("--steps", &o.steps, "the first step is |to - from| / steps (default 40)");
   args.option("--max-points", &o.max_points, "points of the path at most (default 400)");
   args.flag("--go-on", &c.go_on, "go on after a snap from the state it fell into (default: stop at the first)");
+  args.flag("--as-is", &c.as_is,
+            "take STATE as it is, without relaxing it first: an equilibrium under the load at --from (e.g. a point "
+            "of an earlier path); needs --from");
   args.option("--rest-length", &c.rest_length, "rest length of every edge (default: the state's own edge lengths)");
   args.option("--dataset", &c.dataset, "match the start and each snap's released state to this data set's equilibria");
   args.option("-o,--output", &c.out, "folder for path.csv, the curves and summary.json (must not exist)");
@@ -97,6 +100,8 @@ void resolve_load(LoadCommand& c) {
   require_input(!c.rest_length || (*c.rest_length > 0.0 && std::isfinite(*c.rest_length)),
                 "--rest-length must be positive");
   o.stop_at_snap = !c.go_on;
+  require_input(!c.as_is || o.from, "--as-is needs --from: the control at which STATE is an equilibrium");
+  o.relax_start = !c.as_is;
   o.validate();
 }
 
@@ -186,7 +191,7 @@ int cmd_load(int argc, char** argv) {
             << fmt(pts.back().parameter) << " (" << to_string(r.path.status) << ", " << pts.size() << " points, "
             << fmt(r.path.seconds, 3) << " s)\n"
             << "energy " << fmt(r.start_energy) << " -> " << fmt(pts.back().energy) << ", work " << fmt(r.work)
-            << ", dissipated " << fmt(r.dissipated) << "\n";
+            << ", dissipated " << fmt(r.dissipated) << ", branch jumps " << r.branch_jumps << "\n";
   for (const Snap& s : r.snaps)
     std::cout << "snap at " << r.parameter_name << " " << fmt(s.parameter) << ", force " << fmt(s.reaction)
               << ", jump " << fmt(s.jump, 4) << ", energy drop " << fmt(s.energy_drop, 4) << "; released: "

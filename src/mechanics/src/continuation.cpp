@@ -4,6 +4,7 @@
 #include <Eigen/SparseLU>
 #include <chrono>
 #include <cmath>
+#include <limits>
 
 #include "ek/core/errors.hpp"
 #include "ek/solver/eigen_analysis.hpp"
@@ -29,6 +30,7 @@ std::string to_string(PathEvent e) {
     case PathEvent::LimitPoint: return "limit-point";
     case PathEvent::Bifurcation: return "bifurcation";
     case PathEvent::Snap: return "snap";
+    case PathEvent::BranchJump: return "branch-jump";
   }
   return "?";
 }
@@ -157,6 +159,14 @@ double shape_jump(const VecX& x, const VecX& xp, Eigen::Index vertices) {
   return std::sqrt((moved - from).squaredNorm() / static_cast<double>(vertices));
 }
 
+/// How a step's attempt ended.
+enum class Landing {
+  Point,       ///< a point of the branch followed
+  Snap,        ///< the branch ended: its last state fell to a state of lower energy at the same control
+  BranchJump,  ///< at the smallest step, a landing that is neither the branch nor a snap off it
+  Retry,       ///< no landing: halve the step
+};
+
 struct Tangent {
   VecX x;
   double mu = 0.0;
@@ -205,6 +215,61 @@ class Tracer {
     iterations = r.iterations;
     jump = shape_jump(f_.dofs(), xp, f_.rigid_vertices());
     return r.status == SolverStatus::ConvergedStable;
+  }
+
+  /// The stable path's step to μ_p. E(·; μ_p) is minimised from the
+  /// predictor xp; that landing is a point of the branch when it lies within
+  /// max_jump of xp and not above E(x_k; μ_p), the energy of the branch's
+  /// last state at the new control (along a stable branch the minimum at μ_p
+  /// lies below it). Otherwise (near a fold or a bifurcation dx/dμ grows and
+  /// the predictor can cross into another basin) it is minimised again from
+  /// x_k itself: within max_jump of x_k, the branch goes on; farther, at the
+  /// smallest step, the knot snaps, releasing `drop` = E(x_k; μ_p) −
+  /// E(x; μ_p) > 0 at the same control, if the branch has ended: x_k and
+  /// the landing are two stable states at μ_k (bistable()); otherwise the
+  /// branch only moved fast and the landing is its next point. A landing that
+  /// releases nothing, or an x_k the load no longer admits at μ_p (e.g.
+  /// outside the closing plates) with a far landing, is a branch jump;
+  /// above the smallest step both retry with a smaller one.
+  Landing land(const VecX& xk, double muk, const VecX& xp, double mup, bool smallest, int& iterations, double& drop) {
+    const bool admitted = move(xk, mup);
+    const double e_branch = admitted ? f_.energy() : std::numeric_limits<double>::infinity();
+    const double slack = 1e-10 * std::max(1.0, std::abs(e_branch));
+    double jump = 0.0;
+    if (f_.max_step(xk, xp - xk) >= 1.0 && move(xp, mup)) {
+      f_.accept();
+      const bool converged = minimize(xp, iterations, jump);
+      if (converged && jump <= o_.max_jump && !(f_.energy() > e_branch + slack)) return Landing::Point;
+      if (converged && !admitted && smallest) return Landing::BranchJump;
+    }
+    if (!admitted) return Landing::Retry;
+    move(xk, mup);
+    f_.accept();
+    if (!minimize(xk, iterations, jump)) return Landing::Retry;
+    if (jump <= o_.max_jump) return Landing::Point;
+    if (!smallest) return Landing::Retry;
+    drop = e_branch - f_.energy();
+    if (!(drop > slack)) return Landing::BranchJump;
+    return bistable(xk, muk, mup) ? Landing::Snap : Landing::Point;
+  }
+
+  /// Whether f's landing x at μ_p and x_k are two stable states at μ_k: x
+  /// minimised back at μ_k does not return within max_jump of x_k. A branch
+  /// that only moves fast along a soft mode (dx/dμ large where the lowest
+  /// eigenvalue is small but the branch goes on, as contacts slide) returns;
+  /// a branch that ended between μ_k and μ_p does not. Leaves f at (x, μ_p).
+  bool bistable(const VecX& xk, double muk, double mup) {
+    const VecX x = f_.dofs();
+    int iterations = 0;
+    double back = 0.0;
+    bool returned = move(x, muk);
+    if (returned) {
+      f_.accept();
+      returned = minimize(xk, iterations, back) && back <= o_.max_jump;
+    }
+    move(x, mup);
+    f_.accept();
+    return !returned;
   }
 
   /// The unit tangent at f's point, oriented along `previous` (or towards increasing μ).
@@ -348,40 +413,37 @@ LoadPath follow_path(ParameterizedObjective& f, const ContinuationOptions& o,
     const double h = st.h;
     const VecX& xp = st.x;
     const double mup = st.mu;
-    const double safe = f.max_step(xk, xp - xk);
-    bool ok = safe >= 1.0 && tr.move(xp, mup);
-    bool snapped = false;
-    if (ok) {
+    const bool smallest = std::min(ds, h) * 0.5 < o.min_step_factor * first;
+    Landing landing = Landing::Retry;
+    double drop = 0.0;
+    if (o.minimizer) {
+      landing = tr.land(xk, muk, xp, mup, smallest, its, drop);
+    } else if (f.max_step(xk, xp - xk) >= 1.0 && tr.move(xp, mup)) {
       f.accept();
-      if (o.minimizer) {
-        double jump = 0.0;
-        ok = tr.minimize(xp, its, jump);
-        // a jump at the smallest step is a snap; above it the step is halved
-        snapped = ok && jump > o.max_jump && std::min(ds, h) * 0.5 < o.min_step_factor * first;
-        ok = ok && (jump <= o.max_jump || snapped);
-      } else {
-        ok = tr.correct(last ? nullptr : &*t, xp, mup, its);
-      }
+      if (tr.correct(last ? nullptr : &*t, xp, mup, its)) landing = Landing::Point;
     }
-    if (!ok) {
+    if (landing == Landing::Retry) {
       tr.move(xk, muk);
       f.accept();
       ds = std::min(ds, h) * 0.5;
       if (ds < o.min_step_factor * first) return finish(PathStatus::Stalled);
       continue;
     }
+    const bool snapped = landing == Landing::Snap;
     const std::optional<Tangent> next = tr.tangent(&*t);
     if (!next) return finish(PathStatus::Stalled);
     PathPoint q = tr.measure(its);
     q.tangent_parameter = next->mu;
+    q.energy_drop = drop;
     const PathPoint& prev = path.points.back();
     if (snapped) q.event = PathEvent::Snap;
+    else if (landing == Landing::BranchJump) q.event = PathEvent::BranchJump;
     else if (!o.minimizer && next->mu * t->mu < 0.0) q.event = PathEvent::LimitPoint;
     else if (q.index >= 0 && prev.index >= 0 && q.index != prev.index) q.event = PathEvent::Bifurcation;
     if (!record(q)) return finish(PathStatus::Stopped);
     t = next;
     if (last) return finish(PathStatus::Reached);
-    if (snapped) ds = first;
+    if (snapped || landing == Landing::BranchJump) ds = first;
     else if (its <= (o.minimizer ? 8 : 3)) ds = std::min(ds * 1.5, o.max_step_factor * first);
   }
   return finish(PathStatus::MaxPoints);

@@ -24,6 +24,7 @@ Json knot_load_json(const KnotLoadOptions& o, const KnotLoadResult& r, const Jso
   j["end_parameter"] = last(&PathPoint::parameter);
   j["work"] = json_number(r.work);
   j["dissipated"] = json_number(r.dissipated);
+  j["branch_jumps"] = r.branch_jumps;
   j["alexander_preserved"] = r.alexander_preserved;
   j["start_match"] = start_match;
   j["snaps"] = Json::array();

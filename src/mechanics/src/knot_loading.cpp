@@ -98,7 +98,7 @@ Snap snap_at(int k, const LoadPath& path, const KnotSystem& sys, const VecX& res
   s.reaction = before.reaction;
   s.loaded = sys.positions(p.dofs);
   s.loaded_energy = p.energy;
-  s.energy_drop = before.energy - p.energy;
+  s.energy_drop = p.energy_drop;
   s.jump = std::sqrt((s.loaded - sys.positions(before.dofs)).rowwise().squaredNorm().mean());
   RelaxOptions ro = o.relax;
   ro.rest_lengths = rest;
@@ -128,7 +128,8 @@ std::optional<double> secant_stiffness(const LoadPath& path, size_t k) {
   const auto& pts = path.points;
   if (k == 0 || k >= pts.size()) return std::nullopt;
   const PathPoint &p = pts[k], &q = pts[k - 1];
-  if (p.event == PathEvent::Snap || p.displacement == q.displacement) return std::nullopt;
+  if (p.event == PathEvent::Snap || p.event == PathEvent::BranchJump || p.displacement == q.displacement)
+    return std::nullopt;
   return (p.reaction - q.reaction) / (p.displacement - q.displacement);
 }
 
@@ -136,7 +137,7 @@ double path_work(const LoadPath& path, size_t end) {
   const auto& pts = path.points;
   double work = 0.0;
   for (size_t k = 1; k < std::min(end, pts.size()); ++k)
-    if (pts[k].event != PathEvent::Snap)
+    if (pts[k].event != PathEvent::Snap && pts[k].event != PathEvent::BranchJump)
       work += 0.5 * (pts[k - 1].parameter_derivative + pts[k].parameter_derivative) *
               (pts[k].parameter - pts[k - 1].parameter);
   return work;
@@ -146,13 +147,18 @@ KnotLoadResult load_knot(const Points& start, const VecX& rest, const KnotLoadOp
   o.validate();
   RelaxOptions ro = o.relax;
   ro.rest_lengths = rest;
-  const RelaxResult relaxed = relax(start, ro);
   KnotLoadResult out;
-  out.start_energy = relaxed.energy.total;
-  const AlexanderPolynomial alexander0 = alexander(relaxed.positions);
-  KnotSystem sys(relaxed.positions, rest, o.relax);
+  Points x0 = start;
+  if (o.relax_start) {
+    const RelaxResult relaxed = relax(start, ro);
+    out.start_energy = relaxed.energy.total;
+    x0 = relaxed.positions;
+  }
+  const AlexanderPolynomial alexander0 = alexander(x0);
+  KnotSystem sys(x0, rest, o.relax);
+  if (!o.relax_start) out.start_energy = sys.objective().energy();
   double from = 0.0;
-  const std::unique_ptr<ControlledLoad> load = make_load(relaxed.positions, rest, o, out, from);
+  const std::unique_ptr<ControlledLoad> load = make_load(x0, rest, o, out, from);
   out.parameter_name = load->parameter_name();
   out.from = from;
   LoadedKnot f(sys.objective(), *load);
@@ -172,6 +178,7 @@ KnotLoadResult load_knot(const Points& start, const VecX& rest, const KnotLoadOp
   });
   const auto& pts = out.path.points;
   for (size_t k = 1; k < pts.size(); ++k) {
+    out.branch_jumps += pts[k].event == PathEvent::BranchJump;
     if (pts[k].event != PathEvent::Snap) continue;
     out.snaps.push_back(snap_at(static_cast<int>(k), out.path, sys, rest, o, alexander0));
     out.dissipated += out.snaps.back().energy_drop;

@@ -129,7 +129,7 @@ each snap's released state are matched to its closest equilibrium (ICP).
 
 Fields: the JSON keys of `knots load` (load, parameter, from, to, vertices, normal,
 pull_stiffness, status, points, start_energy, end_energy, end_parameter, work,
-dissipated, alexander_preserved, start_match, snaps, seconds); each snap a Result with
+dissipated, branch_jumps, alexander_preserved, start_match, snaps, seconds); each snap a Result with
 point, parameter, reaction, jump, energy_drop, loaded_energy, released_status,
 released_energy, released_match, and loaded and released, (n, 3): the state it fell into
 under the load and that state relaxed without it. path: a Result of arrays, one entry per

@@ -72,10 +72,17 @@ struct ContinuationOptions {
   /// over μ), the predictor is x + Δμ·dx/dμ with dx/dμ = −H⁻¹ ∂G/∂μ, and each
   /// point minimises E(·; μ_p) from the predictor (NewtonSolver with these
   /// options: line search, shifts of indefinite Hessians, the CCD), so the
-  /// path follows stable equilibria only. A minimiser that lands farther
-  /// than `max_jump` from the predictor halves Δs; at the smallest Δs the
-  /// landing is kept as a snap (PathEvent::Snap: the stable state it jumped
-  /// to, past a fold or a subcritical bifurcation).
+  /// path follows stable equilibria only. A landing farther than `max_jump`
+  /// from the predictor, or above the energy of the branch's last state at
+  /// the new control, is not taken as the branch's next point: the minimiser
+  /// starts again from that last state; if it too lands farther than
+  /// `max_jump`, Δs is halved, and at the smallest Δs the landing is a snap
+  /// (PathEvent::Snap: the stable state it fell to, past a fold or a
+  /// subcritical bifurcation, with less energy at the same control, and
+  /// which, minimised back at the previous control, does not return to the
+  /// branch: two stable states there), the branch's next point (it does
+  /// return: the branch only moved fast along a soft mode) or, if it
+  /// released no energy, a branch jump (PathEvent::BranchJump).
   std::optional<NewtonOptions> minimizer;
   double max_jump = 1.0;             ///< [length] the RMS vertex distance from the predictor after the best rigid motion (rigid_vertices(); minimizer only)
   void validate() const;             ///< InputError for impossible values
@@ -86,9 +93,18 @@ enum class PathEvent {
   Regular,
   LimitPoint,    ///< the parameter turned back between the previous point and this one
   Bifurcation,   ///< the index changed without a turn (an eigenvalue crossed zero)
-  Snap,          ///< (stable path) the minimiser jumped to another stable state at the smallest step
+  /// (stable path) the branch ended at the smallest step: its last state,
+  /// minimised at the new control, fell to another stable state of lower
+  /// energy (energy_drop > 0)
+  Snap,
+  /// (stable path) at the smallest step the minimiser landed on another
+  /// equilibrium that is not the branch's continuation and released no
+  /// energy at the same control (or the branch's last state is outside what
+  /// the load admits there): the path goes on from it, but it is no snap
+  BranchJump,
 };
-std::string to_string(PathEvent event);  ///< "regular", "limit-point", "bifurcation", "snap"
+/// "regular", "limit-point", "bifurcation", "snap", "branch-jump"
+std::string to_string(PathEvent event);
 
 struct PathPoint {
   double parameter = 0.0;      ///< [parameter] μ
@@ -105,6 +121,9 @@ struct PathPoint {
   bool stable = false;         ///< index == 0
   PathEvent event = PathEvent::Regular;
   int corrector_iterations = 0;
+  /// [energy] Snap: E(x_{k−1}; μ_k) − E(x_k; μ_k), the energy the branch's
+  /// last state releases falling into this one at the same control; else 0
+  double energy_drop = 0.0;
   VecX dofs;                   ///< the equilibrium
 };
 

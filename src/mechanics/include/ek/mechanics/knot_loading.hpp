@@ -51,9 +51,15 @@ struct KnotLoadOptions {
   int steps = 40;                      ///< [1] the first arclength step is |to − from| / steps
   int max_points = 400;                ///< [1] points of the path at most
   bool stop_at_snap = true;            ///< end the path at its first snap (else go on from the state it snapped into)
+  /// relax the start without the load first (false: the start is taken as
+  /// it is, e.g. a point of an earlier path, already an equilibrium under the
+  /// load at `from`; the path's first point brings it to the tolerance there)
+  bool relax_start = true;
   int eigen_count = 4;                 ///< [1] lowest eigenpairs at each point (the index)
-  /// [ℓ] a minimiser landing farther than this RMS vertex distance from the
-  /// predictor (at the smallest step) is a snap
+  /// [ℓ] a landing farther than this RMS vertex distance (after the best
+  /// rigid motion) from the predictor and from the branch's last state, at
+  /// the smallest step and with energy released at the same control, is a
+  /// snap (continuation.hpp, ContinuationOptions::minimizer)
   double snap_jump = 0.1;
   void validate() const;               ///< InputError for impossible values
 };
@@ -66,7 +72,9 @@ struct Snap {
   double parameter = 0.0;         ///< [parameter] the last parameter of the branch that ended
   double reaction = 0.0;          ///< [force] the device's force there: the push that flips the state
   double jump = 0.0;              ///< [length] RMS vertex distance from the branch's last state to the new one
-  double energy_drop = 0.0;       ///< [energy] E_knot + E_load released by the jump (dissipated)
+  /// [energy] E_knot + E_load released by the jump at the same control:
+  /// E(x_before; μ) − E(x_loaded; μ) at the snap's point μ (> 0; dissipated)
+  double energy_drop = 0.0;
   Points loaded;                  ///< n by 3: the stable state it falls into under the load
   double loaded_energy = 0.0;     ///< [energy] E_knot + E_load there
   Points released;                ///< n by 3: that state relaxed without the load
@@ -81,12 +89,15 @@ struct KnotLoadResult {
   LoadPath path;
   std::string parameter_name;     ///< "distance", "gap" or "force"
   double from = 0.0;              ///< [length or energy/length] the control at the path's start
-  double start_energy = 0.0;      ///< [energy] the start relaxed without load
+  double start_energy = 0.0;      ///< [energy] the start relaxed without load (as given without relax_start)
   /// [energy] ∫ ∂E/∂μ dμ along the path (trapezoids; a snap is a jump at
   /// nearly fixed μ and does no work): for a displacement control, the
   /// change of E_knot + E_load plus the energy the snaps dissipated
   double work = 0.0;
   double dissipated = 0.0;        ///< [energy] Σ of the snaps' energy drops
+  /// [1] points where the path left its branch without a snap
+  /// (PathEvent::BranchJump: no energy released at the same control)
+  int branch_jumps = 0;
   bool alexander_preserved = true;  ///< at every path point
   std::vector<Snap> snaps;
   Vec3 normal = Vec3::UnitZ();    ///< plates: the normal used
@@ -102,12 +113,12 @@ std::array<int, 2> diameter_pair(const Points& X);
 /// snap, or where the displacement did not change.
 std::optional<double> secant_stiffness(const LoadPath& path, size_t k);
 
-/// ∫ ∂E/∂μ dμ over the path's points [0, end) by trapezoids, a snap (a jump
-/// at nearly fixed μ) doing no work: KnotLoadResult::work for end = all.
+/// ∫ ∂E/∂μ dμ over the path's points [0, end) by trapezoids, a snap or a
+/// branch jump (a jump at nearly fixed μ) doing no work: KnotLoadResult::work for end = all.
 double path_work(const LoadPath& path, size_t end);
 
 /// Loads `start` (n by 3, simple; rest lengths `rest`, n) as `options` say:
-/// relaxes it without load first, then follows its stable equilibria from
+/// relaxes it without load first (unless relax_start is off), then follows its stable equilibria from
 /// `from` to `to` (continuation.hpp with the model's Newton solver as the
 /// corrector); where the branch ends the knot snaps into another stable
 /// state and, unless stop_at_snap, the path goes on from there. InputError
