@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "cli_runner.hpp"
+#include "ek/core/commit.hpp"
 #include "ek/core/paths.hpp"
 #include "ek/dataset/dataset_file.hpp"
 #include "ek/dataset/ledger.hpp"

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "commands.hpp"
+#include "ek/core/commit.hpp"
 #include "ek/core/paths.hpp"
 #include "ek/dataset/ledger.hpp"
 #include "ek/dataset/run.hpp"

@@ -5,9 +5,6 @@
 #include "ek/core/paths.hpp"
 
 namespace ek {
-namespace detail {
-extern const char* const kSourceCommit;  // generated/commit.cpp (cmake/ek_commit.cmake)
-}
 
 std::string knot_table_path() {
   const char* env = std::getenv("KNOT_TABLE");
@@ -16,8 +13,6 @@ std::string knot_table_path() {
 }
 
 std::string project_version() { return config::kVersion; }
-
-std::string source_commit() { return detail::kSourceCommit; }
 
 std::string now_iso8601() {
   const std::time_t t = std::time(nullptr);

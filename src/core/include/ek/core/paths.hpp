@@ -12,12 +12,6 @@ std::string knot_table_path();
 /// Project version string (for reports and data-set metadata).
 std::string project_version();
 
-/// The commit the program was built from: `git describe --always --dirty
-/// --abbrev=12` of the source tree at build time ("…-dirty" when the tree
-/// had uncommitted changes), "unknown" when it was built outside a git
-/// checkout. Stamped at every build (cmake/ek_commit.cmake).
-std::string source_commit();
-
 /// The current time in UTC as ISO 8601, "2026-12-03T21:08:18Z".
 std::string now_iso8601();
 
