@@ -5,12 +5,14 @@ control at the start (the gap or distance at which the start just touches
 the device), one line per loaded state (from A, from B); a snap is marked by
 a cross at the control where its branch ended, a flip (the released state
 is the pair's other state) by a star, a branch jump (the path left its
-branch without releasing energy: no snap) by a circle. Bottom: the first
+branch without releasing energy: no snap) by a circle. Bottom: a
 flip's state before it snapped, the state it fell into under the load, and
 that state released, as tubes of the wire's radius in the first one's
-principal frame, seen along its axis of least extent (or, without a flip,
-the first snap's)."""
+principal frame, seen along its axis of least extent (a flip of a pair whose
+barrier the transitions computed first; without a flip, the first snap's).
+The plates' panels have a logarithmic control axis."""
 import numpy as np
+from matplotlib.ticker import NullFormatter
 
 from common import draw_framed, frame_of, parse_args, plt, read_csv, read_obj, read_summary, save, save_empty
 
@@ -58,16 +60,21 @@ for p, key in enumerate(panels):
             flip = z["released_state"] == "other"
             ax.plot([float(z["parameter"]) / start], [float(z["reaction"])], "*" if flip else "x",
                     color=line.get_color(), ms=8 if flip else 4, mew=0.8)
+    if key[3] == "plates":  # the gap closes over up to two decades: a log axis
+        ax.set_xscale("log")
+        ax.xaxis.set_minor_formatter(NullFormatter())
     ax.set_title(f"{key[0]} {key[1]}–{key[2]}: {key[3]}", fontsize=8)
-    ax.tick_params(labelsize=6)
+    ax.tick_params(which="both", labelsize=6)
     ax.legend(fontsize=5.5, loc="best")
     if p % cols == 0:
         ax.set_ylabel("force [energy/length]", fontsize=7)
     ax.set_xlabel("control / control at the start", fontsize=7)
 
-# the first flip's states (else the first snap's)
+# a flip's states: the first flip of a pair whose barrier was computed, else
+# the first flip, else the first snap
 flips = [z for z in snaps if z["released_state"] == "other"]
-z = flips[0] if flips else (snaps[0] if snaps else None)
+joined = [z for z in flips if next(r for r in runs if r["run"] == z["run"])["barrier_scaled"]]
+z = (joined or flips or snaps or [None])[0]
 if z is not None:
     run = next(r for r in runs if r["run"] == z["run"])
     names = [(f"before (control {float(z['parameter']):.3g})", z["curve_before"]),
@@ -83,7 +90,9 @@ if z is not None:
             f"force {number(z['reaction'])}, work {number(run['flip_work_scaled'])} EI/L against a computed barrier "
             f"{number(run['barrier_scaled']) or 'not joined'} EI/L") if flips else \
         f"first snap (run {run['run']}: {run['knot']} {run['state_from']} by {run['load']}); no flip at this scale"
-    fig.text(0.5, 1.0 / (rows + 1.25) * 1.25 + 0.01, what, ha="center", fontsize=8)
+    caption = fig.add_subplot(grid[rows, :])
+    caption.axis("off")
+    caption.text(0.5, 1.16, what, transform=caption.transAxes, ha="center", fontsize=8)
 fig.suptitle(f"{s['runs']} runs on {s['pairs']} pairs: {s['snaps']} snaps (x), {s['flips']} flips (*), "
              f"branch jumps (o) are no snaps", fontsize=9)
 save(fig, a.out, "fig_loads")
