@@ -213,8 +213,9 @@ manifest:
 # ledger committed under docs/results/SCALE/ledgers/ (scripts/ledger_shards.sh;
 # progress in results/SCALE/shards/progress.log). ledger-results: those
 # ledgers analysed again without any relaxation: the sampling summary
-# (knots describe --summary), exp_milnor and exp_planarity, Fig. 9 and the
-# planarity histogram, and the data-set claims PaperMilnor.* and
+# (knots describe --summary), exp_milnor and exp_planarity, Fig. 9, the
+# planarity histogram and one knot's state gallery (fig_ledger_states.py:
+# 8_1 for paper10, 12a_81 for sample12), and the data-set claims PaperMilnor.* and
 # PaperPlanarity.* checked on them, for every scale that has ledgers.
 LEDGER_SCALES ?= sample12 paper10
 ledger-shards: build
@@ -231,6 +232,7 @@ ledger-results: build
 	  $(EXP)/exp_planarity --scale $$s --out $$d/planarity && \
 	  MPLBACKEND=Agg $(PYTHON) figures/fig09_milnor.py --results $$d --out $$d && \
 	  MPLBACKEND=Agg $(PYTHON) figures/fig_planarity.py --results $$d --out $$d && \
+	  MPLBACKEND=Agg $(PYTHON) figures/fig_ledger_states.py --results $$d --knot $$(case $$s in paper10) echo 8_1;; *) echo 12a_81;; esac) --out $$d && \
 	  EK_PAPER_RESULTS=$(CURDIR)/$$d KNOT_TABLE=$(KNOT_TABLE) $(BUILD)/paper_checks/check_milnor && \
 	  EK_PAPER_RESULTS=$(CURDIR)/$$d KNOT_TABLE=$(KNOT_TABLE) $(BUILD)/paper_checks/check_planarity || exit 1; \
 	done

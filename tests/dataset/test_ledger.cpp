@@ -2,7 +2,10 @@
 // states they keep, and a knot rerun from its ledger entry reproducing them.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 #include "cli_runner.hpp"
 #include "ek/core/commit.hpp"
@@ -81,6 +84,18 @@ TEST(Ledger, DatasetRunWritesTheLedgerOfItsStates) {
   const auto merged = run("merge " + ledger + " " + dir + "/again.ledger.h5 -o " + dir + "/m.ledger.h5");
   EXPECT_EQ(merged.status, 2) << merged.err;  // the same knots twice
   EXPECT_NE(merged.err.find("in two of the ledgers"), std::string::npos) << merged.err;
+  // a damaged ledger: one line naming it, exit status 2
+  std::string bytes;
+  {
+    std::ifstream in(ledger, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  bytes[bytes.size() / 2] = static_cast<char>(bytes[bytes.size() / 2] ^ 1);
+  std::ofstream(dir + "/bad.ledger.h5", std::ios::binary) << bytes;
+  const auto bad = run("describe " + dir + "/bad.ledger.h5");
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_EQ(std::count(bad.err.begin(), bad.err.end(), '\n'), 1) << bad.err;
+  EXPECT_NE(bad.err.find("bad.ledger.h5' is damaged"), std::string::npos) << bad.err;
 }
 
 // Rerunning a knot from its ledger entry (the ledger's parameters, the
