@@ -70,8 +70,11 @@ TEST(Ledger, DatasetRunWritesTheLedgerOfItsStates) {
         EXPECT_LE((e.states[s].curve - x).cwiseAbs().maxCoeff(), 0.5 * l.provenance.curve_quantum * (1 + 1e-9));
       }
       const int sample = e.representative_sample(static_cast<int>(s));
-      for (const RunRecord& run : k.runs)
-        if (run.sample == sample) EXPECT_EQ(run.equilibrium, clusters[s].representative);
+      for (const RunRecord& run : k.runs) {
+        if (run.sample == sample) {
+          EXPECT_EQ(run.equilibrium, clusters[s].representative);
+        }
+      }
     }
   }
   // describe reads it; merge of ledgers works; a ledger from the data set alone has no wall time

@@ -94,6 +94,18 @@ class StiffSnapper : public ParameterizedObjective {
   double mu_ = -0.6;
 };
 
+/// The snapping systems' path from their start to μ = 0.6, each point
+/// minimised to `tolerance`, at most 0.5 per jump, no eigenvalues.
+ContinuationOptions snapper_path_options(double tolerance) {
+  ContinuationOptions o;
+  o.target = 0.6;
+  o.minimizer = NewtonOptions{};
+  o.minimizer->gradient_tolerance = tolerance;
+  o.max_jump = 0.5;
+  o.eigen_count = 0;
+  return o;
+}
+
 }  // namespace
 
 // The stiff spring's snap (StiffSnapper): one snap, at the fold (to 1e-3),
@@ -104,12 +116,7 @@ class StiffSnapper : public ParameterizedObjective {
 // release: a snap measured that way would look like a rise in energy.
 TEST(Continuation, SnapReleasesEnergyAtTheSameControl) {
   StiffSnapper f;
-  ContinuationOptions o;
-  o.target = 0.6;
-  o.minimizer = NewtonOptions{};
-  o.minimizer->gradient_tolerance = 1e-9;
-  o.max_jump = 0.5;
-  o.eigen_count = 0;
+  const ContinuationOptions o = snapper_path_options(1e-9);
   const LoadPath p = follow_path(f, o);
   EXPECT_EQ(p.status, PathStatus::Reached);
   int snaps = 0;
@@ -261,12 +268,7 @@ TEST(KnotLoading, PressedTrefoilSnapsAndItsReleasedStateIsATrefoil) {
 // of √3 in x (to 1e-2), then on to μ = 0.6 with x³ − x = μ at every point.
 TEST(Continuation, StablePathSnapsAtTheFoldWithTheKnownJump) {
   Snapper f;
-  ContinuationOptions o;
-  o.target = 0.6;
-  o.minimizer = NewtonOptions{};
-  o.minimizer->gradient_tolerance = 1e-10;
-  o.max_jump = 0.5;
-  o.eigen_count = 0;
+  const ContinuationOptions o = snapper_path_options(1e-10);
   const LoadPath p = follow_path(f, o);
   EXPECT_EQ(p.status, PathStatus::Reached);
   int snaps = 0;

@@ -89,6 +89,50 @@ DatasetMetadata detail::read_parameters(hid_t f, const std::string& path) {
   return m;
 }
 
+void detail::write_knot_header(hid_t id, const KnotHeader& k) {
+  h5::set_attr(id, "name", k.name);
+  h5::set_attr(id, "crossing_number", static_cast<std::int64_t>(k.crossing_number));
+  h5::set_attr(id, "bridge_index", static_cast<std::int64_t>(k.bridge_index));
+  h5::set_attr(id, "braid_index", static_cast<std::int64_t>(k.braid_index));
+  h5::set_attr(id, "alexander", k.alexander);
+  h5::set_attr(id, "samples_used", static_cast<std::int64_t>(k.samples_used));
+  h5::set_attr(id, "adaptive", static_cast<std::int64_t>(k.adaptive ? 1 : 0));
+  h5::set_attr(id, "complete", static_cast<std::int64_t>(k.complete ? 1 : 0));
+  h5::write_doubles(id, "score_history", {k.score_history.size()}, k.score_history.data());
+  if (!k.is_link()) return;
+  h5::set_attr(id, "components", std::vector<std::int64_t>(k.components.begin(), k.components.end()));
+  h5::set_attr(id, "conway", k.conway);
+  h5::set_attr(id, "linking_numbers", k.linking_numbers);
+}
+
+KnotHeader detail::read_knot_header(hid_t id, const std::string& name,
+                                    const std::function<void(const std::string&)>& damaged) {
+  KnotHeader k;
+  k.name = h5::get_attr_string(id, "name");
+  if (k.name != name) damaged("its group is named " + name + " but its name attribute " + k.name);
+  k.crossing_number = static_cast<int>(h5::get_attr_int(id, "crossing_number"));
+  k.bridge_index = static_cast<int>(h5::get_attr_int(id, "bridge_index"));
+  k.braid_index = static_cast<int>(h5::get_attr_int(id, "braid_index"));
+  k.alexander = h5::get_attr_ints(id, "alexander");
+  k.samples_used = static_cast<int>(h5::get_attr_int(id, "samples_used"));
+  k.adaptive = h5::get_attr_int(id, "adaptive") != 0;
+  k.complete = h5::get_attr_int(id, "complete") != 0;
+  std::vector<hsize_t> shape;
+  k.score_history = h5::read_doubles(id, "score_history", &shape);
+  if (shape.size() != 1) damaged("score_history is not a list");
+  if (!h5::has_attr(id, "components")) return k;
+  const std::vector<std::int64_t> sizes = h5::get_attr_ints(id, "components");
+  for (std::int64_t c : sizes) {
+    if (c < 4 || c > (1 << 24)) damaged("a link component has " + std::to_string(c) + " vertices");
+    k.components.push_back(static_cast<int>(c));
+  }
+  if (sizes.size() < 2) damaged("a link has fewer than 2 components");
+  k.conway = h5::get_attr_ints(id, "conway");
+  k.linking_numbers = h5::get_attr_ints(id, "linking_numbers");
+  if (k.linking_numbers.size() != sizes.size() * sizes.size()) damaged("the linking numbers are not m by m");
+  return k;
+}
+
 namespace {
 
 /// Every field of the table; an empty field is left out (not recorded), which
@@ -221,14 +265,7 @@ void DatasetWriter::add(const KnotEntry& k) {
   require(!impl_->committed, "DatasetWriter::add after commit");
   h5::Handle g = h5::create_group(impl_->knots.id(), k.name);
   const hid_t id = g.id();
-  h5::set_attr(id, "name", k.name);
-  h5::set_attr(id, "crossing_number", static_cast<std::int64_t>(k.crossing_number));
-  h5::set_attr(id, "bridge_index", static_cast<std::int64_t>(k.bridge_index));
-  h5::set_attr(id, "braid_index", static_cast<std::int64_t>(k.braid_index));
-  h5::set_attr(id, "alexander", k.alexander);
-  h5::set_attr(id, "samples_used", static_cast<std::int64_t>(k.samples_used));
-  h5::set_attr(id, "adaptive", static_cast<std::int64_t>(k.adaptive ? 1 : 0));
-  h5::set_attr(id, "complete", static_cast<std::int64_t>(k.complete ? 1 : 0));
+  detail::write_knot_header(id, k);
   const hsize_t m = k.equilibria.size();
   const hsize_t n = m > 0 ? static_cast<hsize_t>(k.equilibria.front().rows()) : 0;
   std::vector<double> eq(m * n * 3);
@@ -251,14 +288,8 @@ void DatasetWriter::add(const KnotEntry& k) {
   h5::write_doubles(id, "similarity", {static_cast<hsize_t>(sim.rows()), static_cast<hsize_t>(sim.cols())}, sim.data());
   Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor> link = k.linkage;
   h5::write_doubles(id, "linkage", {static_cast<hsize_t>(link.rows()), 4}, link.data());
-  h5::write_doubles(id, "score_history", {k.score_history.size()}, k.score_history.data());
-  if (k.is_link()) {
-    require(std::accumulate(k.components.begin(), k.components.end(), hsize_t{0}) == n || m == 0,
-            "DatasetWriter: a link's components do not add up to its equilibria's vertices");
-    h5::set_attr(id, "components", std::vector<std::int64_t>(k.components.begin(), k.components.end()));
-    h5::set_attr(id, "conway", k.conway);
-    h5::set_attr(id, "linking_numbers", k.linking_numbers);
-  }
+  require(!k.is_link() || std::accumulate(k.components.begin(), k.components.end(), hsize_t{0}) == n || m == 0,
+          "DatasetWriter: a link's components do not add up to its equilibria's vertices");
   impl_->names.push_back(k.name);
 }
 
@@ -346,15 +377,7 @@ class KnotGroupReader {
 
   KnotEntry read() const {
     KnotEntry k;
-    k.name = h5::get_attr_string(id_, "name");
-    if (k.name != name_) damaged("its group is named " + name_ + " but its name attribute " + k.name);
-    k.crossing_number = static_cast<int>(h5::get_attr_int(id_, "crossing_number"));
-    k.bridge_index = static_cast<int>(h5::get_attr_int(id_, "bridge_index"));
-    k.braid_index = static_cast<int>(h5::get_attr_int(id_, "braid_index"));
-    k.alexander = h5::get_attr_ints(id_, "alexander");
-    k.samples_used = static_cast<int>(h5::get_attr_int(id_, "samples_used"));
-    k.adaptive = h5::get_attr_int(id_, "adaptive") != 0;
-    k.complete = h5::get_attr_int(id_, "complete") != 0;
+    static_cast<KnotHeader&>(k) = detail::read_knot_header(id_, name_, [this](const std::string& what) { damaged(what); });
     k.equilibria = equilibria();
     const auto m = static_cast<Eigen::Index>(k.equilibria.size());
     k.attribute_names = h5::read_strings(id_, "attribute_names");
@@ -367,31 +390,13 @@ class KnotGroupReader {
       damaged("the similarity matrix is not m by m");
     k.linkage = matrix("linkage");
     if (k.linkage.cols() != 4) damaged("the linkage table does not have 4 columns");
-    std::vector<hsize_t> shape;
-    k.score_history = h5::read_doubles(id_, "score_history", &shape);
-    if (shape.size() != 1) damaged("score_history is not a list");
-    if (h5::has_attr(id_, "components")) read_link(k);
+    if (k.is_link() && !k.equilibria.empty() &&
+        std::accumulate(k.components.begin(), k.components.end(), 0) != k.equilibria.front().rows())
+      damaged("the link's components do not add up to its equilibria's vertices");
     return k;
   }
 
  private:
-  // The link attributes, checked against the equilibria's rows.
-  void read_link(KnotEntry& k) const {
-    const std::vector<std::int64_t> sizes = h5::get_attr_ints(id_, "components");
-    std::int64_t total = 0;
-    for (std::int64_t c : sizes) {
-      if (c < 4 || c > (1 << 24)) damaged("a link component has " + std::to_string(c) + " vertices");
-      total += c;
-    }
-    if (sizes.size() < 2) damaged("a link has fewer than 2 components");
-    if (!k.equilibria.empty() && total != k.equilibria.front().rows())
-      damaged("the link's components do not add up to its equilibria's vertices");
-    k.components.assign(sizes.begin(), sizes.end());
-    k.conway = h5::get_attr_ints(id_, "conway");
-    k.linking_numbers = h5::get_attr_ints(id_, "linking_numbers");
-    if (k.linking_numbers.size() != sizes.size() * sizes.size()) damaged("the linking numbers are not m by m");
-  }
-
   hid_t id_;
   std::string path_, name_;
 };

@@ -272,7 +272,10 @@ void write_attr(hid_t obj, const std::string& name, hid_t mem_type, hid_t file_t
   if (H5Aexists(obj, name.c_str()) > 0) H5Adelete(obj, name.c_str());
   Handle space = space_of(shape);
   Handle a(H5Acreate2(obj, name.c_str(), file_type, space.id(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
-  if (!a.valid() || H5Awrite(a.id(), mem_type, data) < 0) fail("HDF5: cannot write attribute '" + name + "'");
+  // An empty list has nothing to write (HDF5 refuses a write from no buffer).
+  const bool empty = !shape.empty() && count_of(shape) == 0;
+  if (!a.valid() || (!empty && H5Awrite(a.id(), mem_type, data) < 0))
+    fail("HDF5: cannot write attribute '" + name + "'");
 }
 
 Handle open_attr(hid_t obj, const std::string& name) {

@@ -98,25 +98,12 @@ LedgerProvenance read_provenance(hid_t f) {
 void write_knot(hid_t knots, const LedgerEntry& e, const Rows& rows, const std::vector<std::string>& columns) {
   h5::Handle g = h5::create_group(knots, e.name);
   const hid_t id = g.id();
-  h5::set_attr(id, "name", e.name);
-  h5::set_attr(id, "crossing_number", static_cast<std::int64_t>(e.crossing_number));
-  h5::set_attr(id, "bridge_index", static_cast<std::int64_t>(e.bridge_index));
-  h5::set_attr(id, "braid_index", static_cast<std::int64_t>(e.braid_index));
-  h5::set_attr(id, "alexander", e.alexander);
-  h5::set_attr(id, "samples_used", static_cast<std::int64_t>(e.samples_used));
-  h5::set_attr(id, "adaptive", static_cast<std::int64_t>(e.adaptive ? 1 : 0));
-  h5::set_attr(id, "complete", static_cast<std::int64_t>(e.complete ? 1 : 0));
+  detail::write_knot_header(id, e);
   h5::set_attr(id, "rows", rows.list());
   std::vector<std::int64_t> own;
   for (const std::string& a : e.attribute_names)
     own.push_back(std::find(columns.begin(), columns.end(), a) - columns.begin());
   h5::set_attr(id, "attribute_columns", own);
-  h5::write_doubles(id, "score_history", {e.score_history.size()}, e.score_history.data());
-  if (e.is_link()) {
-    h5::set_attr(id, "components", std::vector<std::int64_t>(e.components.begin(), e.components.end()));
-    h5::set_attr(id, "conway", e.conway);
-    h5::set_attr(id, "linking_numbers", e.linking_numbers);
-  }
 }
 
 /// Integer columns of one table, appended entry by entry.
@@ -387,28 +374,8 @@ class LedgerFileReader {
     h5::Handle g = h5::open_group(knots, name);
     const hid_t id = g.id();
     LedgerEntry e;
-    e.name = h5::get_attr_string(id, "name");
-    if (e.name != name) damaged("knot group " + name + " has the name attribute " + e.name);
-    e.crossing_number = static_cast<int>(h5::get_attr_int(id, "crossing_number"));
-    e.bridge_index = static_cast<int>(h5::get_attr_int(id, "bridge_index"));
-    e.braid_index = static_cast<int>(h5::get_attr_int(id, "braid_index"));
-    e.alexander = h5::get_attr_ints(id, "alexander");
-    e.samples_used = static_cast<int>(h5::get_attr_int(id, "samples_used"));
-    e.adaptive = h5::get_attr_int(id, "adaptive") != 0;
-    e.complete = h5::get_attr_int(id, "complete") != 0;
-    std::vector<hsize_t> shape;
-    e.score_history = h5::read_doubles(id, "score_history", &shape);
-    if (shape.size() != 1) damaged(name + "'s score_history is not a list");
-    if (h5::has_attr(id, "components")) {
-      for (std::int64_t c : h5::get_attr_ints(id, "components")) {
-        if (c < 4 || c > (1 << 24)) damaged(name + " has a component of " + std::to_string(c) + " vertices");
-        e.components.push_back(static_cast<int>(c));
-      }
-      e.conway = h5::get_attr_ints(id, "conway");
-      e.linking_numbers = h5::get_attr_ints(id, "linking_numbers");
-      if (e.components.size() < 2 || e.linking_numbers.size() != e.components.size() * e.components.size())
-        damaged(name + "'s link attributes do not fit its components");
-    }
+    static_cast<KnotHeader&>(e) =
+        detail::read_knot_header(id, name, [&](const std::string& what) { damaged(name + ": " + what); });
     const std::vector<std::int64_t> r = h5::get_attr_ints(id, "rows");
     if (r.size() != 7) damaged(name + "'s rows are not 7 numbers");
     const auto m = r[3];
@@ -513,6 +480,8 @@ Ledger read_ledger(const std::string& path) {
 }
 
 bool is_ledger_file(const std::string& path) {
+  std::error_code error;
+  if (!std::filesystem::exists(path, error)) return false;  // the data-set reader names what is missing
   if (!h5::verify(path, "data set or ledger")) return false;  // a data set written before checksums
   h5::Handle f = h5::open_file(path, false);
   return h5::has_attr(f.id(), "format") && h5::get_attr_string(f.id(), "format") == kFormat;

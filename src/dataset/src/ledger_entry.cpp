@@ -12,18 +12,7 @@ namespace ek {
 
 LedgerEntry ledger_entry(const KnotEntry& k, double cut, int curves_per_knot) {
   LedgerEntry e;
-  e.name = k.name;
-  e.crossing_number = k.crossing_number;
-  e.bridge_index = k.bridge_index;
-  e.braid_index = k.braid_index;
-  e.alexander = k.alexander;
-  e.components = k.components;
-  e.conway = k.conway;
-  e.linking_numbers = k.linking_numbers;
-  e.samples_used = k.samples_used;
-  e.adaptive = k.adaptive;
-  e.complete = k.complete;
-  e.score_history = k.score_history;
+  static_cast<KnotHeader&>(e) = k;
   for (const RunRecord& r : k.runs)
     e.runs.push_back({r.sample, r.status, r.equilibrium, r.iterations, r.seconds, r.alexander_preserved});
   e.attribute_names = k.attribute_names;

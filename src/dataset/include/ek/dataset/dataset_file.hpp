@@ -57,23 +57,19 @@ struct RunRecord {
   std::string message;           ///< error text for failed runs
 };
 
-/// Everything stored for one knot type.
-struct KnotEntry {
+/// What names a knot type's entry and how it was sampled: the fields a data
+/// set's entry and a ledger's (ledger.hpp) share, stored alike in both files
+/// (the knot group's attributes and its score_history).
+struct KnotHeader {
   std::string name;
   int crossing_number = 0;
-  int bridge_index = -1;
+  int bridge_index = -1;                      ///< -1: unknown (and for links)
   int braid_index = -1;
-  std::vector<std::int64_t> alexander;
-  std::vector<Points> equilibria;                 ///< m curves, n by 3
-  std::vector<std::string> attribute_names;       ///< k names
-  Eigen::MatrixXd attributes;                     ///< m by k
-  std::vector<RunRecord> runs;
-  Eigen::MatrixXd similarity;                     ///< m by m
-  Eigen::MatrixXd linkage;                        ///< (m-1) by 4
+  std::vector<std::int64_t> alexander;        ///< coefficients, lowest degree first
   bool adaptive = false;
   bool complete = true;
   int samples_used = 0;
-  std::vector<double> score_history;
+  std::vector<double> score_history;          ///< [1] adaptive score after each batch
   /// A link: each component's vertex count n_c, summing to the equilibria's
   /// rows (each component's rows in order); empty for a knot.
   std::vector<int> components;
@@ -81,6 +77,17 @@ struct KnotEntry {
   std::vector<std::int64_t> linking_numbers;  ///< a link's m by m linking numbers, row by row (empty for a knot)
 
   bool is_link() const { return components.size() > 1; }
+};
+
+/// Everything stored for one knot type.
+struct KnotEntry : KnotHeader {
+  std::vector<Points> equilibria;                 ///< m curves, n by 3
+  std::vector<std::string> attribute_names;       ///< k names
+  Eigen::MatrixXd attributes;                     ///< m by k
+  std::vector<RunRecord> runs;
+  Eigen::MatrixXd similarity;                     ///< m by m
+  Eigen::MatrixXd linkage;                        ///< (m-1) by 4
+
   /// Equilibrium i as a link, one array per component (one component for a knot).
   Link equilibrium_link(int i) const;
 

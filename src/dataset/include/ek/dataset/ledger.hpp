@@ -60,20 +60,9 @@ struct AttributeSpread {
   double min = 0.0, median = 0.0, max = 0.0;
 };
 
-/// One knot type (or link) of a ledger.
-struct LedgerEntry {
-  std::string name;
-  int crossing_number = 0;
-  int bridge_index = -1;                    ///< -1: unknown (and for links)
-  int braid_index = -1;
-  std::vector<std::int64_t> alexander;      ///< coefficients, as KnotEntry::alexander
-  std::vector<int> components;              ///< a link's vertices per component; empty for a knot
-  std::vector<std::int64_t> conway;         ///< a link's ∇ (empty for a knot)
-  std::vector<std::int64_t> linking_numbers;  ///< a link's m × m linking numbers (empty for a knot)
-  int samples_used = 0;                     ///< [samples]
-  bool adaptive = false;
-  bool complete = true;
-  std::vector<double> score_history;        ///< [1] adaptive score after each batch
+/// One knot type (or link) of a ledger: the data set's header fields
+/// (KnotHeader), then its results.
+struct LedgerEntry : KnotHeader {
   std::vector<LedgerRun> runs;
   std::vector<std::string> attribute_names;  ///< k names (KnotEntry::attribute_names)
   Eigen::MatrixXd attributes;               ///< m by k: every stored equilibrium's attributes
@@ -81,7 +70,6 @@ struct LedgerEntry {
   Eigen::MatrixXd linkage;                  ///< (m−1) by 4: complete-linkage merges (a, b, height, size)
   std::vector<LedgerState> states;          ///< by increasing lowest energy
 
-  bool is_link() const { return components.size() > 1; }
   int equilibria() const { return static_cast<int>(attributes.rows()); }
   /// Column of an attribute by name; InputError naming the known ones otherwise.
   int attribute_column(const std::string& attribute) const;
@@ -158,8 +146,9 @@ void write_ledger(const std::string& path, const Ledger& ledger);
 Ledger read_ledger(const std::string& path);
 
 /// Whether `path` is a ledger (its root attribute `format`), checked
-/// without reading its tables: false for a data set; InputError for a file
-/// that is damaged or not HDF5.
+/// without reading its tables: false for a data set and for a path that does
+/// not exist (the data-set reader then names it); InputError for a file that
+/// is damaged or not HDF5.
 bool is_ledger_file(const std::string& path);
 
 /// The ledgers as one: equal parameters (DatasetMetadata::difference), cut
