@@ -54,6 +54,14 @@ Row knot_row(const LedgerEntry& e) {
   return r;
 }
 
+/// The share of 2-bridge knots among the first `count` of `sorted` (0 if empty).
+double two_bridge_share(const std::vector<Row>& sorted, size_t count) {
+  if (sorted.empty()) return 0.0;
+  int two_bridge = 0;
+  for (size_t k = 0; k < count && k < sorted.size(); ++k) two_bridge += sorted[k].bridge == 2;
+  return static_cast<double>(two_bridge) / static_cast<double>(count);
+}
+
 void fill_summary(const std::vector<Row>& rows, results::MilnorSummary& sum) {
   for (const Row& r : rows) {
     sum.equilibria += r.equilibria;
@@ -66,12 +74,19 @@ void fill_summary(const std::vector<Row>& rows, results::MilnorSummary& sum) {
   std::vector<Row> sorted = rows;  // the top decile by ratio
   std::sort(sorted.begin(), sorted.end(), [](const Row& x, const Row& y) { return x.ratio > y.ratio; });
   const size_t decile = std::max<size_t>(1, sorted.size() / 10);
-  int two_bridge = 0;
-  for (size_t k = 0; k < decile && k < sorted.size(); ++k) two_bridge += sorted[k].bridge == 2;
+  // The far end: the top decile, or the top k when only k < a decile of the
+  // knots are 2-bridge without being BB (a sample can hold fewer 2-bridge
+  // knots than a decile; the (2, q) torus knots are 2-bridge and BB, so at
+  // the bound).
+  size_t far_candidates = 0;
+  for (const Row& r : rows) far_candidates += r.bridge == 2 && r.braid != 2;
+  const size_t far_end = std::max<size_t>(1, std::min(decile, far_candidates));
   sum.knots = static_cast<long>(rows.size());
   sum.planar_threshold = kPlanarThreedim;
   sum.top_decile_size = static_cast<long>(decile);
-  sum.top_decile_two_bridge_share = sorted.empty() ? 0.0 : static_cast<double>(two_bridge) / static_cast<double>(decile);
+  sum.top_decile_two_bridge_share = two_bridge_share(sorted, decile);
+  sum.far_end_size = static_cast<long>(far_end);
+  sum.far_end_two_bridge_share = two_bridge_share(sorted, far_end);
 }
 
 }  // namespace

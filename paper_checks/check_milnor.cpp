@@ -64,10 +64,16 @@ TEST(PaperMilnor, BBKnotsReachTheBoundAsMultiCoveredCircles) {
 }
 
 // The knots farthest from the bound are 2-bridge knots: the top decile by
-// smallest ratio is all 2-bridge.
+// smallest ratio is all 2-bridge. Where fewer than a decile of the knots are
+// 2-bridge without being BB (a stratified sample of 11 and 12 crossings
+// holds about 7%), no decile can be all 2-bridge whatever the equilibria, so
+// the check reads the top k instead, k that count: the far end of the
+// histogram must be 2-bridge (tolerance: none, every one of them). The top
+// decile's share is reported.
 TEST(PaperMilnor, FarthestKnotsAreTwoBridge) {
   const auto s = paper::summary<results::MilnorSummary>("milnor");
   std::cout << "[ measured ] top decile (" << s.top_decile_size << " knots) 2-bridge share "
-            << s.top_decile_two_bridge_share << std::endl;
-  EXPECT_DOUBLE_EQ(s.top_decile_two_bridge_share, 1.0);
+            << s.top_decile_two_bridge_share << "; far end (" << s.far_end_size << " knots) 2-bridge share "
+            << s.far_end_two_bridge_share << std::endl;
+  EXPECT_DOUBLE_EQ(s.far_end_two_bridge_share, 1.0);
 }

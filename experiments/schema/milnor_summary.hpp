@@ -34,8 +34,11 @@ struct MilnorSummary {
   double planar_threshold = 0.0;           ///< [1] kPlanarThreedim
   long top_decile_size = 0;                ///< [1] knots in the top decile by ratio (at least 1)
   double top_decile_two_bridge_share = 0;  ///< [1] share of 2-bridge knots in it
+  long far_end_size = 0;                   ///< [1] min(top_decile_size, 2-bridge knots that are not BB), at least 1
+  double far_end_two_bridge_share = 0;     ///< [1] share of 2-bridge knots among the far_end_size knots of largest ratio
 };
 EK_JSON_FIELDS(MilnorSummary, scale, knots, equilibria, milnor_violations, bb_knots, bb_max_ratio_deviation,
-               bb_max_threedim, planar_threshold, top_decile_size, top_decile_two_bridge_share)
+               bb_max_threedim, planar_threshold, top_decile_size, top_decile_two_bridge_share, far_end_size,
+               far_end_two_bridge_share)
 
 }  // namespace ek::results
