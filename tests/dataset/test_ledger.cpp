@@ -35,7 +35,8 @@ const std::string kRun = " --samples 6 -n 100 --no-stiffness --novelty-distance 
 // are the data set's clusters at the novelty distance: the same members, the
 // representatives' curves (within half the quantum; the lowest-energy
 // states', --ledger-curves 2 of them), every attribute row and run, and the
-// provenance of the run (commit, cores, wall and CPU time, the command).
+// provenance of the run (commit, cores, wall and CPU time, the command);
+// `knots query` gives the same rows from the ledger as from the data set.
 TEST(Ledger, DatasetRunWritesTheLedgerOfItsStates) {
   const std::string dir = temp_dir("ledger_run");
   const std::string data = dir + "/d.h5", ledger = dir + "/d.ledger.h5";
@@ -81,6 +82,17 @@ TEST(Ledger, DatasetRunWritesTheLedgerOfItsStates) {
   const auto desc = run("describe " + ledger + " --states");
   ASSERT_EQ(desc.status, 0) << desc.err;
   EXPECT_NE(desc.out.find("5_2: 6 samples"), std::string::npos) << desc.out;
+  // query reads the ledger as it reads the data set: the same rows, in the same order
+  for (const std::string q : {" --sort energy:desc --limit 5", " --where 'threedim<0.2' --knot 5_2 --sort writhe"}) {
+    const auto a = run("query " + data + q + " --json"), b = run("query " + ledger + q + " --json");
+    ASSERT_EQ(a.status, 0) << a.err;
+    ASSERT_EQ(b.status, 0) << b.err;
+    EXPECT_EQ(b.out, a.out) << q;
+  }
+  EXPECT_EQ(run("query " + dir + " --limit 1").status, 0);  // the folder of ledgers
+  const auto missing = run("query " + ledger + " --knot 4_1");
+  EXPECT_EQ(missing.status, 2);
+  EXPECT_NE(missing.err.find("knot '4_1' is not in the ledger"), std::string::npos) << missing.err;
   const auto again = run("ledger " + data + " -o " + dir + "/again.ledger.h5");
   ASSERT_EQ(again.status, 0) << again.err;
   EXPECT_FALSE(read_ledger(dir + "/again.ledger.h5").provenance.wall_seconds.has_value());

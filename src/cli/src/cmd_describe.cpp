@@ -24,9 +24,8 @@ int cmd_describe(int argc, char** argv) {
   args.flag("--summary", &summary,
             "a ledger: its totals and sampling cost as one JSON object (knots describe --json's summary)");
   if (!args.parse(argc, argv)) return 0;
-  const bool folder = std::filesystem::is_directory(file);
-  if (folder || is_ledger_file(file)) {
-    const Ledger ledger = folder ? read_ledger_folder(file) : read_ledger(file);
+  if (is_ledger_source(file)) {
+    const Ledger ledger = read_ledger_source(file);
     if (summary) {
       print_json(ledger_summary_json(ledger));
       return 0;

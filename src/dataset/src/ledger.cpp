@@ -542,4 +542,12 @@ Ledger read_ledger_folder(const std::string& folder) {
   return merge_ledgers(ledgers);
 }
 
+bool is_ledger_source(const std::string& path) {
+  return std::filesystem::is_directory(path) || is_ledger_file(path);
+}
+
+Ledger read_ledger_source(const std::string& path) {
+  return std::filesystem::is_directory(path) ? read_ledger_folder(path) : read_ledger(path);
+}
+
 }  // namespace ek

@@ -4,6 +4,7 @@
 
 #include "ek/core/errors.hpp"
 #include "ek/core/parse.hpp"
+#include "ek/dataset/ledger.hpp"
 
 namespace ek {
 namespace {
@@ -41,15 +42,20 @@ QueryCondition parse_query_condition(const std::string& text) {
   throw InputError("--where '" + text + "': expected ATTR<VALUE (operators < <= > >= = !=)");
 }
 
-QueryResult query_dataset(const DatasetReader& reader, const QueryOptions& options) {
+namespace {
+
+/// The rows of the knots `names` (read one at a time by `read`, which gives
+/// an entry with attribute_names, attributes and attribute_column) that pass
+/// every condition, sorted and limited.
+template <class Read>
+QueryResult query_entries(const std::vector<std::string>& names, Read&& read, const QueryOptions& options) {
   if (options.limit && *options.limit < 0) throw InputError("--limit must be >= 0");
   std::vector<QueryCondition> conditions;
   for (const auto& w : options.where) conditions.push_back(parse_query_condition(w));
   const auto [sort_attr, descending] = parse_sort(options.sort);
-  const std::vector<std::string> names = options.knot ? std::vector<std::string>{*options.knot} : reader.knot_names();
   QueryResult result;
   for (const auto& name : names) {
-    const KnotEntry e = reader.read(name);
+    const auto& e = read(name);
     if (result.columns.empty()) result.columns = e.attribute_names;
     std::vector<int> cond_cols;
     for (const auto& c : conditions) cond_cols.push_back(e.attribute_column(c.attribute));
@@ -79,6 +85,32 @@ QueryResult query_dataset(const DatasetReader& reader, const QueryOptions& optio
   if (options.limit && result.rows.size() > static_cast<size_t>(*options.limit))
     result.rows.resize(static_cast<size_t>(*options.limit));
   return result;
+}
+
+}  // namespace
+
+QueryResult query_dataset(const DatasetReader& reader, const QueryOptions& options) {
+  const std::vector<std::string> names = options.knot ? std::vector<std::string>{*options.knot} : reader.knot_names();
+  KnotEntry entry;
+  return query_entries(
+      names, [&](const std::string& name) -> const KnotEntry& { return entry = reader.read(name); }, options);
+}
+
+QueryResult query_ledger(const Ledger& ledger, const QueryOptions& options) {
+  std::vector<std::string> names;
+  for (const LedgerEntry& e : ledger.entries) names.push_back(e.name);
+  if (options.knot) {
+    if (std::find(names.begin(), names.end(), *options.knot) == names.end())
+      throw InputError("knot '" + *options.knot + "' is not in the ledger");
+    names = {*options.knot};
+  }
+  return query_entries(
+      names,
+      [&](const std::string& name) -> const LedgerEntry& {
+        return *std::find_if(ledger.entries.begin(), ledger.entries.end(),
+                             [&](const LedgerEntry& e) { return e.name == name; });
+      },
+      options);
 }
 
 }  // namespace ek

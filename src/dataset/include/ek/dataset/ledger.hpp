@@ -162,4 +162,9 @@ Ledger merge_ledgers(const std::vector<Ledger>& ledgers);
 /// Every ledger file (*.ledger.h5) in `folder`, in name order, merged. InputError for none.
 Ledger read_ledger_folder(const std::string& folder);
 
+/// Whether `path` names ledgers: a folder (of ledgers) or a ledger file.
+bool is_ledger_source(const std::string& path);
+/// The ledger of a folder (read_ledger_folder) or of a ledger file (read_ledger).
+Ledger read_ledger_source(const std::string& path);
+
 }  // namespace ek

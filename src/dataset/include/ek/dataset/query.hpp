@@ -1,6 +1,7 @@
 #pragma once
 /// Filtering and sorting the equilibria of a data set by their attributes,
-/// as `knots query` does (and the Python module's Dataset.query()).
+/// as `knots query` does (and the Python module's Dataset.query()), on a
+/// data set or on a ledger.
 /// Attribute names as in docs/dataset-format.md ("Layout").
 #include <optional>
 #include <string>
@@ -43,5 +44,11 @@ struct QueryResult {
 /// InputError for an unknown attribute (listing the known ones), an unknown
 /// knot, a malformed condition or sort, or a negative limit.
 QueryResult query_dataset(const DatasetReader& reader, const QueryOptions& options);
+
+struct Ledger;
+/// The same over a ledger's equilibria (their attribute table: the rows and
+/// indices of the data set the ledger was made from). InputError as above,
+/// and for a knot the ledger does not hold.
+QueryResult query_ledger(const Ledger& ledger, const QueryOptions& options);
 
 }  // namespace ek
