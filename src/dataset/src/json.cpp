@@ -1,8 +1,10 @@
 #include "ek/dataset/json.hpp"
 
+#include <cmath>
 #include <map>
 #include <sstream>
 
+#include "ek/analysis/unseen.hpp"
 #include "ek/dataset/dataset_search.hpp"
 #include "ek/dataset/sampling_cost.hpp"
 
@@ -69,6 +71,16 @@ Json state_json(const LedgerEntry& e, int s) {
   return j;
 }
 
+Json unseen_json(const UnseenEstimate& u) {
+  return {{"samples", u.samples},
+          {"found", u.observed},
+          {"estimated", json_number(u.states)},
+          {"lower", json_number(u.lower)},
+          {"upper", json_number(u.upper)},
+          {"new_state_probability", json_number(u.new_state_probability)},
+          {"good_turing", json_number(u.good_turing)}};
+}
+
 }  // namespace
 
 Json ledger_json(const Ledger& l) {
@@ -92,6 +104,8 @@ Json ledger_json(const Ledger& l) {
     k["statuses"] = e.status_counts();
     k["run_seconds"] = json_number(e.run_seconds());
     k["equilibria"] = e.equilibria();
+    k["unseen"] = unseen_json(ledger_unseen(e));
+    k["unseen_low_energy"] = unseen_json(ledger_unseen(e, kLowEnergyFactor));
     k["states"] = Json::array();
     for (int s = 0; s < static_cast<int>(e.states.size()); ++s) k["states"].push_back(state_json(e, s));
     j["knots"].push_back(k);
@@ -105,7 +119,15 @@ Json ledger_summary_json(const Ledger& l) {
   std::map<std::string, int> statuses;
   std::vector<KnotCost> costs;
   std::map<int, std::pair<int, long>> states_by_crossings;  // crossing number -> knots, states
+  std::vector<double> p_new, p_new_low;
+  double estimated = 0.0;
   for (const LedgerEntry& e : l.entries) {
+    if (!e.states.empty()) {
+      const UnseenEstimate u = ledger_unseen(e);
+      p_new.push_back(u.new_state_probability);
+      p_new_low.push_back(ledger_unseen(e, kLowEnergyFactor).new_state_probability);
+      estimated += u.states;
+    }
     equilibria += e.equilibria();
     states += static_cast<long>(e.states.size());
     runs += static_cast<long>(e.runs.size());
@@ -128,6 +150,11 @@ Json ledger_summary_json(const Ledger& l) {
   j["statuses"] = statuses;
   j["wall_seconds"] = optional_json(l.provenance.wall_seconds);
   j["cpu_seconds"] = optional_json(l.provenance.cpu_seconds);
+  if (!p_new.empty()) {
+    j["estimated_states"] = json_number(estimated);
+    j["median_new_state_probability"] = json_number(median_of(p_new));
+    j["median_new_low_energy_state_probability"] = json_number(median_of(p_new_low));
+  }
   if (costs.empty()) return j;
   const SamplingCost c = sampling_cost(costs, 500);
   j["median_samples"] = json_number(c.median_samples);
@@ -163,7 +190,10 @@ std::string ledger_text(const Ledger& l, bool states) {
       continue;
     }
     const int energy = e.attribute_column("energy");
-    out << ", lowest energy " << e.attributes(e.states.front().representative, energy) << "\n";
+    const UnseenEstimate u = ledger_unseen(e);
+    out << " (estimated " << std::lround(u.states) << ", " << std::lround(u.lower) << "–" << std::lround(u.upper)
+        << "; next sample new " << u.new_state_probability << "), lowest energy "
+        << e.attributes(e.states.front().representative, energy) << "\n";
     if (!states) continue;
     for (int s = 0; s < static_cast<int>(e.states.size()); ++s) {
       const AttributeSpread a = e.spread(s, energy);

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 
+#include "ek/analysis/unseen.hpp"
 #include "ek/core/errors.hpp"
 
 namespace ek {
@@ -51,6 +52,17 @@ std::vector<LedgerEntry> read_results_entries(const std::string& folder, double 
     throw InputError("neither a data set '" + dataset + "' nor a ledger folder '" + ledgers + "'");
   if (source) *source = ledgers;
   return read_ledger_folder(ledgers).entries;
+}
+
+UnseenEstimate ledger_unseen(const LedgerEntry& e, double energy_factor) {
+  std::vector<int> counts;
+  if (e.states.empty()) return estimate_unseen(counts);
+  const int energy = e.attribute_column("energy");
+  const double lowest = e.attributes.col(energy).minCoeff();
+  for (const LedgerState& s : e.states)
+    if (energy_factor <= 0.0 || e.attributes(s.representative, energy) <= energy_factor * lowest)
+      counts.push_back(s.members);
+  return estimate_unseen(counts);
 }
 
 }  // namespace ek

@@ -15,13 +15,16 @@ KnotCost knot_cost(const KnotEntry& entry) {
   return c;
 }
 
-namespace {
-
-double median(std::vector<int> v) {
+double median_of(std::vector<double> v) {
+  if (v.empty()) return 0.0;
   std::sort(v.begin(), v.end());
   const std::size_t m = v.size() / 2;
   return v.size() % 2 == 1 ? v[m] : 0.5 * (v[m - 1] + v[m]);
 }
+
+namespace {
+
+double median(const std::vector<int>& v) { return median_of(std::vector<double>(v.begin(), v.end())); }
 
 CrossingCost crossing_cost(int c, const std::vector<const KnotCost*>& knots) {
   CrossingCost out;

@@ -29,13 +29,20 @@ Json describe_json(const DatasetReader& reader);
 /// provenance {cut, commit, created, source, cores, jobs, wall_seconds,
 /// cpu_seconds; null when not recorded}, knots: [{name, crossing_number,
 /// bridge_index, braid_index, samples_used, stable, statuses {status:
-/// count}, run_seconds, equilibria, states: [{members, representative, and
-/// per attribute {value (the representative's), min, median, max}}]}].
+/// count}, run_seconds, equilibria, unseen and unseen_low_energy (the
+/// estimates of ledger_unseen over every state and over the states within
+/// kLowEnergyFactor of the lowest energy: {samples, found, estimated, lower,
+/// upper (95%), new_state_probability, good_turing}), states: [{members,
+/// representative, and per attribute {value (the representative's), min,
+/// median, max}}]}].
 Json ledger_json(const Ledger& ledger);
 
 /// The ledger's totals (`knots describe LEDGER --summary`): knots, links,
 /// equilibria, states, runs, statuses {status: count}, the provenance's
-/// wall and CPU seconds (null when not recorded), and for knots (links left
+/// wall and CPU seconds (null when not recorded), estimated_states (the
+/// sum of the knots' Chao1 estimates), median_new_state_probability and
+/// median_new_low_energy_state_probability over the knots (ledger_unseen;
+/// absent for a ledger without states), and for knots (links left
 /// out) the sampling cost against 500 samples per knot (sampling_cost.hpp):
 /// median_samples, mean_samples, max_samples, saving_vs_500,
 /// run_core_seconds, by_crossing_number [{crossing_number, knots,
@@ -43,7 +50,9 @@ Json ledger_json(const Ledger& ledger);
 Json ledger_summary_json(const Ledger& ledger);
 
 /// The same as text: the parameters, the provenance, and one line per knot
-/// (samples, stable runs, states, the lowest state's energy), then with
+/// (samples, stable runs, states with their estimated number, its 95%
+/// interval and the next sample's chance of a new state, the lowest state's
+/// energy), then with
 /// `states` one line per state (members, energy of the representative and
 /// its spread).
 std::string ledger_text(const Ledger& ledger, bool states);

@@ -162,6 +162,19 @@ Ledger merge_ledgers(const std::vector<Ledger>& ledgers);
 /// Every ledger file (*.ledger.h5) in `folder`, in name order, merged. InputError for none.
 Ledger read_ledger_folder(const std::string& folder);
 
+struct UnseenEstimate;  // ek/analysis/unseen.hpp
+
+/// [1] "Low-energy" states for the unseen estimates: a representative's
+/// energy at most this factor times the knot's lowest equilibrium energy.
+inline constexpr double kLowEnergyFactor = 1.1;
+
+/// What the knot's sampling has not seen yet (estimate_unseen, unseen.hpp),
+/// from its states' member counts (a state's members are the samples that
+/// relaxed into it); with `energy_factor` > 0 only the states whose
+/// representative's energy is at most energy_factor times the knot's lowest
+/// equilibrium energy, and their samples. Not in the parsers-only build.
+UnseenEstimate ledger_unseen(const LedgerEntry& entry, double energy_factor = 0.0);
+
 /// Whether `path` names ledgers: a folder (of ledgers) or a ledger file.
 bool is_ledger_source(const std::string& path);
 /// The ledger of a folder (read_ledger_folder) or of a ledger file (read_ledger).

@@ -68,4 +68,7 @@ struct RunEstimate {
 /// unmeasured crossing number is asked for.
 RunEstimate estimate_run(const SamplingCost& cost, const std::vector<int>& crossing_numbers);
 
+/// The median of `values` (the mean of the two middle ones for an even count); 0 for none.
+double median_of(std::vector<double> values);
+
 }  // namespace ek
