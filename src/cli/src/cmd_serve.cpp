@@ -1,4 +1,4 @@
-// knots serve DATASET.h5 [--port P] [--cut C] [--title T]
+// knots serve (DATASET.h5 | LEDGER | FOLDER) [--port P] [--cut C] [--title T]
 #include <signal.h>
 
 #include <atomic>
@@ -23,11 +23,11 @@ int cmd_serve(int argc, char** argv) {
   std::string file, title;
   SiteOptions options;
   ServeOptions serve;
-  ArgParser args("serve", "DATASET.h5 [--port P] [--cut C] [--title T]");
-  args.positional("DATASET", &file, "data-set file");
+  ArgParser args("serve", "(DATASET.h5 | LEDGER | FOLDER) [--port P] [--cut C] [--title T]");
+  args.positional("DATASET", &file, "data-set file, ledger file, or folder of ledgers (*.ledger.h5)");
   args.option("--port", &serve.port, "TCP port on 127.0.0.1 (0: any free port)");
   args.option("--cut", &options.cut, "distance cut of the table's distinct states and the sliders' start, in [0, 1]");
-  args.option("--title", &title, "title of the site (default: the data-set file's name)");
+  args.option("--title", &title, "title of the site (default: the file's or folder's name)");
   if (!args.parse(argc, argv)) return 0;
   options.title = title;
   options.validate();

@@ -1,4 +1,4 @@
-// knots site DATASET.h5 -o DIR [--overwrite] [--cut C] [--link-cut C] [--title T] [--json]
+// knots site (DATASET.h5 | LEDGER | FOLDER) -o DIR [--overwrite] [--cut C] [--link-cut C] [--title T] [--json]
 #include <iostream>
 
 #include "args.hpp"
@@ -13,14 +13,14 @@ int cmd_site(int argc, char** argv) {
   std::string file, out, title;
   SiteOptions options;
   bool overwrite = false, json = false;
-  ArgParser args("site", "DATASET.h5 -o DIR [--overwrite] [--cut C] [--link-cut C] [--title T] [--json]");
-  args.positional("DATASET", &file, "data-set file");
+  ArgParser args("site", "(DATASET.h5 | LEDGER | FOLDER) -o DIR [--overwrite] [--cut C] [--link-cut C] [--title T] [--json]");
+  args.positional("DATASET", &file, "data-set file, ledger file, or folder of ledgers (*.ledger.h5)");
   args.option("-o,--output", &out, "folder of the site (new or empty; see --overwrite)");
   args.flag("--overwrite", &overwrite, "replace a folder that an earlier knots site wrote");
   args.option("--cut", &options.cut, "distance cut of the table's distinct states and the sliders' start, in [0, 1]");
   args.option("--link-cut", &options.link_cut,
               "the same for links, in the link state distance [mean component length] (default 0.002)");
-  args.option("--title", &title, "title of the site (default: the data-set file's name)");
+  args.option("--title", &title, "title of the site (default: the file's or folder's name)");
   args.flag("--json", &json, "print one JSON object");
   if (!args.parse(argc, argv)) return 0;
   if (out.empty()) throw InputError("missing -o DIR");

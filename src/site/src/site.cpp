@@ -1,28 +1,21 @@
-// The data files of the explorer site (site.hpp).
+// The explorer site of a data set or of ledgers (site.hpp): the knot table,
+// the attribute table and the site's files.
 #include "ek/site/site.hpp"
 
 #include <algorithm>
-#include <cctype>
-#include <cmath>
-#include <cstdint>
-#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <limits>
 #include <optional>
 #include <sstream>
 
-#include <nlohmann/json.hpp>
-
 #include "assets.hpp"
 #include "ek/analysis/clustering.hpp"
-#include "ek/analysis/mds.hpp"
-#include "ek/contact/broad_phase.hpp"
 #include "ek/core/errors.hpp"
 #include "ek/core/paths.hpp"
 #include "ek/dataset/pipeline.hpp"
-#include "ek/geometry/polyline.hpp"
 #include "ek/knots/table.hpp"
+#include "site_internal.hpp"
 
 #ifndef EK_THREE_JS_DIR
 #define EK_THREE_JS_DIR "/usr/share/javascript/three"
@@ -31,29 +24,15 @@
 namespace ek {
 namespace {
 
-using Json = nlohmann::ordered_json;
+using site_detail::append;
+using site_detail::Json;
+using site_detail::number;
 constexpr double kPi = 3.14159265358979323846;
 
-bool little_endian() {
-  const std::uint16_t one = 1;
-  unsigned char first = 0;
-  std::memcpy(&first, &one, 1);
-  return first == 1;
-}
+/// What the site was built from (site.json: dataset.source).
+enum class SiteSource { Dataset, Ledger };
 
-template <class T>
-void append(std::string& out, T value) {
-  char bytes[sizeof(T)];
-  std::memcpy(bytes, &value, sizeof(T));
-  out.append(bytes, sizeof(T));
-}
-
-/// Describes one array of a knot's binary file and checks its alignment.
-Json buffer(const std::string& dtype, std::vector<int> shape, size_t offset) {
-  return Json{{"dtype", dtype}, {"shape", shape}, {"offset", offset}};
-}
-
-Json number(double x) { return std::isfinite(x) ? Json(x) : Json(nullptr); }
+const char* to_string(SiteSource s) { return s == SiteSource::Ledger ? "ledger" : "dataset"; }
 
 Json optional_index(int x) { return x < 0 ? Json(nullptr) : Json(x); }
 
@@ -65,179 +44,71 @@ std::string slurp(const std::string& path) {
   return ss.str();
 }
 
-/// MDS coordinates [m, 2] of 1 - similarity (1D for two equilibria, the
-/// origin for one).
-Json mds_json(const KnotEntry& e, bool& converged, double& explained) {
-  const auto m = static_cast<int>(e.equilibria.size());
-  converged = true;
-  explained = 1.0;
-  Eigen::MatrixXd X = Eigen::MatrixXd::Zero(m, 2);
-  if (m >= 2) {
-    const MdsResult r = classical_mds_from_similarity(e.similarity, std::min(2, m - 1));
-    X.leftCols(r.coordinates.cols()) = r.coordinates;
-    converged = r.status == MdsStatus::Converged;
-    explained = r.explained;
-  }
-  Json out = Json::array();
-  for (int i = 0; i < m; ++i) out.push_back({number(X(i, 0)), number(X(i, 1))});
-  return out;
+/// Every stored equilibrium of a knot, as the knot table summarises it: a
+/// data set's entry, or a ledger's (which has every row without the curves).
+struct KnotRows {
+  const KnotHeader& header;
+  const std::vector<std::string>& names;  ///< k attribute names
+  const Eigen::MatrixXd& attributes;      ///< m by k
+  const Eigen::MatrixXd& linkage;         ///< (m − 1) by 4, over all m
+  size_t runs;
+};
+
+KnotRows rows_of(const KnotEntry& e) { return {e, e.attribute_names, e.attributes, e.linkage, e.runs.size()}; }
+KnotRows rows_of(const LedgerEntry& e) { return {e, e.attribute_names, e.attributes, e.linkage, e.runs.size()}; }
+
+/// Clusters of all m equilibria at `cut` (clusters_at_cut's count).
+int distinct_at(const KnotRows& k, double cut) {
+  const auto m = k.attributes.rows();
+  if (m <= 1) return static_cast<int>(m);
+  return cluster_count(Dendrogram::from_linkage(k.linkage), cut);
 }
 
-}  // namespace
-
-SiteOptions::SiteOptions() : three_dir(EK_THREE_JS_DIR) {}
-
-void SiteOptions::validate() const {
-  if (!(cut >= 0.0 && cut <= 1.0)) throw InputError("--cut must be in [0, 1]");
-  if (!(link_cut >= 0.0 && link_cut <= 1.0)) throw InputError("--link-cut must be in [0, 1]");
+/// Column `name` of the rows; -1 when absent.
+int column(const KnotRows& k, const std::string& name) {
+  const auto it = std::find(k.names.begin(), k.names.end(), name);
+  return it == k.names.end() ? -1 : static_cast<int>(it - k.names.begin());
 }
 
-std::vector<double> vertex_curvature(const Points& P) {
-  const VecX angle = turning_angles(P);
-  const VecX len = edge_lengths(P);
-  const auto n = P.rows();
-  std::vector<double> out(static_cast<size_t>(n));
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const double voronoi = 0.5 * (len((i + n - 1) % n) + len(i));
-    out[static_cast<size_t>(i)] = voronoi > 0.0 ? angle(i) / voronoi : 0.0;
-  }
-  return out;
+/// The smallest (or, with `largest`, the largest) value of column `name`; null without rows.
+Json extreme(const KnotRows& k, const std::string& name, bool largest = false) {
+  const int c = column(k, name);
+  if (k.attributes.rows() == 0 || c < 0) return nullptr;
+  double x = largest ? -std::numeric_limits<double>::infinity() : std::numeric_limits<double>::infinity();
+  for (Eigen::Index i = 0; i < k.attributes.rows(); ++i)  // NaN rows are skipped
+    x = largest ? std::max(x, k.attributes(i, c)) : std::min(x, k.attributes(i, c));
+  return number(x);
 }
-
-std::vector<unsigned char> contact_edges(const Points& P, const CurveTopology& topology, double dhat) {
-  std::vector<unsigned char> out(static_cast<size_t>(P.rows()), 0);
-  for (const EdgePair& p : edge_pairs_within(P, topology, 1, dhat)) {
-    out[static_cast<size_t>(p.a)] = 1;
-    out[static_cast<size_t>(p.b)] = 1;
-  }
-  return out;
-}
-
-std::string knot_file_name(const std::string& name) {
-  static const char* hex = "0123456789ABCDEF";
-  std::string out;
-  for (unsigned char c : name) {
-    if (std::isalnum(c) || c == '_' || c == '-' || (c == '.' && !out.empty())) {
-      out += static_cast<char>(c);
-    } else {
-      out += '~';
-      out += hex[c >> 4];
-      out += hex[c & 15];
-    }
-  }
-  return out.empty() ? "~" : out;
-}
-
-KnotSiteData knot_site_data(const KnotEntry& e, const std::string& file, double dhat, double cut) {
-  require(little_endian(), "knot_site_data: the site's binary files are little-endian; this machine is not");
-  const int m = static_cast<int>(e.equilibria.size());
-  const int n = m ? static_cast<int>(e.equilibria.front().rows()) : 0;
-  KnotSiteData out;
-  std::vector<int> rank;
-  out.distinct = static_cast<int>(clusters_at_cut(e, cut, &rank).size());
-
-  std::string& bin = out.binary;
-  Json buffers;
-  // the attributes first: a float64 array at offset 0 is 8-byte aligned
-  const int columns = static_cast<int>(e.attributes.cols());
-  buffers["attributes"] = buffer("float64", {m, columns}, bin.size());
-  for (Eigen::Index i = 0; i < e.attributes.rows(); ++i)
-    for (Eigen::Index c = 0; c < e.attributes.cols(); ++c) append(bin, e.attributes(i, c));
-  buffers["positions"] = buffer("float32", {m, n, 3}, bin.size());
-  for (const Points& P : e.equilibria)
-    for (Eigen::Index i = 0; i < P.rows(); ++i)
-      for (int k = 0; k < 3; ++k) append(bin, static_cast<float>(P(i, k)));
-  buffers["curvature"] = buffer("float32", {m, n}, bin.size());
-  for (int i = 0; i < m; ++i)
-    for (const Points& P : e.equilibrium_link(i))
-      for (double k : vertex_curvature(P)) append(bin, static_cast<float>(k));
-  buffers["similarity"] = buffer("float32", {m, m}, bin.size());
-  for (int i = 0; i < m; ++i)
-    for (int j = 0; j < m; ++j) append(bin, static_cast<float>(e.similarity(i, j)));
-  buffers["contact"] = buffer("uint8", {m, n}, bin.size());
-  if (m > 0) {
-    const CurveTopology topology = e.is_link() ? CurveTopology::from_sizes(e.components) : CurveTopology::single(n);
-    for (const Points& P : e.equilibria)
-      for (unsigned char c : contact_edges(P, topology, dhat)) bin += static_cast<char>(c);
-  }
-
-  Json j;
-  j["format"] = std::string(kSiteFormat) + "-knot";
-  j["format_version"] = kSiteFormatVersion;
-  j["name"] = e.name;
-  j["equilibria"] = m;
-  j["vertices"] = n;
-  if (e.is_link()) {
-    j["components"] = e.components;  // vertices per component, back to back
-    j["attribute_names"] = e.attribute_names;  // a link's own columns (link_attribute_names())
-  }
-  bool converged = true;
-  double explained = 1.0;
-  j["mds"] = mds_json(e, converged, explained);
-  j["mds_converged"] = converged;
-  j["mds_explained"] = number(explained);
-  Json linkage = Json::array();
-  for (Eigen::Index r = 0; r < e.linkage.rows(); ++r)
-    linkage.push_back({static_cast<int>(e.linkage(r, 0)), static_cast<int>(e.linkage(r, 1)), number(e.linkage(r, 2)),
-                       static_cast<int>(e.linkage(r, 3))});
-  j["linkage"] = linkage;
-  std::vector<int> leaves;
-  if (m >= 2) leaves = Dendrogram::from_linkage(e.linkage).leaf_order();
-  else if (m == 1) leaves = {0};
-  j["leaf_order"] = leaves;
-  j["cut"] = cut;
-  j["cluster_rank"] = rank;
-  j["distinct"] = out.distinct;
-  std::vector<int> samples(static_cast<size_t>(m), -1);
-  for (const RunRecord& r : e.runs)
-    if (r.equilibrium >= 0 && r.equilibrium < m) samples[static_cast<size_t>(r.equilibrium)] = r.sample;
-  j["sample"] = samples;
-  j["binary"] = file + ".bin";
-  j["buffers"] = buffers;
-  j["binary_bytes"] = bin.size();
-  out.json = j.dump();
-  return out;
-}
-
-namespace {
 
 /// One row of the knot table in data/site.json.
-Json knot_record(const KnotEntry& e, const KnotTable& table, const std::string& file, int distinct, size_t offset) {
-  const int m = static_cast<int>(e.equilibria.size());
-  double lowest = std::numeric_limits<double>::infinity(), most_3d = -1.0;
-  double min_tc = std::numeric_limits<double>::infinity();
-  if (m) {
-    const int ec = e.attribute_column("energy"), tc = e.attribute_column("threedim");
-    const int kc = e.attribute_column("total_curvature");
-    for (int i = 0; i < m; ++i) {
-      lowest = std::min(lowest, e.attributes(i, ec));
-      most_3d = std::max(most_3d, e.attributes(i, tc));
-      min_tc = std::min(min_tc, e.attributes(i, kc));
-    }
-  }
-  const KnotRecord* rec = table.find(e.name);
-  Json k;
-  k["name"] = e.name;
-  k["file"] = file;
-  k["crossing_number"] = e.crossing_number;
-  k["bridge_index"] = optional_index(e.bridge_index);
-  k["braid_index"] = optional_index(e.braid_index);
-  const bool known = e.bridge_index > 0 && e.braid_index > 0;
-  k["bb"] = known ? Json(e.bridge_index == e.braid_index) : Json(nullptr);
-  k["two_bridge"] = e.bridge_index > 0 ? Json(e.bridge_index == 2) : Json(nullptr);
-  k["alternating"] = rec && rec->alternating ? Json(*rec->alternating) : Json(nullptr);
-  k["samples"] = e.samples_used;
-  k["runs"] = e.runs.size();
-  k["equilibria"] = m;
-  k["distinct"] = distinct;
-  k["lowest_energy"] = m ? number(lowest) : Json(nullptr);
-  k["largest_threedim"] = m ? number(most_3d) : Json(nullptr);
-  k["min_total_curvature"] = m ? number(min_tc) : Json(nullptr);
-  k["milnor_ratio"] = m && e.bridge_index > 0 ? number(min_tc / (2.0 * kPi * e.bridge_index)) : Json(nullptr);
-  k["adaptive"] = e.adaptive;
-  k["complete"] = e.complete;
-  k["offset"] = offset;
-  return k;
+Json knot_record(const KnotRows& k, const std::string& file, int distinct, size_t offset, const ShownStates* shown) {
+  const KnotHeader& h = k.header;
+  const KnotRecord* rec = KnotTable::global().find(h.name);
+  Json r;
+  r["name"] = h.name;
+  r["file"] = file;
+  r["crossing_number"] = h.crossing_number;
+  r["bridge_index"] = optional_index(h.bridge_index);
+  r["braid_index"] = optional_index(h.braid_index);
+  const bool known = h.bridge_index > 0 && h.braid_index > 0;
+  r["bb"] = known ? Json(h.bridge_index == h.braid_index) : Json(nullptr);
+  r["two_bridge"] = h.bridge_index > 0 ? Json(h.bridge_index == 2) : Json(nullptr);
+  r["alternating"] = rec && rec->alternating ? Json(*rec->alternating) : Json(nullptr);
+  r["samples"] = h.samples_used;
+  r["runs"] = k.runs;
+  r["equilibria"] = k.attributes.rows();
+  r["distinct"] = distinct;
+  r["lowest_energy"] = extreme(k, "energy");
+  r["largest_threedim"] = extreme(k, "threedim", true);
+  r["min_total_curvature"] = extreme(k, "total_curvature");
+  const Json tc = r["min_total_curvature"];
+  r["milnor_ratio"] = tc.is_null() || h.bridge_index <= 0 ? Json(nullptr)
+                                                            : number(tc.get<double>() / (2.0 * kPi * h.bridge_index));
+  r["adaptive"] = h.adaptive;
+  r["complete"] = h.complete;
+  r["offset"] = offset;
+  if (shown) r["shown_rows"] = shown->rows;
+  return r;
 }
 
 /// A data-set parameter, null when the file does not record it (metadata.hpp).
@@ -246,10 +117,19 @@ Json or_null(const std::optional<T>& v) {
   return v ? Json(*v) : Json(nullptr);
 }
 
-Json dataset_json(const DatasetMetadata& meta, const std::string& path, const std::string& title) {
+/// The name of a file or folder ("dir/" -> "dir"); a folder with its parent's name ("sample12/ledgers").
+std::string source_name(const std::string& path) {
+  std::filesystem::path p = std::filesystem::path(path).lexically_normal();
+  if (!p.has_filename() && p.has_parent_path()) p = p.parent_path();
+  if (!std::filesystem::is_directory(p)) return p.filename().string();
+  const std::filesystem::path parent = std::filesystem::absolute(p).parent_path().filename();
+  return (parent.empty() ? p.filename() : parent / p.filename()).string();
+}
+
+Json dataset_json(const DatasetMetadata& meta, const std::string& path, const std::string& title, SiteSource source) {
   Json d;
-  d["file"] = std::filesystem::path(path).filename().string();
-  d["title"] = title.empty() ? std::filesystem::path(path).filename().string() : title;
+  d["file"] = source_name(path);
+  d["title"] = title.empty() ? source_name(path) : title;
   d["created"] = or_null(meta.created);
   d["project_version"] = or_null(meta.project_version);
   d["sampling"] = or_null(meta.sampling);
@@ -262,6 +142,7 @@ Json dataset_json(const DatasetMetadata& meta, const std::string& path, const st
   d["poisson"] = or_null(meta.poisson);
   d["tolerance"] = or_null(meta.tolerance);
   d["twist_model"] = or_null(meta.twist_model);
+  d["source"] = to_string(source);
   return d;
 }
 
@@ -272,49 +153,112 @@ void add_three(SiteFiles& files, const std::string& dir) {
   if (std::filesystem::exists(copyright)) files["three/COPYRIGHT"] = slurp(copyright);
 }
 
+/// [length] the contact distance of the site's contact flags (every data set and ledger records it).
+double contact_distance(const DatasetMetadata& meta, const std::string& path) {
+  if (!meta.dhat) throw InputError(path + ": records no contact distance dhat");
+  return *meta.dhat;
+}
+
+/// The site's files, knot after knot: a data set's and a ledger's site share it.
+class SiteBuilder {
+ public:
+  SiteBuilder(const std::string& path, const SiteOptions& options, double dhat)
+      : path_(path), options_(options), dhat_(dhat) {}
+
+  /// Adds a knot: `k` its stored equilibria (the table's record and
+  /// attributes.bin), `shown` those its pages show (curves, their attributes,
+  /// similarity, linkage, runs), `states` what a ledger's shown states add.
+  void add(const KnotRows& k, const KnotEntry& shown, const ShownStates* states = nullptr) {
+    if (columns_.empty()) columns_ = k.names;
+    if (k.attributes.rows() > 0 && k.names != columns_)
+      throw InputError(path_ + ": " + k.header.name +
+                       " has other attribute columns than the first entry (a site shows knots or links, not both)");
+    const std::string file = knot_file_name(k.header.name);
+    const double cut = k.header.is_link() ? options_.link_cut : options_.cut;
+    KnotSiteData data = knot_site_data(shown, file, dhat_, cut, states);
+    knots_.push_back(knot_record(k, file, distinct_at(k, cut), rows_, states));
+    files_["data/knots/" + file + ".json"] = std::move(data.json);
+    files_["data/knots/" + file + ".bin"] = std::move(data.binary);
+    for (Eigen::Index i = 0; i < k.attributes.rows(); ++i)
+      for (Eigen::Index c = 0; c < k.attributes.cols(); ++c) append(attributes_, k.attributes(i, c));
+    rows_ += static_cast<size_t>(k.attributes.rows());
+  }
+
+  /// Every file of the site, with `dataset` as site.json's dataset object.
+  SiteFiles finish(Json dataset) {
+    Json site;
+    site["format"] = kSiteFormat;
+    site["format_version"] = kSiteFormatVersion;
+    site["generated_by"] = "knots site " + project_version();
+    site["dataset"] = std::move(dataset);
+    site["cut"] = options_.cut;
+    site["link_cut"] = options_.link_cut;
+    site["attribute_names"] = columns_;
+    site["attributes"] = {{"file", "attributes.bin"}, {"dtype", "float64"}, {"rows", rows_}, {"columns", columns_.size()}};
+    site["knots"] = std::move(knots_);
+    files_["data/site.json"] = site.dump();
+    files_["data/attributes.bin"] = std::move(attributes_);
+    for (const auto& [path, content] : site_assets()) files_[path] = std::string(content);
+    add_three(files_, options_.three_dir);
+    return std::move(files_);
+  }
+
+ private:
+  const std::string& path_;
+  const SiteOptions& options_;
+  double dhat_;
+  SiteFiles files_;
+  Json knots_ = Json::array();
+  std::vector<std::string> columns_;
+  std::string attributes_;
+  size_t rows_ = 0;
+};
+
+SiteFiles dataset_site(const std::string& path, const SiteOptions& options) {
+  DatasetReader reader(path);
+  SiteBuilder site(path, options, contact_distance(reader.metadata(), path));
+  for (const std::string& name : reader.knot_names()) {
+    const KnotEntry e = reader.read(name);
+    site.add(rows_of(e), e);
+  }
+  return site.finish(dataset_json(reader.metadata(), path, options.title, SiteSource::Dataset));
+}
+
+/// The comparison the data-set pipeline used for a knot (options_for_knot of the default options).
+SimilarityOptions knot_similarity(const std::string& name) {
+  const ExploreOptions defaults;
+  const KnotRecord* knot = KnotTable::global().find(name);
+  return knot ? options_for_knot(defaults, *knot).similarity : defaults.similarity;
+}
+
+SiteFiles ledger_site(const std::string& path, const SiteOptions& options) {
+  const Ledger ledger = read_ledger_source(path);
+  SiteBuilder site(path, options, contact_distance(ledger.parameters, path));
+  for (const LedgerEntry& e : ledger.entries) {
+    ShownStates states;
+    const KnotEntry shown = shown_states(e, knot_similarity(e.name), &states);
+    site.add(rows_of(e), shown, &states);
+  }
+  Json d = dataset_json(ledger.parameters, path, options.title, SiteSource::Ledger);
+  d["ledger_cut"] = ledger.provenance.cut;
+  d["curves_per_knot"] = ledger.provenance.curves_per_knot;
+  return site.finish(std::move(d));
+}
+
 }  // namespace
 
-SiteFiles build_site(const std::string& dataset_path, const SiteOptions& options) {
+SiteOptions::SiteOptions() : three_dir(EK_THREE_JS_DIR) {}
+
+void SiteOptions::validate() const {
+  if (!(cut >= 0.0 && cut <= 1.0)) throw InputError("--cut must be in [0, 1]");
+  if (!(link_cut >= 0.0 && link_cut <= 1.0)) throw InputError("--link-cut must be in [0, 1]");
+}
+
+SiteFiles build_site(const std::string& path, const SiteOptions& options) {
   options.validate();
   if (!std::filesystem::exists(options.three_dir + "/build/three.module.js"))
     throw InputError("three.js not found in " + options.three_dir + " (install the Debian package libjs-three)");
-  DatasetReader reader(dataset_path);
-  const DatasetMetadata& meta = reader.metadata();
-  const KnotTable& table = KnotTable::global();
-  SiteFiles files;
-  Json knots = Json::array();
-  std::vector<std::string> columns;
-  std::string attributes;
-  size_t rows = 0;
-  for (const std::string& name : reader.knot_names()) {
-    const KnotEntry e = reader.read(name);
-    if (columns.empty() && !e.attribute_names.empty()) columns = e.attribute_names;
-    if (!e.equilibria.empty() && e.attribute_names != columns)
-      throw InputError(dataset_path + ": " + name + " has other attribute columns than the first entry (a site shows knots or links, not both)");
-    const std::string file = knot_file_name(name);
-    KnotSiteData data = knot_site_data(e, file, meta.dhat.value(), e.is_link() ? options.link_cut : options.cut);  // dhat: required, always read
-    knots.push_back(knot_record(e, table, file, data.distinct, rows));
-    files["data/knots/" + file + ".json"] = std::move(data.json);
-    files["data/knots/" + file + ".bin"] = std::move(data.binary);
-    for (Eigen::Index i = 0; i < e.attributes.rows(); ++i)
-      for (Eigen::Index c = 0; c < e.attributes.cols(); ++c) append(attributes, e.attributes(i, c));
-    rows += static_cast<size_t>(e.attributes.rows());
-  }
-  Json site;
-  site["format"] = kSiteFormat;
-  site["format_version"] = kSiteFormatVersion;
-  site["generated_by"] = "knots site " + project_version();
-  site["dataset"] = dataset_json(meta, dataset_path, options.title);
-  site["cut"] = options.cut;
-  site["link_cut"] = options.link_cut;
-  site["attribute_names"] = columns;
-  site["attributes"] = {{"file", "attributes.bin"}, {"dtype", "float64"}, {"rows", rows}, {"columns", columns.size()}};
-  site["knots"] = knots;
-  files["data/site.json"] = site.dump();
-  files["data/attributes.bin"] = std::move(attributes);
-  for (const auto& [path, content] : site_assets()) files[path] = std::string(content);
-  add_three(files, options.three_dir);
-  return files;
+  return is_ledger_source(path) ? ledger_site(path, options) : dataset_site(path, options);
 }
 
 std::string content_type(const std::string& path) {

@@ -39,6 +39,19 @@ export async function loadAttributes(site) {
   return attributes;
 }
 
+/** Whether the site was written from ledgers: a knot's files then hold its
+ *  shown states (those with a kept curve, each as its representative), not
+ *  every equilibrium; site.json still has every equilibrium's attributes. */
+export function fromLedger(site) {
+  return site.dataset.source === "ledger";
+}
+
+/** The index in the knot's files (3D view) of its equilibrium i (row i from
+ *  the knot's offset in attributes.bin); -1 when a ledger keeps no curve of it. */
+export function shownIndex(rec, i) {
+  return rec.shown_rows ? rec.shown_rows.indexOf(i) : i;
+}
+
 /** Attribute `name` of equilibrium i of a knot, from the table of every
  *  equilibrium (loadAttributes()). */
 export function attribute(site, table, knot, i, name) {

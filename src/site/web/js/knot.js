@@ -1,8 +1,9 @@
 // View: one knot type. Its MDS map and dendrogram coloured by the clusters at
 // a cut the slider sets (reclustered here exactly as `knots cluster` does),
 // the count of distinct states, and its equilibria with their attributes
-// (sortable); a point or a row opens the equilibrium in 3D.
-import { loadKnot, knotAttribute, attributeNames } from "./data.js";
+// (sortable); a point or a row opens the equilibrium in 3D. A site of
+// ledgers shows the knot's states with a kept curve (their representatives).
+import { loadKnot, knotAttribute, attributeNames, fromLedger } from "./data.js";
 import { clustersAtCut } from "./clusters.js";
 import { mdsPlot } from "./mds.js";
 import { dendrogramPlot } from "./dendrogram.js";
@@ -14,13 +15,20 @@ export async function showKnot(main, site, name) {
   const k = await loadKnot(site, name);
   const m = k.equilibria;
   const value = (i, a) => knotAttribute(site, k, i, a);
+  const ledger = fromLedger(site);
+  const counts = ledger
+    ? `${rec.samples} samples, ${rec.equilibria} stable equilibria in ${k.states} states at the ledger's cut ` +
+      `${fmt(site.dataset.ledger_cut)}; shown: the ${m} lowest-energy states whose curve the ledger keeps, each as its representative.`
+    : `${rec.samples} samples, ${m} stable equilibria.`;
   main.append(el("h2", {}, `${name}`),
     el("p", { class: "muted" },
       `${rec.crossing_number} crossings, bridge index ${fmt(rec.bridge_index)}, braid index ${fmt(rec.braid_index)}` +
       `${rec.bb ? " (BB)" : ""}, ${rec.alternating === null ? "" : rec.alternating ? "alternating, " : "non-alternating, "}` +
-      `${rec.samples} samples, ${m} stable equilibria.`));
+      counts));
   if (m === 0) {
-    main.append(el("p", {}, "No stable equilibrium is stored for this knot."));
+    main.append(el("p", {}, ledger && rec.equilibria > 0
+      ? "The ledger keeps no curve of this knot's states (rerunning a state's sample reproduces it)."
+      : "No stable equilibrium is stored for this knot."));
     ready("knot");
     return null;
   }
@@ -38,6 +46,7 @@ export async function showKnot(main, site, name) {
   const rows = Array.from({ length: m }, (_, i) => ({ i }));
   const columns = [
     { key: "index", label: "#", value: (r) => r.i },
+    ...(ledger ? [{ key: "members", label: "members", value: (r) => k.members[r.i] }] : []),
     { key: "cluster", label: "cluster", value: (r) => clusters.rank[r.i],
       format: (c) => el("span", {}, el("span", { class: "swatch", style: `background:${clusterColor(c)}` }), c) },
     ...attrs.map((a) => ({ key: a, label: ATTRIBUTE_LABELS[a] ?? a, value: (r) => value(r.i, a) })),
@@ -63,7 +72,7 @@ export async function showKnot(main, site, name) {
     el("div", { class: "cut" }, el("label", { for: "cut-slider" }, "cut (1 − similarity)"), slider, number,
       el("span", {}, count, " distinct states (clusters) at this cut; the largest point of a colour is its lowest-energy member")),
     el("div", { class: "row" }, el("div", { class: "panel" }, mds.node), el("div", { class: "panel" }, dendro.node)),
-    el("h3", {}, "Equilibria (click one for 3D; bold: the lowest energy of its cluster)"),
+    el("h3", {}, `${ledger ? "States (representatives" : "Equilibria ("}; click one for 3D; bold: the lowest energy of its cluster)`),
     el("div", { class: "scroll" }, eqTable.node));
   setCut(cut);
   ready("knot");

@@ -54,7 +54,8 @@ try {
   const d = site.dataset;
   document.getElementById("title").textContent = `Elastic knots: ${d.title}`;
   document.getElementById("dataset-info").textContent =
-    `${site.knots.length} knot types, ${site.attributes.rows} equilibria; n = ${d.vertices}, r = ${d.radius}, ` +
+    `${site.knots.length} knot types, ${site.attributes.rows} equilibria` +
+    `${d.source === "ledger" ? " (from ledgers: a knot shows its states with a kept curve)" : ""}; n = ${d.vertices}, r = ${d.radius}, ` +
     `E = ${d.young}, sampling ${d.sampling}, seed ${d.seed}`;
   window.addEventListener("hashchange", () => route(site));
   await route(site);

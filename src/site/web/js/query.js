@@ -3,8 +3,9 @@
 // (knots as in the data set, equilibria by index), then sort stably by one
 // attribute (ascending, or descending with :desc) and keep the first K. The
 // query lives in the address (#/query?knot=&where=energy<2&sort=energy:desc&limit=10),
-// so it can be bookmarked; a row opens the equilibrium in 3D.
-import { loadAttributes } from "./data.js";
+// so it can be bookmarked; a row opens the equilibrium in 3D (in a site of
+// ledgers, only a shown state's representative has a curve to open).
+import { loadAttributes, shownIndex } from "./data.js";
 import { el, fmt, ATTRIBUTE_LABELS, ready } from "./util.js";
 
 const OPS = ["<", "<=", ">", ">=", "=", "!="];
@@ -65,6 +66,14 @@ export function runQuery(site, table, { knot, where, sort, limit }) {
   return limit !== null && limit !== undefined && rows.length > limit ? rows.slice(0, limit) : rows;
 }
 
+/** A result row: opens the 3D view of its curve; muted without one (a ledger keeps few curves). */
+function viewRow(site, r, ...cells) {
+  const view = shownIndex(site.byName.get(r.knot), r.index);
+  const open = () => { location.hash = `#/view/${encodeURIComponent(r.knot)}/${view}`; };
+  return el("tr", { dataset: { knot: r.knot, index: r.index, view }, class: view < 0 ? "no-curve" : null,
+    title: view < 0 ? "the ledger keeps no curve of this equilibrium" : null, onclick: view < 0 ? null : open }, ...cells);
+}
+
 function conditionRow(site, text = "") {
   let c = { attribute: site.attribute_names[0], op: "<", value: "" };
   if (text) { try { c = parseCondition(text); } catch { /* shown empty */ } }
@@ -123,8 +132,7 @@ export async function showQuery(main, site, params) {
       rows.length > SHOWN ? ` (the first ${SHOWN} shown)` : ""),
     el("div", { class: "scroll" }, el("table", { class: "data", id: "query-table" },
       el("thead", {}, el("tr", {}, el("th", {}, "knot"), el("th", {}, "index"), names.map((a) => el("th", {}, ATTRIBUTE_LABELS[a] ?? a)))),
-      el("tbody", {}, rows.slice(0, SHOWN).map((r) => el("tr", { dataset: { knot: r.knot, index: r.index },
-        onclick: () => { location.hash = `#/view/${encodeURIComponent(r.knot)}/${r.index}`; } },
+      el("tbody", {}, rows.slice(0, SHOWN).map((r) => viewRow(site, r,
       el("td", {}, r.knot), el("td", {}, r.index), names.map((a, c) => el("td", {}, fmt(table[r.row * names.length + c], 6)))))))));
   } else if (!conditions.children.length) {
     conditions.append(conditionRow(site));

@@ -2,7 +2,7 @@
 // their similarity. Colour by curvature (a shared scale and colour bar) or by
 // contact; the wire's thickness as stored (its radius r) or thicker; OBJ
 // downloads of the curve and of the tube.
-import { loadKnot, knotAttribute, curve, attributeNames, componentSizes } from "./data.js";
+import { loadKnot, knotAttribute, curve, attributeNames, componentSizes, fromLedger } from "./data.js";
 import { clustersAtCut } from "./clusters.js";
 import { TubeViewer } from "./viewer.js";
 import { viridis, viridisGradient, percentile, CONTACT, FREE } from "./colormap.js";
@@ -74,7 +74,9 @@ export async function showEquilibria(main, site, name, indices) {
     el("option", { value: j }, `#${j}: E = ${fmt(value(j, "energy"), 5)}, cluster ${clusters.rank[j]}`)));
   compare.value = indices.length === 2 ? String(indices[1]) : "";
   const legend = el("div", { class: "colorbar", id: "colorbar" });
-  main.append(el("h2", {}, back, ` · equilibri${indices.length === 2 ? "a" : "um"} ${indices.join(" and ")}`),
+  const what = fromLedger(site) ? `state${indices.length === 2 ? "s" : ""} (representative${indices.length === 2 ? "s" : ""})`
+    : `equilibri${indices.length === 2 ? "a" : "um"}`;
+  main.append(el("h2", {}, back, ` · ${what} ${indices.join(" and ")}`),
     el("div", { class: "controls" },
       el("label", {}, "colour ", mode), el("label", {}, "wire ", thick), el("label", {}, "beside it ", compare)),
     legend);
