@@ -40,7 +40,7 @@ for r in runs:
         panels.append(key)
 cols = min(4, len(panels))
 rows = (len(panels) + cols - 1) // cols
-fig = plt.figure(figsize=(3.0 * cols, 2.4 * rows + 3.0))
+fig = plt.figure(figsize=(3.0 * max(cols, 3), 2.4 * rows + 3.0))
 grid = fig.add_gridspec(rows + 1, cols, height_ratios=[1.0] * rows + [1.25], hspace=0.55, wspace=0.32)
 for p, key in enumerate(panels):
     ax = fig.add_subplot(grid[p // cols, p % cols])
@@ -82,8 +82,9 @@ if z is not None:
              (f"released: {z['released_state']}", z["curve_released"])]
     curves = [read_obj(f"{d}/{f}") for _, f in names]
     frame = frame_of(curves[0])
+    bottom = grid[rows, :].subgridspec(1, len(curves), wspace=0.1)  # three tubes however few panels above
     for c, ((title, _), P) in enumerate(zip(names, curves)):
-        sub = fig.add_subplot(grid[rows, c])
+        sub = fig.add_subplot(bottom[0, c])
         draw_framed(sub, P, "top", frame, radius=float(s["radius"]))
         sub.set_title(title, fontsize=8)
     what = (f"flip of run {run['run']}: {run['knot']} {run['state_from']} → {run['state_to']} by {run['load']}, "

@@ -41,8 +41,9 @@ def trapezoid_work(path, sign):
                       for k in steps)
 
 
-def check_path(r, n):
-    """The path's arrays: one entry per point, every point a stable equilibrium of the trefoil."""
+def check_path(r, n, sign):
+    """The path's arrays: one entry per point, every point a stable equilibrium of the trefoil;
+    ∂E/∂μ = sign · reaction."""
     p = r.path
     m = r.points
     for name in ("parameter", "displacement", "reaction", "stiffness", "energy", "load_energy", "gradient_norm",
@@ -59,7 +60,12 @@ def check_path(r, n):
         assert np.array_equal(s.loaded, p.points[s.point])
         assert s.parameter == p.parameter[s.point - 1] and s.reaction == p.reaction[s.point - 1]
         assert s.loaded_energy == p.energy[s.point]
-        assert s.energy_drop == pytest.approx(p.energy[s.point - 1] - p.energy[s.point], rel=1e-12)
+        # released at one control, the snap's: the branch's last state moved from its control to the snap's
+        # changes the load's energy by ∂E/∂μ·Δμ (plus ½kΔμ² for the pull's spring, exact for its quadratic)
+        step = p.parameter[s.point] - p.parameter[s.point - 1]
+        moved = sign * p.reaction[s.point - 1] * step + (0.5 * r.pull_stiffness * step ** 2 if r.load == "pull" else 0.0)
+        assert s.energy_drop > 0.0
+        assert s.energy_drop == pytest.approx(p.energy[s.point - 1] - p.energy[s.point] + moved, rel=1e-7)
         assert s.released_status == "converged-stable"
         assert ek.alexander(s.released) == [1, -1, 1]
     assert r.dissipated == pytest.approx(sum(s.energy_drop for s in r.snaps), rel=1e-12)
@@ -67,7 +73,7 @@ def check_path(r, n):
 
 def test_pressed_trefoil_snaps_once_and_springs_back(state, pressed):
     r = pressed
-    check_path(r, 96)
+    check_path(r, 96, -1.0)
     assert r.load == "plates" and r.parameter == "gap" and r.to == 0.3
     assert r.vertices is None and r.pull_stiffness is None
     assert np.linalg.norm(r.normal) == pytest.approx(1.0, rel=1e-12)
@@ -96,7 +102,7 @@ def test_pressed_trefoil_snaps_once_and_springs_back(state, pressed):
 
 def test_pulled_trefoil_reaches_the_target_and_the_work_is_the_energy_gained(state, pulled):
     r = pulled
-    check_path(r, 96)
+    check_path(r, 96, 1.0)
     assert r.load == "pull" and r.parameter == "distance" and r.vertices == [0, 48] and r.normal is None
     assert r.status == "reached" and r.end_parameter == pytest.approx(30.0, abs=1e-12)
     ell = np.mean(np.linalg.norm(np.roll(state, -1, axis=0) - state, axis=1))
