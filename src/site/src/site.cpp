@@ -54,8 +54,11 @@ struct KnotRows {
   size_t runs;
 };
 
-KnotRows rows_of(const KnotEntry& e) { return {e, e.attribute_names, e.attributes, e.linkage, e.runs.size()}; }
-KnotRows rows_of(const LedgerEntry& e) { return {e, e.attribute_names, e.attributes, e.linkage, e.runs.size()}; }
+/// The rows of a KnotEntry or a LedgerEntry (the same member names).
+template <class Entry>
+KnotRows rows_of(const Entry& e) {
+  return {e, e.attribute_names, e.attributes, e.linkage, e.runs.size()};
+}
 
 /// Clusters of all m equilibria at `cut` (clusters_at_cut's count).
 int distinct_at(const KnotRows& k, double cut) {
