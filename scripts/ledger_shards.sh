@@ -8,6 +8,9 @@
 # results/SCALE/shards/ (not committed), its ledger to
 # docs/results/SCALE/ledgers/shard-II-of-NN.ledger.h5. A shard whose ledger
 # exists is skipped; an interrupted shard resumes from its journals.
+# The scale truth is the ground truth of the stopping rules: 30 knots of 5 to
+# 12 crossings (BB and not, alternating and not) with the full budget of 500
+# samples each (no adaptive stop), which exp_adaptive --fixed replays.
 # docs/reproducing.md ("The ledgers") describes the workflow.
 set -euo pipefail
 
@@ -16,9 +19,11 @@ usage() {
 usage: scripts/ledger_shards.sh SCALE [--shards N] [--only I,J,...] [--jobs J] [--knots PATH]
                                 [--commit] [--nice]
 
-  SCALE          sample12 (the stratified 10% of the 11- and 12-crossing knots, every BB knot)
-                 or paper10 (every knot with 3 to 10 crossings)
-  --shards N     shards of the scale (default: sample12 20, paper10 16; about 15 minutes each on 2 cores)
+  SCALE          sample12 (the stratified 10% of the 11- and 12-crossing knots, every BB knot),
+                 paper10 (every knot with 3 to 10 crossings) or truth (30 knots of 5 to 12
+                 crossings, 500 samples each: the ground truth of the stopping rules)
+  --shards N     shards of the scale (default: sample12 20, paper10 16, truth 4; about 15 minutes
+                 each on 2 cores)
   --only LIST    these shards only (comma-separated, 1-based); default every shard without a ledger
   --jobs J       relaxations in parallel per shard (default 2)
   --knots PATH   the knots program (default build/bin/knots of this checkout)
@@ -52,10 +57,16 @@ while [[ $# -gt 0 ]]; do
     *) fail "unknown option '$1' (see --help)" ;;
   esac
 done
+# The ground truth's knots: per crossing number, alternating and not, BB
+# (bridge index = braid index) and not, where the table has them.
+truth_knots=5_1,5_2,6_1,6_2,6_3,7_1,7_2,7_4,7_7,8_1,8_5,8_19,8_20,9_1,9_10,9_16,9_42,10_1,10_46,10_124,10_132
+truth_knots+=,11a_1,11a_57,11n_1,11n_71,12a_1,12a_146,12n_1,12n_113,12n_200
+sampling=(--adaptive)
 case "$scale" in
   sample12) select=(--max-crossings 12 --min-crossings 11 --stratified 0.1); shards=${shards:-20} ;;
   paper10) select=(--max-crossings 10); shards=${shards:-16} ;;
-  *) fail "unknown scale '$scale' (sample12 or paper10)" ;;
+  truth) select=(--names "$truth_knots"); sampling=(--samples 500); shards=${shards:-4} ;;
+  *) fail "unknown scale '$scale' (sample12, paper10 or truth)" ;;
 esac
 [[ "$shards" =~ ^[1-9][0-9]*$ ]] || fail "--shards must be a positive integer"
 [[ "$jobs" =~ ^[1-9][0-9]*$ ]] || fail "--jobs must be a positive integer"
@@ -83,7 +94,7 @@ for i in "${list[@]}"; do
   fi
   echo "$(date -u +%FT%TZ) $scale $name: started" >>"$log"
   start=$(date +%s)
-  "${nice_cmd[@]}" "$knots" dataset "${select[@]}" --adaptive --novelty-distance 0.05 --jobs "$jobs" \
+  "${nice_cmd[@]}" "$knots" dataset "${select[@]}" "${sampling[@]}" --novelty-distance 0.05 --jobs "$jobs" \
     --shard "$i/$shards" --quiet -o "$work/$name.h5" --ledger "$ledger"
   echo "$(date -u +%FT%TZ) $scale $name: finished in $(($(date +%s) - start)) s, ledger $(du -k "$ledger" | cut -f1) kB" >>"$log"
   if [[ $commit -eq 1 ]]; then
