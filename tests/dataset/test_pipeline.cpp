@@ -53,6 +53,52 @@ TEST(Adaptive, ImportanceScoreByHand) {
   EXPECT_THROW(importance_score(first, 1, {1.0, 1.5}, 1.0, 0.1), std::invalid_argument);
 }
 
+// The unseen rule by hand (δ = 0.1, low = 1.1 · lowest, batches of 10).
+TEST(Adaptive, UnseenScoreByHand) {
+  ExploreOptions o;
+  o.stopping = StoppingRule::Unseen;
+  o.novelty_distance = 0.1;
+  StoppingScore score(o);
+  // equilibria 0 and 1 alike (distance 0.02), 2 apart (distance 0.5) at 1.05
+  // times the lowest: states {0, 1} and {2}, one low-energy singleton in 3
+  // samples: p = 1/3, P = 1 − (2/3)¹⁰
+  Eigen::MatrixXd first(3, 3);
+  first << 1.0, 0.0, 0.0,  //
+      0.98, 1.0, 0.0,      //
+      0.5, 0.5, 1.0;
+  EXPECT_NEAR(score.add_batch(first, {1.0, 1.0, 1.05}), 1.0 - std::pow(2.0 / 3.0, 10), 1e-12);
+  // a second sample of state {2}: no singleton left, P = 0
+  Eigen::MatrixXd second(1, 4);
+  second << 0.5, 0.5, 0.97, 1.0;
+  EXPECT_DOUBLE_EQ(score.add_batch(second, {1.06}), 0.0);
+  // a new state at twice the lowest energy is not low: still 0
+  Eigen::MatrixXd third(1, 5);
+  third << 0.2, 0.2, 0.3, 0.3, 1.0;
+  EXPECT_DOUBLE_EQ(score.add_batch(third, {2.0}), 0.0);
+  // a batch without a stable equilibrium keeps P; a new low state: 1 singleton in 6 samples
+  EXPECT_DOUBLE_EQ(score.add_batch(Eigen::MatrixXd(0, 5), {}), 0.0);
+  Eigen::MatrixXd fourth(1, 6);
+  fourth << 0.3, 0.3, 0.3, 0.3, 0.3, 1.0;
+  EXPECT_NEAR(score.add_batch(fourth, {0.99}), 1.0 - std::pow(5.0 / 6.0, 10), 1e-12);
+  EXPECT_THROW(score.add_batch(fourth, {1.0, 2.0}), std::invalid_argument);
+}
+
+TEST(Adaptive, StoppingRulesAreNamedInTheParameters) {
+  ExploreOptions o;
+  o.adaptive = true;
+  o.novelty_distance = 0.05;
+  EXPECT_EQ(o.sampling_description(), "adaptive:50+10,max=500,S>0.1,delta=0.05");
+  o.stopping = parse_stopping_rule("unseen");
+  EXPECT_EQ(o.sampling_description(), "adaptive:50+10,max=500,unseen<0.1,low=1.1,delta=0.05");
+  EXPECT_EQ(to_string(o.stopping), "unseen");
+  EXPECT_THROW(parse_stopping_rule("chao"), InputError);
+  o.new_state_threshold = 1.0;
+  EXPECT_THROW(o.validate(), InputError);
+  o.new_state_threshold = 0.1;
+  o.low_energy_factor = 0.9;
+  EXPECT_THROW(o.validate(), InputError);
+}
+
 TEST(Adaptive, SeedsDependOnNameAndRunSeed) {
   EXPECT_NE(knot_seed(1, "3_1"), knot_seed(1, "4_1"));
   EXPECT_NE(knot_seed(1, "3_1"), knot_seed(2, "3_1"));
@@ -269,10 +315,23 @@ TEST(Pipeline, AdaptiveRunIsAPrefixOfTheFixedRunAndReplayAgrees) {
       EXPECT_EQ(a.equilibria[a.runs[s].equilibrium], full.equilibria[full.runs[s].equilibrium]) << s;
     }
   }
+  // the replay reads the stored similarities (computed pairwise in the other order): equal to rounding
   const AdaptiveReplay replay = replay_adaptive(full, adaptive);
   EXPECT_EQ(replay.samples_used, a.samples_used);
   ASSERT_EQ(replay.score_history.size(), a.score_history.size());
-  for (size_t b = 0; b < a.score_history.size(); ++b) EXPECT_DOUBLE_EQ(replay.score_history[b], a.score_history[b]);
+  for (size_t b = 0; b < a.score_history.size(); ++b) EXPECT_NEAR(replay.score_history[b], a.score_history[b], 1e-12);
+  // the unseen rule, continuing while any low-energy state is seen once
+  adaptive.stopping = StoppingRule::Unseen;
+  adaptive.new_state_threshold = 0.0;
+  const KnotEntry u = explore_knot(k, adaptive);
+  const AdaptiveReplay ur = replay_adaptive(full, adaptive);
+  EXPECT_EQ(ur.samples_used, u.samples_used);
+  ASSERT_EQ(ur.score_history.size(), u.score_history.size());
+  for (size_t b = 0; b < u.score_history.size(); ++b) {
+    EXPECT_GE(u.score_history[b], 0.0);
+    EXPECT_LE(u.score_history[b], 1.0);
+    EXPECT_NEAR(ur.score_history[b], u.score_history[b], 1e-12);
+  }
 }
 
 // Section 7.1 "Symmetries": mirror images count as the same state exactly for

@@ -75,4 +75,20 @@ UnseenEstimate estimate_unseen(const std::vector<int>& counts, const UnseenOptio
   return e;
 }
 
+double new_state_probability_of_kind(const std::vector<int>& counts, const std::vector<bool>& of_kind) {
+  if (counts.size() != of_kind.size()) throw InputError("one kind flag per state's count expected");
+  long n = 0, singletons = 0;
+  for (size_t i = 0; i < counts.size(); ++i) {
+    if (counts[i] < 0) throw InputError("a state's sample count is negative");
+    n += counts[i];
+    singletons += counts[i] == 1 && of_kind[i];
+  }
+  return n > 0 ? static_cast<double>(singletons) / static_cast<double>(n) : 0.0;
+}
+
+double new_state_probability_in_batch(double p, int batch) {
+  if (!(p >= 0.0 && p <= 1.0) || batch < 0) throw InputError("a probability in [0, 1] and a batch >= 0 expected");
+  return 1.0 - std::pow(1.0 - p, batch);
+}
+
 }  // namespace ek

@@ -15,12 +15,19 @@ struct ExploreArgs {
   bool quiet = false;
   std::string continuation;
   std::string method = "default";
+  std::string stopping = "score";
 };
 
 inline void add_explore_options(ArgParser& args, ExploreArgs& a) {
   args.option("--samples", &a.samples, "lattice samples per knot (default 50); not with --adaptive");
   args.flag("--adaptive", &a.adaptive, "adaptive sampling: 50, then batches of 10 while the importance score S > 0.1, at most 500");
   args.option("--max-samples", &a.options.max_samples, "adaptive sampling: at most this many samples (default 500)");
+  args.option("--stopping", &a.stopping,
+              "adaptive sampling's rule: score (the importance score S, the paper's rule; default) or unseen (while "
+              "the estimated chance of a new low-energy state in the next batch is above --new-state-threshold)");
+  args.option("--new-state-threshold", &a.options.new_state_threshold,
+              "adaptive sampling by the unseen rule: continue while the chance of a new low-energy state in the next "
+              "batch is above this (default 0.1)");
   args.option("--novelty-distance", &a.options.novelty_distance,
               "adaptive sampling: δ, the distance 1 - similarity at which a state counts as new (default 0.1; the "
               "experiments use the cluster cut 0.05)");
@@ -69,6 +76,8 @@ inline void finish_explore_options(ExploreArgs& a) {
   if (a.seed < 0) throw InputError("--seed must be non-negative");
   a.options.seed = static_cast<std::uint64_t>(a.seed);
   a.options.adaptive = a.adaptive;
+  a.options.stopping = parse_stopping_rule(a.stopping);
+  if (!a.adaptive && a.options.stopping != StoppingRule::Score) throw InputError("--stopping needs --adaptive");
   if (a.samples) a.options.samples = *a.samples;
   a.options.stiffness = !a.no_stiffness;
   a.options.relax = with_method(a.options.relax, a.method);

@@ -11,6 +11,7 @@
 #include "ek/analysis/attributes.hpp"
 #include "ek/analysis/clustering.hpp"
 #include "ek/analysis/link_states.hpp"
+#include "ek/analysis/unseen.hpp"
 #include "ek/core/errors.hpp"
 #include "ek/core/hash.hpp"
 #include "ek/core/parallel.hpp"
@@ -67,6 +68,14 @@ JournalRun run_one(const Points& sample, int index, std::uint64_t seed, const Ex
 
 }  // namespace
 
+std::string to_string(StoppingRule rule) { return rule == StoppingRule::Score ? "score" : "unseen"; }
+
+StoppingRule parse_stopping_rule(const std::string& name) {
+  if (name == "score") return StoppingRule::Score;
+  if (name == "unseen") return StoppingRule::Unseen;
+  throw InputError("unknown stopping rule '" + name + "' (score or unseen)");
+}
+
 ExploreOptions::ExploreOptions() { similarity.reversal = true; }
 
 void ExploreOptions::validate() const {
@@ -76,6 +85,9 @@ void ExploreOptions::validate() const {
   require_input(initial_samples >= 1 && batch_samples >= 1, "explore: initial and batch sample counts must be positive");
   require_input(max_samples >= initial_samples, "explore: max samples must be >= the initial samples");
   require_input(score_threshold >= 0.0 && score_threshold < 1.0, "explore: score threshold must be in [0, 1)");
+  require_input(new_state_threshold >= 0.0 && new_state_threshold < 1.0,
+                "explore: the new-state threshold must be in [0, 1)");
+  require_input(low_energy_factor >= 1.0, "explore: the low-energy factor must be at least 1");
   require_input(novelty_distance > 0.0 && novelty_distance <= 1.0, "explore: novelty distance must be in (0, 1]");
   require_input(jobs >= 1 && jobs <= 256, "explore: --jobs must be between 1 and 256");
   require_input(sampling.vertices >= 4 && sampling.vertices % 2 == 0,
@@ -84,10 +96,14 @@ void ExploreOptions::validate() const {
 
 std::string ExploreOptions::sampling_description() const {
   std::ostringstream s;
-  if (adaptive)
-    s << "adaptive:" << initial_samples << "+" << batch_samples << ",max=" << max_samples << ",S>" << score_threshold
-      << ",delta=" << novelty_distance;
-  else
+  if (adaptive) {
+    s << "adaptive:" << initial_samples << "+" << batch_samples << ",max=" << max_samples;
+    if (stopping == StoppingRule::Score)
+      s << ",S>" << score_threshold;
+    else
+      s << ",unseen<" << new_state_threshold << ",low=" << low_energy_factor;
+    s << ",delta=" << novelty_distance;
+  } else
     s << "fixed:" << samples;
   if (burn_in > 0) s << ",burn-in=" << burn_in;
   return s.str();
@@ -250,26 +266,61 @@ void cluster_entry(KnotEntry& e, const SimilarityOptions& options) {
   e.linkage = complete_linkage_from_similarity(e.similarity).linkage_matrix();
 }
 
-AdaptiveScorer::AdaptiveScorer(const ExploreOptions& o)
-    : engine_(o.sampling.vertices, o.similarity), novelty_distance_(o.novelty_distance) {}
+StoppingScore::StoppingScore(const ExploreOptions& o)
+    : rule_(o.stopping),
+      novelty_distance_(o.novelty_distance),
+      low_energy_factor_(o.low_energy_factor),
+      batch_samples_(o.batch_samples) {}
+
+double StoppingScore::add_batch(const Eigen::MatrixXd& sim, const std::vector<double>& energies) {
+  const auto earlier = static_cast<Eigen::Index>(energies_.size());
+  const auto m = static_cast<Eigen::Index>(energies.size());
+  require(sim.rows() == m && sim.cols() == earlier + m, "StoppingScore: similarity matrix has the wrong shape");
+  for (double E : energies) min_energy_ = std::min(min_energy_, E);
+  double score = 0.0;
+  if (rule_ == StoppingRule::Score) {
+    if (m > 0) score = importance_score(sim, static_cast<int>(earlier), energies, min_energy_, novelty_distance_);
+  } else {
+    similarity_.conservativeResize(earlier + m, earlier + m);
+    for (Eigen::Index j = 0; j < m; ++j)
+      for (Eigen::Index i = 0; i <= earlier + j; ++i)
+        similarity_(earlier + j, i) = similarity_(i, earlier + j) = i == earlier + j ? 1.0 : sim(j, i);
+  }
+  energies_.insert(energies_.end(), energies.begin(), energies.end());
+  return rule_ == StoppingRule::Score ? score : unseen_score();
+}
+
+// P of the file comment: the states at δ, their sample counts, which are low in energy.
+double StoppingScore::unseen_score() const {
+  if (energies_.empty()) return 0.0;
+  std::vector<int> labels(energies_.size(), 0);
+  if (energies_.size() > 1) labels = cut_dendrogram(complete_linkage_from_similarity(similarity_), novelty_distance_);
+  const size_t states = static_cast<size_t>(*std::max_element(labels.begin(), labels.end()) + 1);
+  std::vector<int> counts(states, 0);
+  std::vector<double> lowest(states, std::numeric_limits<double>::infinity());
+  for (size_t i = 0; i < labels.size(); ++i) {
+    ++counts[static_cast<size_t>(labels[i])];
+    lowest[static_cast<size_t>(labels[i])] = std::min(lowest[static_cast<size_t>(labels[i])], energies_[i]);
+  }
+  std::vector<bool> low(states);
+  for (size_t c = 0; c < states; ++c) low[c] = lowest[c] <= low_energy_factor_ * min_energy_;
+  return new_state_probability_in_batch(new_state_probability_of_kind(counts, low), batch_samples_);
+}
+
+AdaptiveScorer::AdaptiveScorer(const ExploreOptions& o) : engine_(o.sampling.vertices, o.similarity), score_(o) {}
 
 double AdaptiveScorer::add_batch(const std::vector<std::pair<const Points*, double>>& stable) {
-  const int earlier = static_cast<int>(spectra_.size());
   std::vector<SignatureSpectrum> batch;
   std::vector<double> energies;
   for (const auto& [P, E] : stable) {
     batch.push_back(engine_.spectrum(*P));
     energies.push_back(E);
-    min_energy_ = std::min(min_energy_, E);
   }
-  double S = 0.0;
-  if (!batch.empty()) {
-    std::vector<SignatureSpectrum> columns = spectra_;
-    columns.insert(columns.end(), batch.begin(), batch.end());
-    S = importance_score(engine_.cross_matrix(batch, columns), earlier, energies, min_energy_, novelty_distance_);
-  }
+  std::vector<SignatureSpectrum> columns = spectra_;
+  columns.insert(columns.end(), batch.begin(), batch.end());
+  const double score = score_.add_batch(engine_.cross_matrix(batch, columns), energies);
   spectra_.insert(spectra_.end(), batch.begin(), batch.end());
-  return S;
+  return score;
 }
 
 ExploreOptions options_for_knot(const ExploreOptions& options, const KnotRecord& knot) {
@@ -281,7 +332,7 @@ ExploreOptions options_for_knot(const ExploreOptions& options, const KnotRecord&
 namespace {
 
 /// The adaptive rule (paper Section 7.4): batches of samples while the last
-/// batch's importance score is above the threshold and fewer than
+/// batch's score (S or P, see the file comment) is above its threshold and fewer than
 /// max_samples were taken. `batch(begin, end)` makes the samples
 /// [begin, end) available and returns their score, or nothing when they
 /// cannot be had (a replay's stored runs ended: `truncated`).
@@ -299,7 +350,8 @@ AdaptiveRule run_adaptive_rule(const ExploreOptions& o, const std::function<std:
     return out;
   }
   out.scores.push_back(*first);
-  while (out.scores.back() > o.score_threshold && out.samples < o.max_samples) {
+  const double threshold = o.stopping == StoppingRule::Score ? o.score_threshold : o.new_state_threshold;
+  while (out.scores.back() > threshold && out.samples < o.max_samples) {
     const int count = std::min(o.batch_samples, o.max_samples - out.samples);
     const std::optional<double> s = batch(out.samples, out.samples + count);
     if (!s) {
@@ -320,18 +372,27 @@ AdaptiveReplay replay_adaptive(const KnotEntry& fixed, const ExploreOptions& opt
   const int available = static_cast<int>(fixed.runs.size());
   o.initial_samples = std::min(o.initial_samples, available);
   const int energy_col = fixed.equilibria.empty() ? -1 : fixed.attribute_column("energy");
-  AdaptiveScorer scorer(o);
+  require(fixed.similarity.rows() == static_cast<Eigen::Index>(fixed.equilibria.size()),
+          "replay_adaptive: the entry has no similarity matrix of its equilibria");
+  StoppingScore score(o);
+  std::vector<int> seen;  // equilibrium indices in the order of the samples
   const AdaptiveRule rule = run_adaptive_rule(o, [&](int begin, int end) -> std::optional<double> {
     if (end > available) return std::nullopt;
-    std::vector<std::pair<const Points*, double>> stable;
+    std::vector<int> batch;
     for (int k = begin; k < end; ++k) {
       const RunRecord& r = fixed.runs[static_cast<size_t>(k)];
       require(r.sample == k, "replay_adaptive: runs must be in sample order");
-      if (r.equilibrium >= 0)
-        stable.emplace_back(&fixed.equilibria[static_cast<size_t>(r.equilibrium)],
-                            fixed.attributes(r.equilibrium, energy_col));
+      if (r.equilibrium >= 0) batch.push_back(r.equilibrium);
     }
-    return scorer.add_batch(stable);
+    seen.insert(seen.end(), batch.begin(), batch.end());
+    Eigen::MatrixXd sim(static_cast<Eigen::Index>(batch.size()), static_cast<Eigen::Index>(seen.size()));
+    std::vector<double> energies;
+    for (size_t j = 0; j < batch.size(); ++j) {
+      energies.push_back(fixed.attributes(batch[j], energy_col));
+      for (size_t i = 0; i < seen.size(); ++i)
+        sim(static_cast<Eigen::Index>(j), static_cast<Eigen::Index>(i)) = fixed.similarity(batch[j], seen[i]);
+    }
+    return score.add_batch(sim, energies);
   });
   AdaptiveReplay out;
   out.score_history = rule.scores;

@@ -22,6 +22,12 @@
 ///    is D and the interval that of Chao (1987) for an almost complete
 ///    sample, D/(1 − P) ± z √var/(1 − P) with P = Σ f_i e^(−i) / D, at least D.
 ///    The variances are those of Chao's SpadeR (Chao1 and Chao1-bc).
+///  - Good–Turing for one kind of state (Good 1953, for the species of a
+///    subgroup chosen by an attribute of the species, e.g. low energy): the
+///    probability that the next sample lands in an unseen state of the kind
+///    is about f1(kind) / n, the kind's singletons over all samples (in
+///    expectation exactly Σ_{i in kind} p_i (1 − p_i)^n, the kind's unseen
+///    mass after n samples, with f1 counted after n + 1 samples).
 #include <vector>
 
 namespace ek {
@@ -46,5 +52,15 @@ struct UnseenEstimate {
 /// of 0 are ignored). No samples: everything 0. Throws InputError for a
 /// negative count or a confidence outside (0, 1).
 UnseenEstimate estimate_unseen(const std::vector<int>& counts, const UnseenOptions& options = {});
+
+/// Good–Turing for one kind of state: f1(kind) / n, with n the samples of
+/// every state (`counts` as above) and f1(kind) the states seen once whose
+/// `of_kind` entry is true (of_kind[i] describes counts[i]). No samples: 0.
+/// Throws InputError for a negative count or unequal lengths.
+double new_state_probability_of_kind(const std::vector<int>& counts, const std::vector<bool>& of_kind);
+
+/// The chance that `batch` further samples find at least one state not yet
+/// seen, each with chance p: 1 − (1 − p)^batch (p in [0, 1], batch ≥ 0).
+double new_state_probability_in_batch(double p, int batch);
 
 }  // namespace ek

@@ -20,6 +20,18 @@
 /// Sampling continues while S > score_threshold (0.1) and stops at
 /// max_samples (500). A batch without any stable equilibrium scores 0.
 ///
+/// The unseen rule (ours, not the paper's; StoppingRule::Unseen): after each
+/// batch the stable equilibria so far are clustered at δ (complete linkage on
+/// 1 - similarity, as the data set's states); a state is low in energy when
+/// its lowest energy is at most low_energy_factor times the lowest found so
+/// far. With n the stable samples and f1 the low-energy states seen once,
+/// p = f1 / n estimates the chance that the next sample finds a low-energy
+/// state not seen yet (Good–Turing for one kind of state,
+/// ek/analysis/unseen.hpp), and P = 1 - (1 - p)^b that the next batch of b
+/// samples does. Sampling continues while P > new_state_threshold and stops
+/// at max_samples; the score history holds P after each batch (0 for a batch
+/// after which no state is seen once).
+///
 /// Determinism: the samples of a knot come from one walk: sample k continues
 /// from sample k - 1 with a seed derived from the run's seed, the knot's name
 /// and k, so an adaptive run uses exactly the first samples of a fixed-budget
@@ -42,6 +54,15 @@
 
 namespace ek {
 
+/// How adaptive sampling decides that a knot has enough samples (see the file comment).
+enum class StoppingRule {
+  Score,   ///< the importance score S of the last batch; continue while S > score_threshold (the paper's rule)
+  Unseen,  ///< the chance P of a new low-energy state in the next batch; continue while P > new_state_threshold
+};
+std::string to_string(StoppingRule rule);  ///< "score", "unseen"
+/// "score" or "unseen"; InputError otherwise.
+StoppingRule parse_stopping_rule(const std::string& name);
+
 struct ExploreOptions {
   RelaxOptions relax;              ///< material, tolerance, iterations (stiffness: see `stiffness`)
   SampleOptions sampling;          ///< n, fugacities, decorrelation (count and seed are set per batch)
@@ -57,7 +78,10 @@ struct ExploreOptions {
   int initial_samples = 50;        ///< [1]
   int batch_samples = 10;          ///< [1]
   int max_samples = 500;           ///< [1]
-  double score_threshold = 0.1;    ///< [1] continue while S > this
+  StoppingRule stopping = StoppingRule::Score;  ///< adaptive sampling's rule
+  double score_threshold = 0.1;    ///< [1] Score: continue while S > this
+  double new_state_threshold = 0.1;  ///< [1] Unseen: continue while P > this
+  double low_energy_factor = 1.1;  ///< [1] Unseen: a state is low in energy below this times the lowest
   double novelty_distance = 0.1;   ///< [1] δ in 1 - similarity
   SimilarityOptions similarity;    ///< comparisons (orientation reversal on by default)
   /// Compare with mirror images too (similarity.mirror) for the knots whose
@@ -71,7 +95,8 @@ struct ExploreOptions {
   int jobs = 1;                    ///< [1] relaxations in parallel
   ExploreOptions();
   void validate() const;           ///< InputError for impossible values
-  /// "fixed:50" or "adaptive:50+10,max=500,S>0.1,delta=0.1": recorded in the file.
+  /// "fixed:50", "adaptive:50+10,max=500,S>0.1,delta=0.1" (Score) or
+  /// "adaptive:50+10,max=500,unseen<0.1,low=1.1,delta=0.1" (Unseen): recorded in the file.
   std::string sampling_description() const;
 };
 
@@ -106,25 +131,47 @@ ExploreOptions options_for_knot(const ExploreOptions& options, const KnotRecord&
 double importance_score(const Eigen::MatrixXd& batch_similarity, int earlier, const std::vector<double>& batch_energies,
                         double minimum_energy, double novelty_distance);
 
-/// The importance score of successive batches (see the file comment): keeps
-/// the signature spectra of every stable equilibrium seen so far.
+/// The stopping rule's score of successive batches (see the file comment),
+/// fed with similarities: S (Score) or P (Unseen). Keeps the similarities
+/// among every stable equilibrium seen so far (Unseen) and their energies.
+class StoppingScore {
+ public:
+  explicit StoppingScore(const ExploreOptions& options);
+  /// Adds a batch: `similarity` of its stable equilibria (rows) against
+  /// [earlier..., batch...] (columns; entries of later batch members are
+  /// ignored), `energies` theirs. Returns the batch's score.
+  double add_batch(const Eigen::MatrixXd& similarity, const std::vector<double>& energies);
+
+ private:
+  double unseen_score() const;
+  StoppingRule rule_;
+  double novelty_distance_, low_energy_factor_;  ///< [1] δ, and the low-energy factor
+  int batch_samples_;                            ///< [1] b
+  Eigen::MatrixXd similarity_;   ///< Unseen: [m, m] among the stable equilibria so far
+  std::vector<double> energies_;  ///< [energy] theirs
+  double min_energy_ = std::numeric_limits<double>::infinity();
+};
+
+/// The stopping rule on curves: the signature spectra of every stable
+/// equilibrium seen so far give the similarities of a new batch.
 class AdaptiveScorer {
  public:
   explicit AdaptiveScorer(const ExploreOptions& options);
-  /// Adds a batch of stable equilibria (curve, energy) and returns its score S.
+  /// Adds a batch of stable equilibria (curve, energy) and returns its score.
   double add_batch(const std::vector<std::pair<const Points*, double>>& stable);
 
  private:
   SimilarityEngine engine_;
   std::vector<SignatureSpectrum> spectra_;
-  double min_energy_ = std::numeric_limits<double>::infinity();
-  double novelty_distance_;
+  StoppingScore score_;
 };
 
 /// Where adaptive sampling would stop on the runs of a fixed-budget entry
 /// (its samples are the adaptive run's first samples, see sample_seed()), and
 /// the score after each batch; `truncated` when the fixed run has too few
-/// samples to decide.
+/// samples to decide. The similarities are the entry's stored ones (those
+/// explore_knot computes from the same curves and options), so a replay
+/// costs no signature.
 struct AdaptiveReplay {
   int samples_used = 0;
   std::vector<double> score_history;
