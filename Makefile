@@ -13,7 +13,7 @@ CONFIGURE = cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DEK_KNOT_TABLE=$(
             -DPython3_EXECUTABLE=$(PYTHON) $(CMAKE_ARGS)
 CTEST     = cd $(BUILD) && KNOT_TABLE=$(KNOT_TABLE) ctest --output-on-failure -j$(JOBS)
 
-.PHONY: ledger-results ledger-shards help help-experiments deps configure build python test unit sanitize fuzz fuzz-build fuzz-test fuzz-seeds stress slurm-test bench figures experiments studies claims paper-open manifest compare-methods clean \
+.PHONY: ledger-results ledger-shards stopping-truth help help-experiments deps configure build python test unit sanitize fuzz fuzz-build fuzz-test fuzz-seeds stress slurm-test bench figures experiments studies claims paper-open manifest compare-methods clean \
         explorer explorer-screenshots serve browser
 
 help:
@@ -25,6 +25,7 @@ help:
 	@echo "make studies   the studies beside the paper (the periodic braids' link scan) at SCALE, and their checks"
 	@echo "make paper-open  the claims not reproduced (paper_checks/open_claims.cpp), values printed"
 	@echo "make ledger-shards SCALE=sample12|paper10  run the scale shard by shard, committing each finished shard's ledger"
+	@echo "make stopping-truth  both adaptive stopping rules replayed on 30 knots of 500 samples each (docs/results/truth/)"
 	@echo "make ledger-results  Fig. 9, planarity and the sampling summary of the committed ledgers (docs/results/), and their checks"
 	@echo "make compare-methods  the default relaxation method against the direct one (hybrid) on the SCALE data sets"
 	@echo "make explorer  the data-set explorer of SCALE's data set in results/<scale>/explorer/ (docs/explorer.md)"
@@ -152,11 +153,16 @@ EXP         = $(BUILD)/experiments
 include experiments/manifest.mk
 FIGURES     = $(patsubst %,figures/out/%.png,$(PAPER_FIGURES))
 
+# At the paper scale exp_adaptive replays the ground truth of the stopping
+# rules (make stopping-truth) instead of relaxing every knot 500 times.
+TRUTH_DATASET = results/truth/truth.h5
+ARGS_adaptive_paper = --fixed $(TRUTH_DATASET)
+
 $(RESULTS)/%/summary.json: $(EXP)/exp_%
-	$(EXP)/exp_$* --scale $(SCALE) --out $(RESULTS)/$* --jobs $(JOBS)
+	$(EXP)/exp_$* --scale $(SCALE) --out $(RESULTS)/$* --jobs $(JOBS) $(ARGS_$*_$(SCALE))
 
 experiment-%: build
-	$(EXP)/exp_$* --scale $(SCALE) --out $(RESULTS)/$* --jobs $(JOBS)
+	$(EXP)/exp_$* --scale $(SCALE) --out $(RESULTS)/$* --jobs $(JOBS) $(ARGS_$*_$(SCALE))
 
 experiments: build
 	@$(MAKE) --no-print-directory $(foreach e,$(PAPER_EXPERIMENTS),$(RESULTS)/$(e)/summary.json)
@@ -222,6 +228,18 @@ manifest:
 LEDGER_SCALES ?= sample12 paper10
 ledger-shards: build
 	scripts/ledger_shards.sh $(SCALE) --commit --nice
+
+# stopping-truth: the ground truth of the stopping rules (scripts/ledger_shards.sh
+# truth: 30 knots of 5 to 12 crossings, 500 samples each, about 1 h on 2
+# cores; its ledgers committed under docs/results/truth/ledgers/), its
+# shards merged into $(TRUTH_DATASET), both stopping rules replayed on it
+# (exp_adaptive at the paper scale, docs/results/truth/adaptive/) and checked.
+stopping-truth: build
+	scripts/ledger_shards.sh truth --commit --nice
+	@if [ ! -f $(TRUTH_DATASET) ]; then \
+	  $(BUILD)/bin/knots merge results/truth/shards/shard-*-of-04.h5 -o $(TRUTH_DATASET); fi
+	$(EXP)/exp_adaptive --scale paper --fixed $(TRUTH_DATASET) --out docs/results/truth/adaptive --jobs $(JOBS)
+	EK_PAPER_RESULTS=$(CURDIR)/docs/results/truth KNOT_TABLE=$(KNOT_TABLE) $(BUILD)/paper_checks/check_adaptive
 
 ledger-results: build
 	@for s in $(LEDGER_SCALES); do \

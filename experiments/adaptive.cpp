@@ -23,10 +23,19 @@
 // of the full budget within kLowEnergyFactor of the knot's lowest energy,
 // how many the scaled rule finds, and the share of the full budget's samples
 // that ended in the clusters it missed.
-// Writes fixed.h5, adaptive.csv (per knot) and summary.json (docs/results.md).
+// Stopping rules ("rules" in summary.json): the scaled rule and the unseen
+// rule (ExploreOptions::stopping; same batches and cap) on the same random
+// orders: samples used, the stored samples' states and low-energy states
+// found, and how often the 95% interval of the states estimated at the stop
+// holds the stored samples' count. With --fixed DATASET the stored samples
+// are those of a fixed-budget data set made elsewhere, and nothing is
+// relaxed: at the paper scale, the ground truth of scripts/ledger_shards.sh
+// truth (30 knots, 500 samples each; make stopping-truth).
+// Writes fixed.h5 (unless --fixed), adaptive.csv (per knot) and summary.json (docs/results.md).
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <numeric>
 
 #include "adaptive_summary.hpp"
 #include "ek/dataset/run.hpp"
@@ -44,6 +53,54 @@ constexpr int kPaperInitial = 50, kPaperBatch = 10, kPaperBudget = 500;
 constexpr int kShuffles = 20;                           ///< [1] random orders per knot
 constexpr std::uint64_t kShuffleSeed = 0x5EED0ADA97ULL;  ///< fixed: the control is reproducible
 
+/// A stopping rule's replays on the random orders, summed (AdaptiveRuleReplay).
+struct RuleTally {
+  ExploreOptions options;
+  std::vector<double> used;  ///< samples per knot-order
+  long stored = 0, capped = 0, interval_hits = 0, low_interval_hits = 0;
+  int states = 0, low_states = 0;
+  double found = 0.0, low_found = 0.0;  ///< sums over knot-orders, divided by the orders
+
+  /// One order `se` of a knot whose stored samples have `clusters` (`rank`).
+  void add(const KnotEntry& se, const std::vector<StateCluster>& clusters, const std::vector<int>& rank) {
+    const AdaptiveReplay r = replay_adaptive(se, options);
+    const auto stored_here = static_cast<int>(se.runs.size());
+    used.push_back(r.samples_used);
+    stored += stored_here;
+    capped += r.samples_used >= stored_here;
+    const std::set<int> seen = clusters_seen(se, rank, r.samples_used);
+    const LowEnergyCoverage c = low_energy_coverage(se, clusters, rank, seen, kLowEnergyFactor);
+    found += static_cast<double>(seen.size()) / kShuffles;
+    low_found += static_cast<double>(c.found) / kShuffles;
+    const PrefixUnseen u = prefix_unseen(se, r.samples_used, kClusterCut, kLowEnergyFactor);
+    const auto within = [](const UnseenEstimate& e, int truth) { return e.lower <= truth && truth <= e.upper; };
+    interval_hits += within(u.all, static_cast<int>(clusters.size()));
+    low_interval_hits += within(u.low_energy, c.clusters);
+  }
+  /// Adds a knot's state counts (once per knot).
+  void add_truth(int knot_states, int knot_low_states) {
+    states += knot_states;
+    low_states += knot_low_states;
+  }
+  results::AdaptiveRuleReplay summary() const {
+    results::AdaptiveRuleReplay s;
+    s.rule = to_string(options.stopping);
+    s.adaptive = options.sampling_description();
+    const double orders = static_cast<double>(used.size());
+    s.median_samples = median(used);
+    s.mean_samples = orders > 0 ? std::accumulate(used.begin(), used.end(), 0.0) / orders : 0.0;
+    s.capped_share = orders > 0 ? static_cast<double>(capped) / orders : 0.0;
+    s.saved_share = stored > 0 ? 1.0 - std::accumulate(used.begin(), used.end(), 0.0) / static_cast<double>(stored) : 0.0;
+    s.states = states;
+    s.states_found_mean = found;
+    s.low_energy_states = low_states;
+    s.low_energy_states_found_mean = low_found;
+    s.interval_coverage = orders > 0 ? static_cast<double>(interval_hits) / orders : 0.0;
+    s.low_energy_interval_coverage = orders > 0 ? static_cast<double>(low_interval_hits) / orders : 0.0;
+    return s;
+  }
+};
+
 /// What the replays of every knot add up to (the summary's sums).
 struct Tally {
   const ExploreOptions& scaled;  ///< the scaled rule
@@ -53,6 +110,7 @@ struct Tally {
   int stopped = 0;
   std::vector<int> used, paper_used;  ///< samples per knot; the paper rule's exact stops only
   double shuffled_found = 0.0, shuffled_used = 0.0;  ///< sums over the random orders
+  std::vector<RuleTally> rules;  ///< the scaled rule and the unseen rule on the same orders
 
   /// The paper's rule replayed on the stored runs (bounds where it would sample past them).
   void paper_rule(const KnotEntry& e, const AdaptiveReplay& pr) {
@@ -66,10 +124,11 @@ struct Tally {
     }
   }
 
-  /// The scaled rule on kShuffles random orders of the knot's runs.
+  /// The scaled rule, and every rule of `rules`, on kShuffles random orders of the knot's runs.
   void shuffled(const std::string& name, const KnotEntry& e, const std::vector<StateCluster>& clusters,
-                const std::vector<int>& rank) {
+                const std::vector<int>& rank, int low_states) {
     std::uint64_t state = knot_seed(kShuffleSeed, name);  // per knot: independent of the knot set
+    for (RuleTally& r : rules) r.add_truth(static_cast<int>(clusters.size()), low_states);
     for (int t = 0; t < kShuffles; ++t) {
       const KnotEntry se = shuffled_runs(e, state);
       const AdaptiveReplay sr = replay_adaptive(se, scaled);
@@ -77,6 +136,7 @@ struct Tally {
           low_energy_coverage(se, clusters, rank, clusters_seen(se, rank, sr.samples_used), kLowEnergyFactor);
       shuffled_found += static_cast<double>(c.found) / kShuffles;
       shuffled_used += static_cast<double>(sr.samples_used) / kShuffles;
+      for (RuleTally& r : rules) r.add(se, clusters, rank);
     }
   }
 
@@ -107,7 +167,7 @@ struct Tally {
     for (const auto& m : cov.missed)
       sum.missed.push_back({name, clusters[static_cast<size_t>(m.rank)].energy_min, clusters.front().energy_min,
                             static_cast<long>(m.samples)});
-    shuffled(name, e, clusters, rank);
+    shuffled(name, e, clusters, rank, cov.clusters);
     std::string scores;
     for (double x : r.score_history) scores += (scores.empty() ? "" : ";") + Csv::num(x, 4);
     return {name, std::to_string(e.runs.size()), std::to_string(r.samples_used), Csv::flag(by_score),
@@ -136,6 +196,7 @@ struct Tally {
     pr.saved_share_lower_bound = share_saved(static_cast<double>(paper_total), paper_fixed);
     pr.saved_share_upper_bound = share_saved(static_cast<double>(paper_optimistic), paper_fixed);
     pr.median_samples_of_stopped = paper_used.empty() ? 0 : paper_used[paper_used.size() / 2];
+    for (const RuleTally& r : rules) sum.rules.push_back(r.summary());
   }
 };
 
@@ -148,48 +209,82 @@ void report(const results::AdaptiveSummary& sum, const Tally& t, int stored_samp
             << " (" << pr.knots_stopped_within_stored << "/" << t.used.size() << " knots stop within the "
             << stored_samples << " stored samples); in random sample orders it finds " << t.shuffled_found << "/"
             << sum.low_energy_clusters << " and saves " << sum.shuffled.saved_share_mean << std::endl;
+  for (const auto& r : sum.rules)
+    std::cout << "exp_adaptive: rule " << r.adaptive << " on " << sum.shuffled.orders_per_knot
+              << " random orders: median " << r.median_samples << " samples (mean " << r.mean_samples << ", "
+              << r.capped_share << " at the cap), finds " << r.states_found_mean << "/" << r.states << " states and "
+              << r.low_energy_states_found_mean << "/" << r.low_energy_states
+              << " low-energy ones; interval coverage " << r.interval_coverage << " (low-energy "
+              << r.low_energy_interval_coverage << ")" << std::endl;
+}
+
+/// The stored samples' data set and its budget: run here, or --fixed (nothing relaxed).
+std::string fixed_samples(const Args& a, const std::string& fixed, ExploreOptions& o,
+                          const std::vector<const KnotRecord*>& knots) {
+  if (!fixed.empty()) {
+    const DatasetMetadata m = DatasetReader(fixed).metadata();
+    const std::string prefix = "fixed:", sampling = m.sampling.value_or("");
+    if (sampling.rfind(prefix, 0) != 0 || sampling.find(',') != std::string::npos)
+      throw InputError("--fixed: '" + fixed + "' is not a fixed-budget data set without burn-in (its sampling is '" +
+                       sampling + "')");
+    o.samples = std::stoi(sampling.substr(prefix.size()));
+    return fixed;
+  }
+  if (a.scale == Scale::Paper)
+    throw InputError("at the paper scale exp_adaptive replays the ground truth of the stopping rules: give --fixed "
+                     "DATASET (make stopping-truth makes it)");
+  DatasetRunOptions ro;
+  ro.explore = o;
+  ro.knots = knots;
+  ro.output = a.out + "/fixed.h5";
+  run_dataset(ro);
+  return ro.output;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  return run_experiment(argc, argv, "exp_adaptive", "Adaptive sampling against a fixed sample budget.", [](const Args& a) {
+  std::string fixed;
+  const std::vector<ExtraOption> extra = {
+      {"--fixed", "[--fixed DATASET]", [&](const std::string& v) { fixed = v; }, {}}};
+  return run_experiment(argc, argv, "exp_adaptive", "Adaptive sampling against a fixed sample budget.", [&](const Args& a) {
     ExploreOptions o = base_options(a);
     o.samples = by_scale(a, 60, 150, kPaperBudget);
     o.adaptive = false;
+    const auto knots = KnotTable::global().up_to_crossings(by_scale(a, 6, 7, 12));
+    if (fixed.empty())
+      announce(a, "exp_adaptive",
+               std::to_string(knots.size()) + " knots with a budget of " + std::to_string(o.samples) + " samples",
+               static_cast<double>(knots.size()) * o.samples * kSecondsPerRelaxation / a.jobs);
+    const std::string stored = fixed_samples(a, fixed, o, knots);
     ExploreOptions scaled = o;
     scaled.adaptive = true;
-    scaled.initial_samples = by_scale(a, 15, 30, kPaperInitial);
+    scaled.initial_samples = std::min(by_scale(a, 15, 30, kPaperInitial), o.samples);
     scaled.batch_samples = by_scale(a, 5, 10, kPaperBatch);
     scaled.max_samples = o.samples;
     ExploreOptions paper = scaled;
     paper.initial_samples = kPaperInitial;
     paper.batch_samples = kPaperBatch;
     paper.max_samples = kPaperBudget;
-    const auto knots = KnotTable::global().up_to_crossings(by_scale(a, 6, 7, 12));
-    announce(a, "exp_adaptive",
-             std::to_string(knots.size()) + " knots with a budget of " + std::to_string(o.samples) +
-                 " samples; adaptive " + scaled.sampling_description(),
-             static_cast<double>(knots.size()) * o.samples * kSecondsPerRelaxation / a.jobs);
-    DatasetRunOptions ro;
-    ro.explore = o;
-    ro.knots = knots;
-    ro.output = a.out + "/fixed.h5";
-    run_dataset(ro);
+    ExploreOptions unseen = scaled;
+    unseen.stopping = StoppingRule::Unseen;
+    unseen.low_energy_factor = kLowEnergyFactor;  // the low-energy states it looks for are those measured
     results::AdaptiveSummary sum;
     sum.scale = a.scale_name;
     sum.budget = o.samples;
     sum.adaptive = scaled.sampling_description();
     sum.score_threshold = scaled.score_threshold;
     sum.low_energy_factor = kLowEnergyFactor;
-    Tally tally{scaled, paper, sum, 0, 0, 0, 0, {}, {}, 0.0, 0.0};
+    sum.fixed_source = fixed;
+    Tally tally{scaled, paper, sum, 0, 0, 0, 0, {}, {}, 0.0, 0.0, {}};
+    tally.rules = {RuleTally{scaled, {}, 0, 0, 0, 0, 0, 0, 0.0, 0.0}, RuleTally{unseen, {}, 0, 0, 0, 0, 0, 0, 0.0, 0.0}};
     Csv csv(a.out + "/adaptive.csv", {"knot", "fixed_samples", "adaptive_samples", "stopped_by_score", "low_clusters",
                                       "low_clusters_found", "scores"});
-    const DatasetReader reader(ro.output);
+    const DatasetReader reader(stored);
     for (const auto& name : reader.knot_names()) csv.row(tally.add(name, reader.read(name)));
     csv.commit();
     tally.finish(o.samples);
     write_summary(a, sum);
     report(sum, tally, o.samples);
-  });
+  }, extra);
 }

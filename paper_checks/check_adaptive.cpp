@@ -71,3 +71,40 @@ TEST(PaperAdaptive, ReportsLowEnergyCoverage) {
   EXPECT_NEAR(s.missed_sample_share, static_cast<double>(in_missed) / static_cast<double>(s.fixed_simulations),
               1e-12);
 }
+
+// Ours, not the paper's: the unseen stopping rule (docs/models.md, "Stopping
+// when no low-energy state is likely to be missing") beside the score on the
+// same random orders of the stored samples. At every scale the replays'
+// numbers must be consistent (found at most the states there are, shares in
+// [0, 1]). Against the ground truth (budget 500: make stopping-truth) the
+// unseen rule must use at most 90 samples per knot in the median (the
+// paper's median) and find at least as many of the low-energy states as the
+// score does, on average over the same orders (no tolerance).
+TEST(StoppingRules, UnseenRuleAgainstTheScoreOnTheSameOrders) {
+  const auto s = ek::paper::summary<AdaptiveSummary>("adaptive");
+  ASSERT_EQ(s.rules.size(), 2u);
+  const auto& score = s.rules[0];
+  const auto& unseen = s.rules[1];
+  EXPECT_EQ(score.rule, "score");
+  EXPECT_EQ(unseen.rule, "unseen");
+  for (const auto& r : s.rules) {
+    std::cout << "[ measured ] " << r.adaptive << ": median " << r.median_samples << " samples (mean "
+              << r.mean_samples << ", " << r.capped_share << " at the cap, saves " << r.saved_share << "), finds "
+              << r.states_found_mean << " of " << r.states << " states and " << r.low_energy_states_found_mean
+              << " of " << r.low_energy_states << " low-energy ones; its 95% interval at the stop holds the count "
+              << r.interval_coverage << " (low-energy " << r.low_energy_interval_coverage << ")" << std::endl;
+    EXPECT_LE(r.states_found_mean, r.states + 1e-9);
+    EXPECT_LE(r.low_energy_states_found_mean, r.low_energy_states + 1e-9);
+    EXPECT_GE(r.low_energy_states_found_mean, 0.0);
+    for (double share : {r.capped_share, r.saved_share, r.interval_coverage, r.low_energy_interval_coverage}) {
+      EXPECT_GE(share, 0.0);
+      EXPECT_LE(share, 1.0);
+    }
+  }
+  EXPECT_EQ(score.states, unseen.states);
+  EXPECT_EQ(score.low_energy_states, unseen.low_energy_states);
+  if (s.budget >= 500) {
+    EXPECT_LE(unseen.median_samples, 90.0);
+    EXPECT_GE(unseen.low_energy_states_found_mean, score.low_energy_states_found_mean);
+  }
+}

@@ -42,6 +42,29 @@ EK_JSON_FIELDS(AdaptivePaperRule, adaptive, budget, stored_samples, knots_stoppe
                simulations_upper_bound, saved_share_lower_bound, saved_share_upper_bound, low_energy_clusters,
                low_energy_clusters_found, median_samples_of_stopped)
 
+/// A stopping rule replayed on the random orders of `shuffled` (the same
+/// orders for every rule), against the states of the stored samples at the
+/// cut: the ground truth of the stopping rules when the budget is 500.
+struct AdaptiveRuleReplay {
+  std::string rule;                         ///< "score" (the paper's, as reconstructed) or "unseen"
+  std::string adaptive;                     ///< its sampling description
+  double median_samples = 0.0;              ///< [samples] over knots and orders
+  double mean_samples = 0.0;                ///< [samples]
+  double capped_share = 0.0;                ///< [1] knot-orders that used every stored sample
+  double saved_share = 0.0;                 ///< [1] 1 - samples used / samples stored
+  int states = 0;                           ///< [1] the stored samples' states, summed over knots
+  double states_found_mean = 0.0;           ///< [1] of them found, summed over knots, mean over orders
+  int low_energy_states = 0;                ///< [1] states within low_energy_factor of a knot's lowest
+  double low_energy_states_found_mean = 0.0;  ///< [1] summed over knots, mean over orders
+  /// [1] knot-orders whose 95% Chao1 interval at the stop (the prefix
+  /// clustered alone) holds the stored samples' state count
+  double interval_coverage = 0.0;
+  double low_energy_interval_coverage = 0.0;  ///< [1] the same for the low-energy states
+};
+EK_JSON_FIELDS(AdaptiveRuleReplay, rule, adaptive, median_samples, mean_samples, capped_share, saved_share, states,
+               states_found_mean, low_energy_states, low_energy_states_found_mean, interval_coverage,
+               low_energy_interval_coverage)
+
 struct AdaptiveSummary {
   std::string scale;
   int knots = 0;                            ///< [1]
@@ -65,10 +88,12 @@ struct AdaptiveSummary {
   std::vector<AdaptiveMissedCluster> missed;  ///< one per missed low-energy cluster
   AdaptiveShuffled shuffled;
   AdaptivePaperRule paper_rule;
+  std::string fixed_source;                  ///< the stored samples: "" (run here) or the --fixed data set
+  std::vector<AdaptiveRuleReplay> rules;     ///< both stopping rules on the same random orders
 };
 EK_JSON_FIELDS(AdaptiveSummary, scale, knots, budget, adaptive, score_threshold, fixed_simulations,
                adaptive_simulations, saved_share, median_samples, stopped_by_score_share, low_energy_factor,
                low_energy_clusters, low_energy_clusters_found, missed_samples, missed_sample_share, missed, shuffled,
-               paper_rule)
+               paper_rule, fixed_source, rules)
 
 }  // namespace ek::results

@@ -62,6 +62,28 @@ TEST(States, ClustersSeenInAPrefix) {
   EXPECT_TRUE(clusters_seen(e, rank, 0).empty());
 }
 
+// The six runs as a run that stopped there sees them: stable runs 0, 1, 3,
+// 4, 5 (equilibria 0, 2, 1, 3, 1) in the states {0, 1, 1}, {2}, {3} at energies
+// 1.0, 1.1, 2.0: n = 5, D = 3, f1 = 2, f2 = 0, so Chao1 = 3 + (4/5)·2·1/2 =
+// 3.8; low energy (factor 1.2): the counts 3 and 1, n = 4, D = 2, one
+// singleton and no doubleton: 2. The first two samples: two singletons,
+// 2 + (1/2)·2·1/2 = 2.5.
+TEST(States, UnseenOfAPrefixClusteredAlone) {
+  const KnotEntry e = entry();
+  const PrefixUnseen all = prefix_unseen(e, 6, 0.05, 1.2);
+  EXPECT_EQ(all.all.samples, 5);
+  EXPECT_EQ(all.all.observed, 3);
+  EXPECT_EQ(all.all.singletons, 2);
+  EXPECT_NEAR(all.all.states, 3.8, 1e-12);
+  EXPECT_EQ(all.low_energy.samples, 4);
+  EXPECT_EQ(all.low_energy.observed, 2);
+  EXPECT_DOUBLE_EQ(all.low_energy.states, 2.0);
+  const PrefixUnseen two = prefix_unseen(e, 2, 0.05, 1.2);
+  EXPECT_EQ(two.all.observed, 2);
+  EXPECT_NEAR(two.all.states, 2.5, 1e-12);
+  EXPECT_EQ(prefix_unseen(e, 0, 0.05, 1.2).all.samples, 0);
+}
+
 // Low-energy (factor 1.2 of the minimum 1.0): clusters 0 and 1. The first
 // sample finds cluster 0 only; cluster 1 holds one of the six stored runs.
 TEST(States, LowEnergyCoverage) {

@@ -290,21 +290,30 @@ double StoppingScore::add_batch(const Eigen::MatrixXd& sim, const std::vector<do
   return rule_ == StoppingRule::Score ? score : unseen_score();
 }
 
-// P of the file comment: the states at δ, their sample counts, which are low in energy.
-double StoppingScore::unseen_score() const {
-  if (energies_.empty()) return 0.0;
-  std::vector<int> labels(energies_.size(), 0);
-  if (energies_.size() > 1) labels = cut_dendrogram(complete_linkage_from_similarity(similarity_), novelty_distance_);
+StateCounts state_counts(const Eigen::MatrixXd& similarity, const std::vector<double>& energies, double cut) {
+  require(similarity.rows() == similarity.cols() && similarity.rows() == static_cast<Eigen::Index>(energies.size()),
+          "state_counts: one energy per row of a square similarity matrix expected");
+  StateCounts out;
+  if (energies.empty()) return out;
+  std::vector<int> labels(energies.size(), 0);
+  if (energies.size() > 1) labels = cut_dendrogram(complete_linkage_from_similarity(similarity), cut);
   const size_t states = static_cast<size_t>(*std::max_element(labels.begin(), labels.end()) + 1);
-  std::vector<int> counts(states, 0);
-  std::vector<double> lowest(states, std::numeric_limits<double>::infinity());
+  out.counts.assign(states, 0);
+  out.lowest.assign(states, std::numeric_limits<double>::infinity());
   for (size_t i = 0; i < labels.size(); ++i) {
-    ++counts[static_cast<size_t>(labels[i])];
-    lowest[static_cast<size_t>(labels[i])] = std::min(lowest[static_cast<size_t>(labels[i])], energies_[i]);
+    const auto c = static_cast<size_t>(labels[i]);
+    ++out.counts[c];
+    out.lowest[c] = std::min(out.lowest[c], energies[i]);
   }
-  std::vector<bool> low(states);
-  for (size_t c = 0; c < states; ++c) low[c] = lowest[c] <= low_energy_factor_ * min_energy_;
-  return new_state_probability_in_batch(new_state_probability_of_kind(counts, low), batch_samples_);
+  return out;
+}
+
+// P of the file comment.
+double StoppingScore::unseen_score() const {
+  const StateCounts s = state_counts(similarity_, energies_, novelty_distance_);
+  std::vector<bool> low(s.counts.size());
+  for (size_t c = 0; c < low.size(); ++c) low[c] = s.lowest[c] <= low_energy_factor_ * min_energy_;
+  return new_state_probability_in_batch(new_state_probability_of_kind(s.counts, low), batch_samples_);
 }
 
 AdaptiveScorer::AdaptiveScorer(const ExploreOptions& o) : engine_(o.sampling.vertices, o.similarity), score_(o) {}

@@ -39,6 +39,31 @@ KnotEntry shuffled_runs(const KnotEntry& e, std::uint64_t& state) {
   return out;
 }
 
+PrefixUnseen prefix_unseen(const KnotEntry& e, int samples, double cut, double energy_factor) {
+  std::vector<int> members;  // equilibrium of each stable run in the prefix
+  for (const RunRecord& r : e.runs)
+    if (r.sample < samples && r.equilibrium >= 0) members.push_back(r.equilibrium);
+  PrefixUnseen out;
+  if (members.empty()) return out;
+  const int ec = e.attribute_column("energy");
+  const auto m = static_cast<Eigen::Index>(members.size());
+  Eigen::MatrixXd sim(m, m);
+  std::vector<double> energies;
+  for (Eigen::Index i = 0; i < m; ++i) {
+    energies.push_back(e.attributes(members[static_cast<size_t>(i)], ec));
+    for (Eigen::Index j = 0; j < m; ++j)
+      sim(i, j) = e.similarity(members[static_cast<size_t>(i)], members[static_cast<size_t>(j)]);
+  }
+  const StateCounts s = state_counts(sim, energies, cut);
+  const double lowest = *std::min_element(energies.begin(), energies.end());
+  std::vector<int> low;
+  for (size_t c = 0; c < s.counts.size(); ++c)
+    if (s.lowest[c] <= energy_factor * lowest) low.push_back(s.counts[c]);
+  out.all = estimate_unseen(s.counts);
+  out.low_energy = estimate_unseen(low);
+  return out;
+}
+
 LowEnergyCoverage low_energy_coverage(const KnotEntry& e, const std::vector<StateCluster>& clusters,
                                       const std::vector<int>& rank, const std::set<int>& seen,
                                       double energy_factor) {

@@ -131,6 +131,16 @@ ExploreOptions options_for_knot(const ExploreOptions& options, const KnotRecord&
 double importance_score(const Eigen::MatrixXd& batch_similarity, int earlier, const std::vector<double>& batch_energies,
                         double minimum_energy, double novelty_distance);
 
+/// Samples that fell into each state, and each state's lowest energy, when
+/// equilibria with these similarities ([m, m]) and energies ([m]) are
+/// clustered at `cut` (complete linkage on 1 - similarity, as the data set's
+/// states); states numbered by their first member. m = 0: no state.
+struct StateCounts {
+  std::vector<int> counts;     ///< [samples] per state
+  std::vector<double> lowest;  ///< [energy] per state
+};
+StateCounts state_counts(const Eigen::MatrixXd& similarity, const std::vector<double>& energies, double cut);
+
 /// The stopping rule's score of successive batches (see the file comment),
 /// fed with similarities: S (Score) or P (Unseen). Keeps the similarities
 /// among every stable equilibrium seen so far (Unseen) and their energies.

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "ek/analysis/search.hpp"
+#include "ek/analysis/unseen.hpp"
 #include "ek/dataset/dataset_file.hpp"
 #include "ek/dataset/pipeline.hpp"
 
@@ -51,6 +52,17 @@ struct LowEnergyCoverage {
 LowEnergyCoverage low_energy_coverage(const KnotEntry& entry, const std::vector<StateCluster>& clusters,
                                       const std::vector<int>& rank, const std::set<int>& seen,
                                       double energy_factor);
+
+/// What a run that stopped after the first `samples` samples would estimate
+/// it has not seen (estimate_unseen, ek/analysis/unseen.hpp): the stable
+/// equilibria of those runs clustered alone at `cut` (state_counts on the
+/// stored similarities), over every state (`all`) and over the states whose
+/// lowest energy is at most `energy_factor` times the prefix's lowest
+/// (`low_energy`, their samples only, as ledger_unseen).
+struct PrefixUnseen {
+  UnseenEstimate all, low_energy;
+};
+PrefixUnseen prefix_unseen(const KnotEntry& entry, int samples, double cut, double energy_factor);
 
 /// A knot puzzle (Section 8.3): two distinct stable states of one knot with
 /// the same writhe within a tolerance. The joined wire cannot change its link
