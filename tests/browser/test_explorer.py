@@ -156,6 +156,29 @@ class Explorer(ExplorerCase):
         img = np.asarray(Image.open(io.BytesIO(canvas.screenshot_as_png)).convert("RGB")).astype(int)
         return float(np.mean(np.abs(img - 255).sum(axis=2) > 30))
 
+    def test_state_pictures_are_the_clusters_by_energy_and_open_3d(self):
+        # one picture per distinct state at the cut (Fig. 2's row), in the
+        # order of `knots cluster` (by energy), each of its representative
+        # and drawn; a picture opens that equilibrium in 3D
+        self.open_knot_by_click()
+        slider = self.d.find_element(By.ID, "cut-slider")
+        for steps in (0, 100):
+            slider.send_keys(Keys.HOME)
+            if steps:
+                slider.send_keys(Keys.ARROW_RIGHT * steps)
+            cut = slider.get_attribute("value")
+            cli = knots_json("cluster", DATASET, self.knot, "--cut", cut)["clusters"]
+            shown = self.d.find_elements(By.CSS_SELECTOR, "#state-gallery figure.state")
+            self.assertEqual([int(f.get_attribute("data-index")) for f in shown],
+                             [c["representative"] for c in cli][:40], f"cut {cut}")
+        for figure in shown:
+            self.assertGreater(self.canvas_coverage(figure), 0.02, "a state's picture must show its tube")
+        first = shown[0].get_attribute("data-index")
+        shown[0].click()
+        self.browser.wait_ready("view")
+        self.d.find_element(By.CSS_SELECTOR, f'.viewer[data-index="{first}"]')
+        self.assertEqual(self.browser.console_errors(), [])
+
     def test_clicked_point_opens_a_3d_view_that_draws(self):
         self.open_knot_by_click()
         point = self.d.find_elements(By.CSS_SELECTOR, "#mds circle.point")[-1]

@@ -1,12 +1,14 @@
 // View: one knot type. Its MDS map and dendrogram coloured by the clusters at
 // a cut the slider sets (reclustered here exactly as `knots cluster` does),
 // the count of distinct states, and its equilibria with their attributes
-// (sortable); a point or a row opens the equilibrium in 3D. A site of
+// (sortable), and a row of pictures of its states at the cut sorted by energy
+// (gallery.js); a point, a row or a picture opens the equilibrium in 3D. A site of
 // ledgers shows the knot's states with a kept curve (their representatives).
 import { loadKnot, knotAttribute, attributeNames, fromLedger } from "./data.js";
 import { clustersAtCut } from "./clusters.js";
 import { mdsPlot } from "./mds.js";
 import { dendrogramPlot } from "./dendrogram.js";
+import { stateGallery } from "./gallery.js";
 import { el, fmt, sortableTable, clusterColor, ATTRIBUTE_LABELS, ready } from "./util.js";
 
 export async function showKnot(main, site, name) {
@@ -41,6 +43,7 @@ export async function showKnot(main, site, name) {
   const number = el("input", { type: "number", id: "cut-value", min: 0, max: 1, step: 0.001, value: cut,
     onchange: (e) => { const c = Number(e.target.value); if (c >= 0 && c <= 1) setCut(c); } });
   const count = el("strong", { id: "cluster-count" });
+  const gallery = stateGallery(k, site.dataset.radius, (i) => value(i, "energy"), open);
   const attrs = attributeNames(site, k).filter((a) => a !== "sample");
   let clusters = null;
   const rows = Array.from({ length: m }, (_, i) => ({ i }));
@@ -64,6 +67,7 @@ export async function showKnot(main, site, name) {
     const reps = new Set(clusters.clusters.map((x) => x.representative));
     mds.color(clusters.rank, reps);
     dendro.setCut(cut, clusters.rank);
+    gallery.render(clusters);
     count.textContent = `${clusters.count}`;
     count.dataset.cut = String(cut);
     eqTable.render(rows);
@@ -71,8 +75,10 @@ export async function showKnot(main, site, name) {
   main.append(
     el("div", { class: "cut" }, el("label", { for: "cut-slider" }, "cut (1 − similarity)"), slider, number,
       el("span", {}, count, " distinct states (clusters) at this cut; the largest point of a colour is its lowest-energy member")),
+    el("h3", {}, "States at this cut, lowest energy first (each its lowest-energy member; click one for 3D)"),
+    gallery.node,
     el("div", { class: "row" }, el("div", { class: "panel" }, mds.node), el("div", { class: "panel" }, dendro.node)),
-    el("h3", {}, `${ledger ? "States (representatives" : "Equilibria ("}; click one for 3D; bold: the lowest energy of its cluster)`),
+    el("h3", {}, `${ledger ? "States (representatives; " : "Equilibria ("}click one for 3D; bold: the lowest energy of its cluster)`),
     el("div", { class: "scroll" }, eqTable.node));
   setCut(cut);
   ready("knot");
