@@ -135,6 +135,10 @@ TEST(Cli, BadInputExitsWithStatus2AndOneLine) {
   expect_bad_input("embed 3_1 --tilt nan -o " + dir + "/x.obj", "--tilt: 'nan' is not a finite number");
   expect_bad_input("embed 3_1 --tilt 90 --strand-spacing 1.5 -o " + dir + "/x.obj", "too large for a tilted coil");
   expect_bad_input("embed 3_1 -o " + dir + "/x.ply", "unknown curve format");
+  expect_bad_input("explore 3_1 --stopping unseen -o " + dir + "/x.h5", "--stopping needs --adaptive");
+  expect_bad_input("explore 3_1 --adaptive --stopping chao -o " + dir + "/x.h5", "unknown stopping rule 'chao'");
+  expect_bad_input("explore 3_1 --adaptive --stopping unseen --new-state-threshold 1 -o " + dir + "/x.h5",
+                   "new-state threshold must be in [0, 1)");
   std::filesystem::remove_all(dir);
 }
 
@@ -273,4 +277,12 @@ TEST(Cli, ReadmeAndCliReferenceListEveryCommand) {
     EXPECT_NE(cli.find("| [`" + c + "`](#knots-" + c + ")"), std::string::npos) << "docs/cli.md's table lacks " << c;
     EXPECT_NE(cli.find("### `knots " + c + "`"), std::string::npos) << "docs/cli.md has no section for " << c;
   }
+}
+
+// `knots --version`: the project version of CMakeLists.txt (config.hpp) and the source commit.
+TEST(Cli, VersionNamesTheProjectVersionAndCommit) {
+  const auto v = run("--version");
+  ASSERT_EQ(v.status, 0) << v.err;
+  EXPECT_EQ(v.out.rfind(std::string("knots ") + ek::config::kVersion + " (commit ", 0), 0u) << v.out;
+  EXPECT_EQ(run("--version extra").status, 2);  // an unknown command, as before
 }

@@ -8,7 +8,9 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "ek/core/commit.hpp"
 #include "ek/core/errors.hpp"
+#include "ek/core/paths.hpp"
 
 namespace {
 
@@ -28,7 +30,7 @@ const std::vector<Command>& commands() {
 }
 
 void print_usage(std::ostream& out) {
-  out << "usage: knots COMMAND [ARGS] (knots COMMAND --help for details)\n\ncommands:\n";
+  out << "usage: knots COMMAND [ARGS] (knots COMMAND --help for details), knots --version\n\ncommands:\n";
   for (const auto& c : commands()) {
     std::string name = c.name;
     name.resize(12, ' ');
@@ -39,6 +41,10 @@ void print_usage(std::ostream& out) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc == 2 && !std::strcmp(argv[1], "--version")) {
+    std::cout << "knots " << ek::project_version() << " (commit " << ek::source_commit() << ")" << std::endl;
+    return 0;
+  }
   if (argc < 2 || !std::strcmp(argv[1], "-h") || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "help")) {
     print_usage(argc < 2 ? std::cerr : std::cout);
     return argc < 2 ? 2 : 0;
