@@ -179,6 +179,17 @@ class Explorer(ExplorerCase):
         self.d.find_element(By.CSS_SELECTOR, f'.viewer[data-index="{first}"]')
         self.assertEqual(self.browser.console_errors(), [])
 
+    def test_unseen_states_as_the_cli_estimates_them(self):
+        # the knot page's estimate of the states not yet seen, at the site's
+        # cut, is `knots cluster --json`'s at that cut
+        self.open_knot_by_click()
+        cut = self.d.find_element(By.ID, "cut-slider").get_attribute("value")
+        u = knots_json("cluster", DATASET, self.knot, "--cut", cut)["unseen"]
+        text = self.d.find_element(By.ID, "unseen").text
+        js_round = lambda x: int(x + 0.5)  # Math.round of a positive number (Python's round() ties to even)
+        self.assertIn(f"{u['found']} found, about {js_round(u['estimated'])} in all", text)
+        self.assertIn(f"interval {js_round(u['lower'])} to {js_round(u['upper'])}", text)
+
     def test_clicked_point_opens_a_3d_view_that_draws(self):
         self.open_knot_by_click()
         point = self.d.find_elements(By.CSS_SELECTOR, "#mds circle.point")[-1]

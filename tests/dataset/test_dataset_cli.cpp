@@ -96,6 +96,13 @@ TEST(DatasetCli, EndToEndQueryClusterExport) {
   const auto clusters = c.json()["clusters"];  // keep the parsed object alive while iterating
   for (const auto& cl : clusters) members += cl["members"].size();
   EXPECT_EQ(members, reader.read("4_1").equilibria.size());
+  // and what they leave unseen: the states found are the clusters, the samples the equilibria
+  const auto unseen = c.json()["unseen"];
+  EXPECT_EQ(unseen["found"].get<size_t>(), clusters.size());
+  EXPECT_EQ(unseen["samples"].get<size_t>(), members);
+  EXPECT_GE(unseen["estimated"].get<double>(), unseen["found"].get<double>());
+  EXPECT_LE(unseen["lower"].get<double>(), unseen["upper"].get<double>());
+  EXPECT_LE(c.json()["unseen_low_energy"]["found"].get<size_t>(), clusters.size());
   // export
   const auto x = run("export " + file + " 4_1 0 -o " + dir + "/eq.obj");
   ASSERT_EQ(x.status, 0) << x.err;

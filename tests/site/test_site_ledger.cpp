@@ -21,7 +21,7 @@ using ek::clitest::run;
 using ek::clitest::temp_dir;
 using namespace ek;
 namespace fs = std::filesystem;
-using Json = nlohmann::json;
+using PlainJson = nlohmann::json;  // key order ignored in comparisons
 
 namespace {
 
@@ -42,7 +42,7 @@ SmallRun small_run(const std::string& name) {
   return r;
 }
 
-Json site_json(const SiteFiles& files) { return Json::parse(files.at("data/site.json")); }
+PlainJson site_json(const SiteFiles& files) { return PlainJson::parse(files.at("data/site.json")); }
 
 template <class T>
 T read_at(const std::string& bin, size_t offset) {
@@ -64,7 +64,7 @@ const char* const kTableFields[] = {"name",       "file",          "crossing_num
                                     "lowest_energy", "largest_threedim", "min_total_curvature", "milnor_ratio",
                                     "adaptive",    "complete",     "offset"};
 
-void expect_same_table(const Json& a, const Json& b, const std::string& what) {
+void expect_same_table(const PlainJson& a, const PlainJson& b, const std::string& what) {
   ASSERT_EQ(a["knots"].size(), b["knots"].size()) << what;
   for (size_t i = 0; i < a["knots"].size(); ++i)
     for (const char* f : kTableFields) EXPECT_EQ(a["knots"][i][f], b["knots"][i][f]) << what << ": knot " << i << " " << f;
@@ -83,7 +83,7 @@ TEST(SiteLedger, KnotTableEqualsTheDataSetsSite) {
   const Ledger ledger = read_ledger(r.ledger);
   for (double cut : {0.05, 0.3}) {
     const SiteFiles from_data = build_site(r.data, at_cut(cut)), from_ledger = build_site(r.ledger, at_cut(cut));
-    const Json a = site_json(from_data), b = site_json(from_ledger);
+    const PlainJson a = site_json(from_data), b = site_json(from_ledger);
     expect_same_table(a, b, "cut " + std::to_string(cut));
     EXPECT_EQ(from_ledger.at("data/attributes.bin"), from_data.at("data/attributes.bin"));
     EXPECT_EQ(a["dataset"]["source"], "dataset");
@@ -92,7 +92,7 @@ TEST(SiteLedger, KnotTableEqualsTheDataSetsSite) {
     EXPECT_EQ(b["dataset"]["curves_per_knot"], 2);
     EXPECT_FALSE(a["knots"][0].contains("shown_rows"));
   }
-  const Json b = site_json(build_site(r.ledger, at_cut(0.05)));
+  const PlainJson b = site_json(build_site(r.ledger, at_cut(0.05)));
   ASSERT_EQ(b["knots"].size(), 2u);
   EXPECT_EQ(b["knots"][1]["name"], "5_2");
   EXPECT_EQ(b["knots"][1]["distinct"], ledger.entries[1].states.size());
@@ -109,11 +109,11 @@ TEST(SiteLedger, KnotFilesHoldTheKeptStates) {
   const Ledger ledger = read_ledger(r.ledger);
   const DatasetReader data(r.data);
   const SiteFiles files = build_site(r.ledger, SiteOptions());
-  const Json site = site_json(files);
+  const PlainJson site = site_json(files);
   for (size_t k = 0; k < ledger.entries.size(); ++k) {
     const LedgerEntry& e = ledger.entries[k];
     const KnotEntry d = data.read(e.name);
-    const Json j = Json::parse(files.at("data/knots/" + e.name + ".json"));
+    const PlainJson j = PlainJson::parse(files.at("data/knots/" + e.name + ".json"));
     const std::string& bin = files.at("data/knots/" + e.name + ".bin");
     std::vector<int> rows, members;
     for (const LedgerState& s : e.states) {
@@ -127,7 +127,7 @@ TEST(SiteLedger, KnotFilesHoldTheKeptStates) {
     EXPECT_EQ(j["members"].get<std::vector<int>>(), members);
     EXPECT_EQ(j["states"], e.states.size());
     EXPECT_EQ(site["knots"][k]["shown_rows"].get<std::vector<int>>(), rows);
-    const Json& buf = j["buffers"];
+    const PlainJson& buf = j["buffers"];
     const int energy = e.attribute_column("energy");
     for (int i = 0; i < m; ++i) {
       const LedgerState& s = e.states[static_cast<size_t>(i)];
@@ -163,16 +163,16 @@ TEST(SiteLedger, KnotWithoutCurvesStaysInTheTable) {
   write_ledger(bare, ledger);
   const SiteFiles full = build_site(r.ledger, SiteOptions()), files = build_site(bare, SiteOptions());
   expect_same_table(site_json(full), site_json(files), "without 5_2's curves");
-  const Json rec = site_json(files)["knots"][1];
+  const PlainJson rec = site_json(files)["knots"][1];
   EXPECT_EQ(rec["equilibria"], 6);
   EXPECT_EQ(rec["distinct"], 3);
   EXPECT_TRUE(rec["shown_rows"].empty());
-  const Json j = Json::parse(files.at("data/knots/5_2.json"));
+  const PlainJson j = PlainJson::parse(files.at("data/knots/5_2.json"));
   EXPECT_EQ(j["equilibria"], 0);
   EXPECT_EQ(j["states"], 3);
   EXPECT_TRUE(j["members"].empty());
   EXPECT_EQ(files.at("data/knots/5_2.bin").size(), 0u);
-  EXPECT_EQ(Json::parse(files.at("data/knots/3_1.json")), Json::parse(full.at("data/knots/3_1.json")));
+  EXPECT_EQ(PlainJson::parse(files.at("data/knots/3_1.json")), PlainJson::parse(full.at("data/knots/3_1.json")));
 }
 
 // A folder of two ledgers (one knot each) gives one site, the same as the
@@ -196,7 +196,7 @@ TEST(SiteLedger, FolderOfTwoLedgersIsOneSite) {
   const auto out = run("site " + folder + "/ -o " + r.dir + "/site --json");
   ASSERT_EQ(out.status, 0) << out.err;
   EXPECT_EQ(out.json()["knots"], 2);
-  EXPECT_EQ(Json::parse(std::ifstream(r.dir + "/site/data/site.json"))["knots"].size(), 2u);
+  EXPECT_EQ(PlainJson::parse(std::ifstream(r.dir + "/site/data/site.json"))["knots"].size(), 2u);
 }
 
 // `knots site` refuses a damaged ledger, alone or in a folder, with one line

@@ -30,10 +30,13 @@ int cmd_cluster(int argc, char** argv) {
   const std::vector<StateCluster> clusters = clusters_at_cut(e, *cut);
   const int k = static_cast<int>(clusters.size());
   if (json) {
-    print_json(clusters_json(name, *cut, m, clusters));
+    Json j = clusters_json(name, *cut, m, clusters);
+    j.update(entry_unseen_json(e, *cut));
+    print_json(j);
     return 0;
   }
-  std::cout << name << ": " << m << " equilibria in " << k << " clusters at cut " << *cut << " (sorted by energy)\n";
+  std::cout << name << ": " << m << " equilibria in " << k << " clusters at cut " << *cut << " (sorted by energy)\n"
+            << "  " << entry_unseen_text(e, *cut) << "\n";
   for (size_t c = 0; c < clusters.size(); ++c)
     std::cout << "  cluster " << c << ": " << clusters[c].members.size() << " members, energy "
               << fmt(clusters[c].energy_min, 6) << " .. " << fmt(clusters[c].energy_max, 6) << ", representative "

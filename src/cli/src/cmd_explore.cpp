@@ -3,6 +3,7 @@
 #include <iostream>
 
 #include "commands.hpp"
+#include "ek/dataset/json.hpp"
 #include "ek/dataset/run.hpp"
 #include "ek/knots/link_table.hpp"
 #include "explore_options.hpp"
@@ -33,6 +34,8 @@ int cmd_explore(int argc, char** argv) {
   ro.output = out;
   ro.progress = !a.quiet && !json;
   const DatasetRunSummary s = run_dataset(ro);
+  // what the knot's states leave unseen, at the cut of adaptive sampling (its δ)
+  const auto entry = [&] { return DatasetReader(out).read(name); };
   if (json) {
     Json j;
     j["name"] = link ? link->name : ro.knots.front()->name;
@@ -41,12 +44,14 @@ int cmd_explore(int argc, char** argv) {
     j["runs"] = s.runs;
     j["equilibria"] = s.equilibria;
     j["seconds"] = number(s.seconds);
+    if (s.knots_skipped == 0 && s.equilibria > 0) j.update(entry_unseen_json(entry(), a.options.novelty_distance));
     print_json(j);
   } else if (s.knots_skipped > 0) {
     std::cout << name << " is already in " << out << "; nothing to do\n";
   } else {
     std::cout << "explored " << name << ": " << s.runs << " runs, " << s.equilibria << " stable equilibria in "
               << fmt(s.seconds, 4) << " s; wrote " << out << "\n";
+    if (s.equilibria > 0) std::cout << entry_unseen_text(entry(), a.options.novelty_distance) << "\n";
   }
   return 0;
 }

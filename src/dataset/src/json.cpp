@@ -1,12 +1,14 @@
 #include "ek/dataset/json.hpp"
 
 #include <cmath>
+#include <limits>
 #include <map>
 #include <sstream>
 
 #include "ek/analysis/unseen.hpp"
 #include "ek/dataset/dataset_search.hpp"
 #include "ek/dataset/sampling_cost.hpp"
+#include "ek/dataset/states.hpp"
 
 namespace ek {
 
@@ -71,15 +73,6 @@ Json state_json(const LedgerEntry& e, int s) {
   return j;
 }
 
-Json unseen_json(const UnseenEstimate& u) {
-  return {{"samples", u.samples},
-          {"found", u.observed},
-          {"estimated", json_number(u.states)},
-          {"lower", json_number(u.lower)},
-          {"upper", json_number(u.upper)},
-          {"new_state_probability", json_number(u.new_state_probability)},
-          {"good_turing", json_number(u.good_turing)}};
-}
 
 }  // namespace
 
@@ -216,6 +209,38 @@ Json closest_equilibrium_json(const DatasetReader* reader, const Points& x) {
   j["index"] = r.hits[0].equilibrium;
   j["distance"] = json_number(r.hits[0].distance);
   return j;
+}
+
+Json unseen_json(const UnseenEstimate& u) {
+  return {{"samples", u.samples},
+          {"found", u.observed},
+          {"estimated", json_number(u.states)},
+          {"lower", json_number(u.lower)},
+          {"upper", json_number(u.upper)},
+          {"new_state_probability", json_number(u.new_state_probability)},
+          {"good_turing", json_number(u.good_turing)}};
+}
+
+namespace {
+PrefixUnseen entry_unseen(const KnotEntry& e, double cut) {
+  return prefix_unseen(e, std::numeric_limits<int>::max(), cut, kLowEnergyFactor);
+}
+}  // namespace
+
+Json entry_unseen_json(const KnotEntry& e, double cut) {
+  const PrefixUnseen u = entry_unseen(e, cut);
+  return {{"unseen", unseen_json(u.all)}, {"unseen_low_energy", unseen_json(u.low_energy)}};
+}
+
+std::string entry_unseen_text(const KnotEntry& e, double cut) {
+  const PrefixUnseen u = entry_unseen(e, cut);
+  std::ostringstream s;
+  s.precision(3);
+  s << u.all.observed << " states found at cut " << cut << " (estimated " << std::lround(u.all.states) << ", "
+    << std::lround(u.all.lower) << "–" << std::lround(u.all.upper) << "; next sample new "
+    << u.all.new_state_probability << ", new and within " << kLowEnergyFactor << " of the lowest energy "
+    << u.low_energy.new_state_probability << ")";
+  return s.str();
 }
 
 }  // namespace ek

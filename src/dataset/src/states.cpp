@@ -42,7 +42,12 @@ KnotEntry shuffled_runs(const KnotEntry& e, std::uint64_t& state) {
 PrefixUnseen prefix_unseen(const KnotEntry& e, int samples, double cut, double energy_factor) {
   std::vector<int> members;  // equilibrium of each stable run in the prefix
   for (const RunRecord& r : e.runs)
-    if (r.sample < samples && r.equilibrium >= 0) members.push_back(r.equilibrium);
+    if (r.sample < samples && r.equilibrium >= 0) {
+      require(r.equilibrium < static_cast<int>(e.equilibria.size()) &&
+                  r.equilibrium < static_cast<int>(e.similarity.rows()),
+              "prefix_unseen: a run names an equilibrium the entry does not have");
+      members.push_back(r.equilibrium);
+    }
   PrefixUnseen out;
   if (members.empty()) return out;
   const int ec = e.attribute_column("energy");

@@ -8,6 +8,8 @@
 #include "ek/analysis/mds.hpp"
 #include "ek/contact/broad_phase.hpp"
 #include "ek/core/errors.hpp"
+#include "ek/analysis/unseen.hpp"
+#include "ek/dataset/json.hpp"
 #include "ek/dataset/pipeline.hpp"
 #include "ek/geometry/polyline.hpp"
 #include "ek/site/site.hpp"
@@ -177,6 +179,7 @@ KnotSiteData knot_site_data(const KnotEntry& e, const std::string& file, double 
     j["members"] = states->members;
     j["states"] = states->states;
   }
+  j.update(states ? states->unseen : entry_unseen_json(e, cut));
   j["binary"] = file + ".bin";
   j["buffers"] = bin.buffers;
   j["binary_bytes"] = bin.bytes.size();
@@ -191,6 +194,8 @@ KnotEntry shown_states(const LedgerEntry& l, const SimilarityOptions& similarity
   e.attribute_names = l.attribute_names;
   ShownStates s;
   s.states = static_cast<int>(l.states.size());
+  s.unseen = {{"unseen", unseen_json(ledger_unseen(l))},
+              {"unseen_low_energy", unseen_json(ledger_unseen(l, kLowEnergyFactor))}};
   for (const LedgerState& st : l.states) {
     if (st.curve.rows() == 0) continue;
     s.rows.push_back(st.representative);

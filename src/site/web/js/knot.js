@@ -22,11 +22,19 @@ export async function showKnot(main, site, name) {
     ? `${rec.samples} samples, ${rec.equilibria} stable equilibria in ${k.states} states at the ledger's cut ` +
       `${fmt(site.dataset.ledger_cut)}; shown: the ${m} lowest-energy states whose curve the ledger keeps, each as its representative.`
     : `${rec.samples} samples, ${m} stable equilibria.`;
+  const u = k.unseen;
+  const unseen = u && u.samples > 0
+    ? el("p", { class: "muted", id: "unseen" },
+      `States not yet seen (${ledger ? "the ledger's cut" : `cut ${fmt(site.cut)}`}): ${u.found} found, about ` +
+      `${fmt(Math.round(u.estimated))} in all (Chao1; 95% interval ${fmt(Math.round(u.lower))} to ${fmt(Math.round(u.upper))}); ` +
+      `the next sample finds a new state with a chance of ${fmt(u.new_state_probability, 2)}, a new one within 1.1 of ` +
+      `the lowest energy with ${fmt(k.unseen_low_energy.new_state_probability, 2)}.`)
+    : null;
   main.append(el("h2", {}, `${name}`),
     el("p", { class: "muted" },
       `${rec.crossing_number} crossings, bridge index ${fmt(rec.bridge_index)}, braid index ${fmt(rec.braid_index)}` +
       `${rec.bb ? " (BB)" : ""}, ${rec.alternating === null ? "" : rec.alternating ? "alternating, " : "non-alternating, "}` +
-      counts));
+      counts), unseen);
   if (m === 0) {
     main.append(el("p", {}, ledger && rec.equilibria > 0
       ? "The ledger keeps no curve of this knot's states (rerunning a state's sample reproduces it)."

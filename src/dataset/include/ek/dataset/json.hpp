@@ -18,6 +18,18 @@ namespace ek {
 /// by energy).
 Json clusters_json(const std::string& name, double cut, int equilibria, const std::vector<StateCluster>& clusters);
 
+/// {samples, found, estimated, lower, upper (95%), new_state_probability,
+/// good_turing}: an estimate of the states not seen yet (unseen.hpp).
+Json unseen_json(const UnseenEstimate& estimate);
+
+/// The states of a knot's entry at `cut` and what they leave unseen
+/// (prefix_unseen() of every sample): unseen and unseen_low_energy (the
+/// states within kLowEnergyFactor of the lowest energy), as unseen_json.
+Json entry_unseen_json(const KnotEntry& entry, double cut);
+/// One line of the same: "D states found at cut C (estimated S, L–U; next
+/// sample new P, new and within 1.1 of the lowest energy Q)".
+std::string entry_unseen_text(const KnotEntry& entry, double cut);
+
 /// rows: [{knot, index, one key per column}], count.
 Json query_json(const QueryResult& result);
 

@@ -51,6 +51,7 @@
 #include <vector>
 
 #include "ek/analysis/similarity.hpp"
+#include "ek/core/json.hpp"
 #include "ek/contact/topology.hpp"
 #include "ek/dataset/dataset_file.hpp"
 #include "ek/dataset/ledger.hpp"
@@ -96,13 +97,17 @@ struct ShownStates {
   std::vector<int> rows;     ///< [1] each shown state's representative: its row among the knot's equilibria
   std::vector<int> members;  ///< [1] each shown state's member count
   int states = 0;            ///< [1] the knot's states at the ledger's cut, shown or not
+  /// What all its states leave unseen: unseen and unseen_low_energy of
+  /// ledger_unseen() (ek/dataset/json.hpp, entry_unseen_json()'s keys).
+  Json unseen;
 };
 
 /// Extracts one knot's data files from the equilibria its pages show
 /// (`file` is the base name of both files, `dhat` [length] the contact
 /// distance of the contact flags, `cut` the clusters' cut). `states`: a
 /// ledger's shown states (one member count per equilibrium of `entry`,
-/// written as `members` and `states`); null for a data set.
+/// written as `members` and `states`); null for a data set. Both write
+/// `unseen` and `unseen_low_energy`: the ledger's, or the entry's at `cut`.
 KnotSiteData knot_site_data(const KnotEntry& entry, const std::string& file, double dhat, double cut,
                             const ShownStates* states = nullptr);
 
