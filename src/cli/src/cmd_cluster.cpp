@@ -30,9 +30,7 @@ int cmd_cluster(int argc, char** argv) {
   const std::vector<StateCluster> clusters = clusters_at_cut(e, *cut);
   const int k = static_cast<int>(clusters.size());
   if (json) {
-    Json j = clusters_json(name, *cut, m, clusters);
-    j.update(entry_unseen_json(e, *cut));
-    print_json(j);
+    print_json(entry_clusters_json(e, *cut));
     return 0;
   }
   std::cout << name << ": " << m << " equilibria in " << k << " clusters at cut " << *cut << " (sorted by energy)\n"

@@ -232,6 +232,12 @@ Json entry_unseen_json(const KnotEntry& e, double cut) {
   return {{"unseen", unseen_json(u.all)}, {"unseen_low_energy", unseen_json(u.low_energy)}};
 }
 
+Json entry_clusters_json(const KnotEntry& e, double cut) {
+  Json j = clusters_json(e.name, cut, static_cast<int>(e.equilibria.size()), clusters_at_cut(e, cut));
+  j.update(entry_unseen_json(e, cut));
+  return j;
+}
+
 std::string entry_unseen_text(const KnotEntry& e, double cut) {
   const PrefixUnseen u = entry_unseen(e, cut);
   std::ostringstream s;

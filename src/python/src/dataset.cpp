@@ -199,13 +199,14 @@ field per attribute), count. ValueError for an unknown attribute, listing the kn
           [](const Dataset& d, const std::string& name, double cut) {
             if (!(cut >= 0.0 && cut <= 1.0)) throw InputError("--cut must be in [0, 1]");  // as knots cluster
             const KnotEntry e = d.reader->read(name);
-            return result_from_json(clusters_json(name, cut, static_cast<int>(e.equilibria.size()), clusters_at_cut(e, cut)),
-                                    "clusters");
+            return result_from_json(entry_clusters_json(e, cut), "clusters");
           },
           py::arg("name"), py::kw_only(), py::arg("cut"),
           R"doc(The clusters of a knot's equilibria at a distance cut in [0, 1] (complete linkage on
 1 - similarity), sorted by energy, as `knots cluster --json`: name, cut, equilibria,
-clusters (each with size, representative, energy_min, energy_max, members).)doc");
+clusters (each with size, representative, energy_min, energy_max, members), unseen and
+unseen_low_energy (the states not yet seen: samples, found, estimated, lower, upper,
+new_state_probability, good_turing).)doc");
 }
 
 }  // namespace ek::python

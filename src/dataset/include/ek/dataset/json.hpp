@@ -26,6 +26,9 @@ Json unseen_json(const UnseenEstimate& estimate);
 /// (prefix_unseen() of every sample): unseen and unseen_low_energy (the
 /// states within kLowEnergyFactor of the lowest energy), as unseen_json.
 Json entry_unseen_json(const KnotEntry& entry, double cut);
+/// `knots cluster --json` of an entry: clusters_json of clusters_at_cut with
+/// entry_unseen_json's keys after them.
+Json entry_clusters_json(const KnotEntry& entry, double cut);
 /// One line of the same: "D states found at cut C (estimated S, L–U; next
 /// sample new P, new and within 1.1 of the lowest energy Q)".
 std::string entry_unseen_text(const KnotEntry& entry, double cut);
