@@ -35,6 +35,7 @@ TEST(SamplingCost, MedianSavingAndPerCrossingRows) {
   EXPECT_EQ(s.samples, 720);
   EXPECT_DOUBLE_EQ(s.median_samples, 80.0);
   EXPECT_EQ(s.max_samples, 500);
+  EXPECT_EQ(s.knots_at_budget, 1);
   EXPECT_DOUBLE_EQ(s.saving_vs_budget, 0.64);
   EXPECT_DOUBLE_EQ(s.run_seconds, 296.0);
   ASSERT_EQ(s.by_crossing_number.size(), 3u);

@@ -153,6 +153,8 @@ Json ledger_summary_json(const Ledger& l) {
   j["median_samples"] = json_number(c.median_samples);
   j["mean_samples"] = json_number(static_cast<double>(c.samples) / c.knots);
   j["max_samples"] = c.max_samples;
+  j["knots_at_500"] = c.knots_at_budget;
+  j["stopped_before_500_share"] = json_number(1.0 - static_cast<double>(c.knots_at_budget) / c.knots);
   j["saving_vs_500"] = json_number(c.saving_vs_budget);
   j["run_core_seconds"] = json_number(c.run_seconds);
   j["by_crossing_number"] = Json::array();

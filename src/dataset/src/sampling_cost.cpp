@@ -59,6 +59,7 @@ SamplingCost sampling_cost(const std::vector<KnotCost>& knots, int budget) {
     s.samples += k.samples;
     s.run_seconds += k.run_seconds;
     s.max_samples = std::max(s.max_samples, k.samples);
+    s.knots_at_budget += k.samples >= budget;
     by_c[k.crossing_number].push_back(&k);
   }
   s.median_samples = median(samples);

@@ -59,7 +59,8 @@ Json ledger_json(const Ledger& ledger);
 /// median_new_low_energy_state_probability over the knots (ledger_unseen;
 /// absent for a ledger without states), and for knots (links left
 /// out) the sampling cost against 500 samples per knot (sampling_cost.hpp):
-/// median_samples, mean_samples, max_samples, saving_vs_500,
+/// median_samples, mean_samples, max_samples, knots_at_500,
+/// stopped_before_500_share, saving_vs_500,
 /// run_core_seconds, by_crossing_number [{crossing_number, knots,
 /// median_samples, mean_samples, seconds_per_run, mean_states}].
 Json ledger_summary_json(const Ledger& ledger);

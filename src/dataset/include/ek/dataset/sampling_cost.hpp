@@ -38,6 +38,7 @@ struct SamplingCost {
   long samples = 0;               ///< [1] runs over all knots
   double median_samples = 0.0;    ///< [1] per knot (mean of the two middle values for an even count)
   int max_samples = 0;            ///< [1] per knot
+  int knots_at_budget = 0;        ///< [1] knots whose samples reached the budget (the adaptive rule did not stop them)
   int budget = 0;                 ///< [1] samples per knot of the fixed rule it is compared to
   /// [1] 1 - samples / (knots · budget): the share of the fixed budget's
   /// relaxations the adaptive rule saved (the paper: about 70% at 500).
