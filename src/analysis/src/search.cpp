@@ -1,29 +1,17 @@
 #include "ek/analysis/search.hpp"
 
-#include <Eigen/SVD>
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include "ek/core/errors.hpp"
 #include "ek/geometry/resample.hpp"
+#include "ek/geometry/rigid.hpp"
 #include "ek/geometry/segment_distance.hpp"
 
 namespace ek {
 
 namespace {
-
-/// Rigid motion (R, t) minimising Σ_k |R y_k + t - x_k|² (Kabsch/Umeyama, det R = +1).
-void kabsch(const Points& Y, const Points& X, Mat3& R, Vec3& t) {
-  const Vec3 cy = Y.colwise().mean().transpose(), cx = X.colwise().mean().transpose();
-  Mat3 H = Mat3::Zero();
-  for (Eigen::Index k = 0; k < Y.rows(); ++k) H += (Y.row(k).transpose() - cy) * (X.row(k).transpose() - cx).transpose();
-  Eigen::JacobiSVD<Mat3> svd(H, Eigen::ComputeFullU | Eigen::ComputeFullV);
-  Mat3 Dg = Mat3::Identity();
-  Dg(2, 2) = (svd.matrixV() * svd.matrixU().transpose()).determinant() < 0.0 ? -1.0 : 1.0;
-  R = svd.matrixV() * Dg * svd.matrixU().transpose();
-  t = cx - R * cy;
-}
 
 Points centred(const Points& P) { return P.rowwise() - P.colwise().mean(); }
 
@@ -97,10 +85,7 @@ std::vector<Start> closed_form_starts(const Points& Qc, const Points& C, const A
     for (int s = 0; s < m; ++s) {
       Mat3 H = Mat3::Zero();
       for (int i = 0; i < m; ++i) H += Cc.row((i + s) % m).transpose() * Qc.row(i);
-      const Eigen::JacobiSVD<Mat3> svd(H);
-      const Vec3 sv = svd.singularValues();
-      const double d = H.determinant() < 0.0 ? -1.0 : 1.0;
-      r[static_cast<size_t>(s)] = std::max(0.0, q2 + c2 - 2.0 * (sv(0) + sv(1) + d * sv(2)));
+      r[static_cast<size_t>(s)] = std::max(0.0, rigid_residual(H, q2 + c2));
     }
     for (int s = 0; s < m; ++s) {
       const double v = r[static_cast<size_t>(s)];
@@ -163,8 +148,10 @@ IcpResult icp_from_start(const Points& Q, const Points& C, const Start& st, cons
   Points rolled(m, 3);
   for (int i = 0; i < m; ++i) rolled.row(i) = S.row((i + st.shift) % m);
   IcpResult out;
-  kabsch(rolled, Q, out.R, out.t);
-  out.Y = (S * out.R.transpose()).rowwise() + out.t.transpose();
+  const RigidMotion start = best_rigid_motion(rolled, Q);
+  out.R = start.R;
+  out.t = start.t;
+  out.Y = start.apply(S);
   double prev = std::numeric_limits<double>::infinity();
   int& it = out.iterations;
   for (;; ++it) {
@@ -184,10 +171,10 @@ IcpResult icp_from_start(const Points& Q, const Points& C, const Start& st, cons
       src.row(m + k) = out.Y.row(k);
       dst.row(m + k) = Q.row(nn.iy[static_cast<size_t>(k)]);
     }
-    Mat3 G;
-    Vec3 g;
-    kabsch(src, dst, G, g);
-    out.Y = (out.Y * G.transpose()).rowwise() + g.transpose();
+    const RigidMotion step = best_rigid_motion(src, dst);
+    const Mat3& G = step.R;
+    const Vec3& g = step.t;
+    out.Y = step.apply(out.Y);
     out.R = G * out.R;
     out.t = G * out.t + g;
   }

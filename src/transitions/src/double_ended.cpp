@@ -1,6 +1,5 @@
 #include "ek/transitions/double_ended.hpp"
 
-#include <Eigen/SVD>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -8,24 +7,13 @@
 #include <optional>
 
 #include "ek/core/errors.hpp"
+#include "ek/geometry/rigid.hpp"
 #include "saddle_checks.hpp"
 
 namespace ek {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-/// The rigid motion of c that best matches a vertex by vertex (Kabsch, det = +1).
-Points kabsch(const Points& a, const Points& c) {
-  const Eigen::RowVector3d ca = a.colwise().mean();
-  const Eigen::RowVector3d cc = c.colwise().mean();
-  const Mat3 H = (c.rowwise() - cc).transpose() * (a.rowwise() - ca);
-  const Eigen::JacobiSVD<Mat3> svd(H, Eigen::ComputeFullU | Eigen::ComputeFullV);
-  Mat3 D = Mat3::Identity();
-  D(2, 2) = (svd.matrixV() * svd.matrixU().transpose()).determinant() < 0.0 ? -1.0 : 1.0;
-  const Mat3 R = svd.matrixV() * D * svd.matrixU().transpose();
-  return ((c.rowwise() - cc) * R.transpose()).rowwise() + ca;
-}
 
 /// c re-indexed cyclically: row i = c_{(i+s) mod n}.
 Points shifted(const Points& c, Eigen::Index s) {
@@ -36,9 +24,8 @@ Points shifted(const Points& c, Eigen::Index s) {
 }
 
 /// Σ_i |a_i − R c_{(i+s)} − t|² after the best rigid motion for this
-/// correspondence (Kabsch's residual: |A|² + |C|² − 2 Σσ, centred, with the
-/// sign of the last singular value flipped for a reflection).
-double rigid_residual(const Points& a, const Points& c, Eigen::Index s) {
+/// correspondence (ek/geometry/rigid.hpp).
+double shifted_residual(const Points& a, const Points& c, Eigen::Index s) {
   const Eigen::Index n = a.rows();
   const Eigen::RowVector3d ca = a.colwise().mean();
   const Eigen::RowVector3d cc = c.colwise().mean();
@@ -50,10 +37,7 @@ double rigid_residual(const Points& a, const Points& c, Eigen::Index s) {
     H += q.transpose() * p;
     norms += p.squaredNorm() + q.squaredNorm();
   }
-  const Eigen::JacobiSVD<Mat3> svd(H);
-  Vec3 sigma = svd.singularValues();
-  if (H.determinant() < 0.0) sigma(2) = -sigma(2);
-  return norms - 2.0 * sigma.sum();
+  return rigid_residual(H, norms);
 }
 
 /// E + (k/2)|P(x) − x_B|² over the model's dofs (step 2 of the file comment);
@@ -428,13 +412,13 @@ Points align_vertices(const Points& a, const Points& b, double& distance) {
   Points best;
   for (const Points* c : {&b, &reversed})
     for (Eigen::Index s = 0; s < a.rows(); ++s) {
-      const double r = rigid_residual(a, *c, s);
+      const double r = shifted_residual(a, *c, s);
       if (r < least) {
         least = r;
         best = shifted(*c, s);
       }
     }
-  best = kabsch(a, best);
+  best = align_onto(best, a);
   distance = std::sqrt((a - best).rowwise().squaredNorm().mean());
   return best;
 }
