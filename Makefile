@@ -239,7 +239,8 @@ stopping-truth: build
 	@if [ ! -f $(TRUTH_DATASET) ]; then \
 	  $(BUILD)/bin/knots merge results/truth/shards/shard-*-of-04.h5 -o $(TRUTH_DATASET); fi
 	$(EXP)/exp_adaptive --scale paper --fixed $(TRUTH_DATASET) --out docs/results/truth/adaptive --jobs $(JOBS)
-	EK_PAPER_RESULTS=$(CURDIR)/docs/results/truth KNOT_TABLE=$(KNOT_TABLE) $(BUILD)/paper_checks/check_adaptive
+	EK_PAPER_RESULTS=$(CURDIR)/docs/results/truth KNOT_TABLE=$(KNOT_TABLE) $(BUILD)/paper_checks/check_adaptive \
+	  --gtest_filter='StoppingRules.*'
 
 ledger-results: build
 	@for s in $(LEDGER_SCALES); do \

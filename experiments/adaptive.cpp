@@ -38,6 +38,7 @@
 #include <numeric>
 
 #include "adaptive_summary.hpp"
+#include "ek/core/parse.hpp"
 #include "ek/dataset/run.hpp"
 #include "ek/dataset/states.hpp"
 #include "experiment.hpp"
@@ -55,10 +56,12 @@ constexpr std::uint64_t kShuffleSeed = 0x5EED0ADA97ULL;  ///< fixed: the control
 
 /// A stopping rule's replays on the random orders, summed (AdaptiveRuleReplay).
 struct RuleTally {
+  explicit RuleTally(const ExploreOptions& o) : options(o) {}
   ExploreOptions options;
   std::vector<double> used;  ///< samples per knot-order
   long stored = 0, capped = 0, interval_hits = 0, low_interval_hits = 0;
-  int states = 0, low_states = 0;
+  int states = 0, low_states = 0, knots = 0, chain_low_found = 0;
+  long chain_used = 0;
   double found = 0.0, low_found = 0.0;  ///< sums over knot-orders, divided by the orders
 
   /// One order `se` of a knot whose stored samples have `clusters` (`rank`).
@@ -77,10 +80,15 @@ struct RuleTally {
     interval_hits += within(u.all, static_cast<int>(clusters.size()));
     low_interval_hits += within(u.low_energy, c.clusters);
   }
-  /// Adds a knot's state counts (once per knot).
-  void add_truth(int knot_states, int knot_low_states) {
-    states += knot_states;
+  /// Adds a knot's state counts and the rule in the chain's order `e` (once per knot).
+  void add_truth(const KnotEntry& e, const std::vector<StateCluster>& clusters, const std::vector<int>& rank,
+                 int knot_low_states) {
+    states += static_cast<int>(clusters.size());
     low_states += knot_low_states;
+    const int chain = replay_adaptive(e, options).samples_used;
+    chain_used += chain;
+    chain_low_found += low_energy_coverage(e, clusters, rank, clusters_seen(e, rank, chain), kLowEnergyFactor).found;
+    ++knots;
   }
   results::AdaptiveRuleReplay summary() const {
     results::AdaptiveRuleReplay s;
@@ -97,6 +105,8 @@ struct RuleTally {
     s.low_energy_states_found_mean = low_found;
     s.interval_coverage = orders > 0 ? static_cast<double>(interval_hits) / orders : 0.0;
     s.low_energy_interval_coverage = orders > 0 ? static_cast<double>(low_interval_hits) / orders : 0.0;
+    s.chain_mean_samples = knots > 0 ? static_cast<double>(chain_used) / knots : 0.0;
+    s.chain_low_energy_states_found = chain_low_found;
     return s;
   }
 };
@@ -128,7 +138,7 @@ struct Tally {
   void shuffled(const std::string& name, const KnotEntry& e, const std::vector<StateCluster>& clusters,
                 const std::vector<int>& rank, int low_states) {
     std::uint64_t state = knot_seed(kShuffleSeed, name);  // per knot: independent of the knot set
-    for (RuleTally& r : rules) r.add_truth(static_cast<int>(clusters.size()), low_states);
+    for (RuleTally& r : rules) r.add_truth(e, clusters, rank, low_states);
     for (int t = 0; t < kShuffles; ++t) {
       const KnotEntry se = shuffled_runs(e, state);
       const AdaptiveReplay sr = replay_adaptive(se, scaled);
@@ -215,7 +225,8 @@ void report(const results::AdaptiveSummary& sum, const Tally& t, int stored_samp
               << r.capped_share << " at the cap), finds " << r.states_found_mean << "/" << r.states << " states and "
               << r.low_energy_states_found_mean << "/" << r.low_energy_states
               << " low-energy ones; interval coverage " << r.interval_coverage << " (low-energy "
-              << r.low_energy_interval_coverage << ")" << std::endl;
+              << r.low_energy_interval_coverage << "); in the chain's order " << r.chain_mean_samples
+              << " samples per knot, " << r.chain_low_energy_states_found << " low-energy states" << std::endl;
 }
 
 /// The stored samples' data set and its budget: run here, or --fixed (nothing relaxed).
@@ -245,8 +256,11 @@ std::string fixed_samples(const Args& a, const std::string& fixed, ExploreOption
 
 int main(int argc, char** argv) {
   std::string fixed;
+  double new_state_threshold = ExploreOptions().new_state_threshold;
   const std::vector<ExtraOption> extra = {
-      {"--fixed", "[--fixed DATASET]", [&](const std::string& v) { fixed = v; }, {}}};
+      {"--fixed", "[--fixed DATASET]", [&](const std::string& v) { fixed = v; }, {}},
+      {"--new-state-threshold", "[--new-state-threshold P]",
+       [&](const std::string& v) { new_state_threshold = parse_number(v, "--new-state-threshold"); }, {}}};
   return run_experiment(argc, argv, "exp_adaptive", "Adaptive sampling against a fixed sample budget.", [&](const Args& a) {
     ExploreOptions o = base_options(a);
     o.samples = by_scale(a, 60, 150, kPaperBudget);
@@ -268,6 +282,7 @@ int main(int argc, char** argv) {
     paper.max_samples = kPaperBudget;
     ExploreOptions unseen = scaled;
     unseen.stopping = StoppingRule::Unseen;
+    unseen.new_state_threshold = new_state_threshold;
     unseen.low_energy_factor = kLowEnergyFactor;  // the low-energy states it looks for are those measured
     results::AdaptiveSummary sum;
     sum.scale = a.scale_name;
@@ -277,7 +292,7 @@ int main(int argc, char** argv) {
     sum.low_energy_factor = kLowEnergyFactor;
     sum.fixed_source = fixed;
     Tally tally{scaled, paper, sum, 0, 0, 0, 0, {}, {}, 0.0, 0.0, {}};
-    tally.rules = {RuleTally{scaled, {}, 0, 0, 0, 0, 0, 0, 0.0, 0.0}, RuleTally{unseen, {}, 0, 0, 0, 0, 0, 0, 0.0, 0.0}};
+    tally.rules = {RuleTally{scaled}, RuleTally{unseen}};
     Csv csv(a.out + "/adaptive.csv", {"knot", "fixed_samples", "adaptive_samples", "stopped_by_score", "low_clusters",
                                       "low_clusters_found", "scores"});
     const DatasetReader reader(stored);

@@ -60,10 +60,14 @@ struct AdaptiveRuleReplay {
   /// clustered alone) holds the stored samples' state count
   double interval_coverage = 0.0;
   double low_energy_interval_coverage = 0.0;  ///< [1] the same for the low-energy states
+  /// The chain's own order (sample k continues the walk from sample k − 1:
+  /// correlated samples, as a run meets them)
+  double chain_mean_samples = 0.0;            ///< [samples] per knot
+  int chain_low_energy_states_found = 0;      ///< [1] summed over knots
 };
 EK_JSON_FIELDS(AdaptiveRuleReplay, rule, adaptive, median_samples, mean_samples, capped_share, saved_share, states,
                states_found_mean, low_energy_states, low_energy_states_found_mean, interval_coverage,
-               low_energy_interval_coverage)
+               low_energy_interval_coverage, chain_mean_samples, chain_low_energy_states_found)
 
 struct AdaptiveSummary {
   std::string scale;
