@@ -46,6 +46,12 @@ TEST(Summaries, AdaptiveRoundTrip) {
   s.missed = {{"5_2", 1.5, 1.4, 2}, {"6_1", 2.5, 2.2, 1}};
   s.paper_rule.saved_share_lower_bound = 0.377;
   s.shuffled.orders_per_knot = 20;
+  AdaptiveRuleReplay unseen;
+  unseen.rule = "unseen";
+  unseen.median_samples = 80.0;
+  unseen.low_energy_states_found_mean = 591.0;
+  unseen.chain_low_energy_states_found = 520;
+  s.rules = {AdaptiveRuleReplay{}, unseen};
   const AdaptiveSummary r = round_trip(s);
   EXPECT_EQ(r.knots, 7);
   EXPECT_EQ(r.missed_samples, std::optional<long>(3));
@@ -54,10 +60,16 @@ TEST(Summaries, AdaptiveRoundTrip) {
   EXPECT_EQ(r.missed[0].samples, std::optional<long>(2));
   EXPECT_DOUBLE_EQ(r.paper_rule.saved_share_lower_bound, 0.377);
   EXPECT_EQ(r.shuffled.orders_per_knot, 20);
-  // keys in declaration order, as the experiment writes them
+  ASSERT_EQ(r.rules.size(), 2u);
+  EXPECT_EQ(r.rules[1].rule, "unseen");
+  EXPECT_DOUBLE_EQ(r.rules[1].median_samples, 80.0);
+  EXPECT_DOUBLE_EQ(r.rules[1].low_energy_states_found_mean, 591.0);
+  EXPECT_EQ(r.rules[1].chain_low_energy_states_found, 520);
+  // keys in declaration order, as the experiment writes them: the rules' replays last
   const ordered_json j = s;
   EXPECT_EQ(j.begin().key(), "scale");
-  EXPECT_EQ(j.back().size(), ordered_json(s.paper_rule).size());
+  EXPECT_EQ(j.back().size(), 2u);
+  EXPECT_EQ(j.back()[1].size(), ordered_json(unseen).size());
 }
 
 // An optional field (a value that may be absent) reads as empty when its
