@@ -235,7 +235,7 @@ ledger-shards: build
 # shards merged into $(TRUTH_DATASET), both stopping rules replayed on it
 # (exp_adaptive at the paper scale, docs/results/truth/adaptive/) and checked.
 stopping-truth: build
-	scripts/ledger_shards.sh truth --commit --nice
+	scripts/ledger_shards.sh truth --commit --nice --datasets
 	@if [ ! -f $(TRUTH_DATASET) ]; then \
 	  $(BUILD)/bin/knots merge results/truth/shards/shard-*-of-04.h5 -o $(TRUTH_DATASET); fi
 	$(EXP)/exp_adaptive --scale paper --fixed $(TRUTH_DATASET) --out docs/results/truth/adaptive --jobs $(JOBS)

@@ -17,7 +17,7 @@ set -euo pipefail
 usage() {
   cat <<'EOF'
 usage: scripts/ledger_shards.sh SCALE [--shards N] [--only I,J,...] [--jobs J] [--knots PATH]
-                                [--commit] [--nice]
+                                [--commit] [--nice] [--datasets]
 
   SCALE          sample12 (the stratified 10% of the 11- and 12-crossing knots, every BB knot),
                  paper10 (every knot with 3 to 10 crossings) or truth (30 knots of 5 to 12
@@ -29,6 +29,9 @@ usage: scripts/ledger_shards.sh SCALE [--shards N] [--only I,J,...] [--jobs J] [
   --knots PATH   the knots program (default build/bin/knots of this checkout)
   --commit       git commit each finished shard's ledger (that file alone) as soon as it is written
   --nice         run the shards at the lowest CPU priority (nice 19)
+  --datasets     also run a shard whose ledger exists when its data set is missing (the data
+                 sets are not committed; a replay such as exp_adaptive --fixed needs them): its
+                 ledger then goes next to its data set, the committed one is left as it is
 
 Progress: one line per shard start and end in results/SCALE/shards/progress.log.
 EOF
@@ -44,7 +47,7 @@ here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 [[ "$1" == "-h" || "$1" == "--help" ]] && { usage; exit 0; }
 scale=$1
 shift
-shards="" only="" jobs=2 knots="$here/build/bin/knots" commit=0 nice_cmd=()
+shards="" only="" jobs=2 knots="$here/build/bin/knots" commit=0 nice_cmd=() datasets=0
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --shards) [[ $# -ge 2 ]] || fail "--shards needs a value"; shards=$2; shift 2 ;;
@@ -53,6 +56,7 @@ while [[ $# -gt 0 ]]; do
     --knots) [[ $# -ge 2 ]] || fail "--knots needs a value"; knots=$2; shift 2 ;;
     --commit) commit=1; shift ;;
     --nice) nice_cmd=(nice -n 19); shift ;;
+    --datasets) datasets=1; shift ;;
     -h | --help) usage; exit 0 ;;
     *) fail "unknown option '$1' (see --help)" ;;
   esac
@@ -88,16 +92,22 @@ for i in "${list[@]}"; do
   [[ "$i" =~ ^[1-9][0-9]*$ && "$i" -le "$shards" ]] || fail "shard '$i' is not in 1..$shards"
   name=$(printf 'shard-%02d-of-%02d' "$i" "$shards")
   ledger="$ledgers/$name.ledger.h5"
+  keep=0  # 1: the committed ledger stays; this run's ledger goes next to its data set
   if [[ -f "$ledger" ]]; then
-    echo "$(date -u +%FT%TZ) $scale $name: ledger exists, skipped" >>"$log"
-    continue
+    if [[ $datasets -eq 0 || -f "$work/$name.h5" ]]; then
+      echo "$(date -u +%FT%TZ) $scale $name: ledger exists, skipped" >>"$log"
+      continue
+    fi
+    keep=1
+    ledger="$work/$name.ledger.h5"
+    rm -f "$ledger"
   fi
   echo "$(date -u +%FT%TZ) $scale $name: started" >>"$log"
   start=$(date +%s)
   "${nice_cmd[@]}" "$knots" dataset "${select[@]}" "${sampling[@]}" --novelty-distance 0.05 --jobs "$jobs" \
     --shard "$i/$shards" --quiet -o "$work/$name.h5" --ledger "$ledger"
   echo "$(date -u +%FT%TZ) $scale $name: finished in $(($(date +%s) - start)) s, ledger $(du -k "$ledger" | cut -f1) kB" >>"$log"
-  if [[ $commit -eq 1 ]]; then
+  if [[ $commit -eq 1 && $keep -eq 0 ]]; then
     # the ledger alone (git commit --only): whatever else is staged stays staged
     for attempt in 1 2 3 4 5; do
       if git -C "$here" add "$ledger" && git -C "$here" commit -q --only "$ledger" \
