@@ -29,6 +29,14 @@ import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ARTIFACT_PREFIXES = ("crash-", "leak-", "timeout-", "oom-")
+# [s] libFuzzer's limit per input. A data-set input without checksum is read
+# in a child process given 3 s (fuzz_dataset_*.cpp), and libFuzzer runs an
+# input a second time when its mallocs and frees differ (to look for a leak):
+# such an input may take two child limits plus the reads in this process, on
+# a machine busy with other sanitizer builds (over 10 s was seen there). A
+# hang outside the child still ends the run, after this time.
+UNIT_TIMEOUT = 30
+LOG_TAIL_LINES = 25  # lines of a failed target's log printed with its crash
 
 
 def targets_in(build):
@@ -52,7 +60,8 @@ def run_target(target, args):
     seeds = os.path.join(HERE, "corpus", target)
     results = os.path.join(args.results, target)
     os.makedirs(results, exist_ok=True)
-    options = ["-artifact_prefix=" + results + "/", "-timeout=10", "-rss_limit_mb=2048", "-print_final_stats=1"]
+    options = ["-artifact_prefix=" + results + "/", "-timeout=%d" % UNIT_TIMEOUT, "-rss_limit_mb=2048",
+               "-print_final_stats=1"]
     dictionary = os.path.join(HERE, "dict", target + ".dict")
     if os.path.exists(dictionary):
         options.append("-dict=" + dictionary)
@@ -91,11 +100,25 @@ def run_target(target, args):
         "peak_rss_mb": last_int(r"stat::peak_rss_mb:\s*(\d+)", text),
         "crashes": crashes,
         "status": proc.returncode,
+        "log": log.name,
     }
 
 
 def show(value):
     return "-" if value is None else "{:,}".format(value)
+
+
+def print_log_tail(row):
+    """The end of a failed target's log (the input it was running, the
+    sanitizer's or libFuzzer's report), so that a CI log names it."""
+    try:
+        with open(row["log"], errors="replace") as f:
+            lines = f.read().splitlines()
+    except OSError:
+        return
+    print("--- last %d lines of %s" % (LOG_TAIL_LINES, row["log"]))
+    for line in lines[-LOG_TAIL_LINES:]:
+        print("  " + line)
 
 
 def main():
@@ -125,6 +148,7 @@ def main():
     for r in crashed:
         for c in r["crashes"]:
             print("CRASH %s: %s" % (r["target"], c))
+        print_log_tail(r)
     if len(rows) > 1:
         os.makedirs(args.results, exist_ok=True)
         with open(os.path.join(args.results, "summary.json"), "w") as f:
