@@ -30,11 +30,12 @@ CurveEnergy curve_energy(const Points& P, const CurveEnergyOptions& options) {
   e.energy.stretch = rod.energy(EnergyTerm::Stretch);
   e.energy.bend = rod.energy(EnergyTerm::Bend);
   e.energy.twist = rod.energy(EnergyTerm::Twist);
-  // Self-contact (paper eq. 1): ω E_contact with d̂ = 2r and ω as relax() resolves it.
-  ContactOptions co;
-  co.dhat = 2.0 * options.material.radius;
-  co.stiffness = default_contact_stiffness(options.material);
-  ContactPotential contact(CurveTopology::single(n), co);
+  // Self-contact (paper eq. 1): ω E_contact with d̂ and ω as relax() resolves them.
+  RelaxOptions model_options;
+  model_options.material = options.material;
+  model_options.link = options.link;
+  const ResolvedModel resolved = resolve_model(model_options, rod.rest_edge_lengths().mean());
+  ContactPotential contact(CurveTopology::single(n), contact_options(resolved, model_options));
   contact.update(P);
   e.energy.contact = contact.energy(P);
   e.energy.total = e.energy.stretch + e.energy.bend + e.energy.twist + e.energy.contact;

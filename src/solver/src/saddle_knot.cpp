@@ -18,12 +18,9 @@ KnotSystem::KnotSystem(const Points& x, const VecX& rest, const RelaxOptions& op
   require_input(n >= 4 && x.allFinite(), "a closed curve needs at least 4 finite vertices");
   require_input(rest.size() == n && rest.allFinite() && rest.minCoeff() > 0.0, "rest lengths must be n positive numbers");
   const ResolvedModel model = resolve_model(options, rest.mean());
-  ContactOptions co;
-  co.dhat = model.dhat;
-  co.stiffness = model.contact_stiffness;
-  co.hessian_margin = options.contact_hessian_margin;
   impl_ = std::unique_ptr<Impl>(new Impl{ElasticRod(x, rest, options.material, model.model),
-                                         ContactPotential(CurveTopology::single(n), co), nullptr});
+                                         ContactPotential(CurveTopology::single(n), contact_options(model, options)),
+                                         nullptr});
   if (options.link) {
     impl_->rod.set_link(*options.link);
     impl_->rod.relax_twist();
@@ -31,11 +28,7 @@ KnotSystem::KnotSystem(const Points& x, const VecX& rest, const RelaxOptions& op
   impl_->contact.update(x);
   require_input(impl_->contact.min_distance() > 0.0, "the curve touches itself");
   impl_->objective = std::make_unique<KnotObjective>(impl_->rod, impl_->contact, nullptr, options.max_tangent_rotation);
-  newton_ = NewtonOptions(options.newton);
-  newton_.gradient_tolerance = model.tolerance;
-  newton_.max_iterations = options.max_iterations;
-  newton_.stop_at_critical_point = options.stop_at_critical_point;
-  newton_.lambda_min = cached_lambda_min(n, rest.mean(), options.material, model.model);
+  newton_ = newton_options(options, model, cached_lambda_min(n, rest.mean(), options.material, model.model));
 }
 
 KnotSystem::~KnotSystem() = default;
