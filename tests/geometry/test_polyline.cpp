@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "ek/core/hash.hpp"
 #include "ek/geometry/polyline.hpp"
 #include "ek/geometry/segment_distance.hpp"
 #include "testing.hpp"
@@ -55,6 +56,33 @@ TEST(SegmentDistance, KnownConfigurations) {
   EXPECT_NEAR(segment_segment_distance_squared({1, 1, 0}, {1, 1, 0}, {0, 0, 0}, {2, 0, 0}), 1.0, 1e-15);
   // nearly parallel
   EXPECT_NEAR(segment_segment_distance_squared({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1 + 1e-12, 0}), 1.0, 1e-11);
+}
+
+TEST(SegmentDistance, ParametersNameTheClosestPoints) {
+  // Every branch (interior, each endpoint against the other segment,
+  // parallel): p(s) and q(t) realise the distance and are the expected points.
+  double s = -1, t = -1;
+  // endpoint p0 against the interior of q
+  EXPECT_NEAR(segment_segment_distance_squared({1, 0.5, 0}, {1, 3, 0}, {0, 0, 0}, {2, 0, 0}, &s, &t), 0.25, 1e-15);
+  EXPECT_NEAR(s, 0.0, 1e-15);
+  EXPECT_NEAR(t, 0.5, 1e-15);
+  // endpoint q1 against the interior of p
+  EXPECT_NEAR(segment_segment_distance_squared({0, 0, 0}, {4, 0, 0}, {1, 3, 0}, {1, 0.5, 0}, &s, &t), 0.25, 1e-15);
+  EXPECT_NEAR(s, 0.25, 1e-15);
+  EXPECT_NEAR(t, 1.0, 1e-15);
+  // endpoint to endpoint
+  EXPECT_NEAR(segment_segment_distance_squared({0, 0, 0}, {1, 0, 0}, {2, 1, 0}, {3, 1, 0}, &s, &t), 2.0, 1e-15);
+  EXPECT_NEAR(s, 1.0, 1e-15);
+  EXPECT_NEAR(t, 0.0, 1e-15);
+  std::uint64_t state = 17;
+  for (int k = 0; k < 2000; ++k) {
+    Vec3 p[4];
+    for (Vec3& v : p) v = Vec3(splitmix64_uniform(state), splitmix64_uniform(state), splitmix64_uniform(state)) * 2.0;
+    const double d2 = segment_segment_distance_squared(p[0], p[1], p[2], p[3], &s, &t);
+    ASSERT_TRUE(s >= 0 && s <= 1 && t >= 0 && t <= 1);
+    const Vec3 a = p[0] + s * (p[1] - p[0]), b = p[2] + t * (p[3] - p[2]);
+    ASSERT_NEAR((a - b).squaredNorm(), d2, 1e-12) << "case " << k;
+  }
 }
 
 TEST(SegmentDistance, MatchesDenseSampling) {

@@ -34,17 +34,23 @@ double segment_segment_distance_squared(const Vec3& p0, const Vec3& p1, const Ve
   }
   double best = std::numeric_limits<double>::infinity();
   double bs = 0.0, bt = 0.0, u = 0.0;
-  auto consider = [&](double d, double s, double t) {
+  // The parameter u is read after the distance that writes it (separate
+  // statements: the order in which a call's arguments are evaluated is unspecified).
+  auto consider = [&](double d, bool on_p, double fixed) {
     if (d < best) {
       best = d;
-      bs = s;
-      bt = t;
+      bs = on_p ? u : fixed;
+      bt = on_p ? fixed : u;
     }
   };
-  consider(point_segment_distance_squared(p0, q0, q1, &u), 0.0, u);
-  consider(point_segment_distance_squared(p1, q0, q1, &u), 1.0, u);
-  consider(point_segment_distance_squared(q0, p0, p1, &u), u, 0.0);
-  consider(point_segment_distance_squared(q1, p0, p1, &u), u, 1.0);
+  double d = point_segment_distance_squared(p0, q0, q1, &u);
+  consider(d, false, 0.0);
+  d = point_segment_distance_squared(p1, q0, q1, &u);
+  consider(d, false, 1.0);
+  d = point_segment_distance_squared(q0, p0, p1, &u);
+  consider(d, true, 0.0);
+  d = point_segment_distance_squared(q1, p0, p1, &u);
+  consider(d, true, 1.0);
   if (s_out) *s_out = bs;
   if (t_out) *t_out = bt;
   return best;
