@@ -367,8 +367,10 @@ TEST(Dynamics, BadOptionsAndStartsAreInputErrors) {
   fixtures::expect_input_error([&] { simulate(P, rest, o); }, "friction");
   o = DynamicsOptions();
   o.envelope = SlabOptions();
-  o.envelope->half_thickness = 0.1;
-  fixtures::expect_input_error([&] { simulate(ring(12, 0.5), rest, o); }, "envelope");
+  o.envelope->half_thickness = 0.1;  // plates thinner than the wire
+  fixtures::expect_input_error([&] { simulate(P, rest, o); }, "thickness 2r = 0.4");
+  o.envelope->half_thickness = 0.3;
+  fixtures::expect_input_error([&] { simulate(ring(12, 0.5), rest, o); }, "inside the envelope");
   o = DynamicsOptions();
   fixtures::expect_input_error([&] { simulate(P, rest, o, Points::Zero(3, 3)); }, "velocities");
 }

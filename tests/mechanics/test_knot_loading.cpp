@@ -153,7 +153,10 @@ TEST(KnotLoading, PressedEightOneSnapReleasesEnergyAtItsControl) {
   o.kind = LoadKind::Plates;
   o.relax_start = false;
   o.from = 0.930810547783;
-  o.to = 0.131682;  // the first step |to - from| / steps = 0.799, as in the run
+  // one step of 0.38 towards a gap above the wire's thickness 2r = 0.4: the
+  // snap releases energy at its control while the path points' energies,
+  // each at its own control, rise across the step
+  o.to = 0.55;
   o.steps = 1;
   o.normal = Vec3(0.48763379770361803, -0.13772313783943874, -0.86211693907544);
   o.stop_at_snap = true;
@@ -308,4 +311,26 @@ TEST(KnotLoading, BadInputIsRefused) {
   o.snap_jump = 0.0;
   EXPECT_THROW(load_knot(P, rest, o), InputError);
   EXPECT_THROW(parse_load_kind("twist"), InputError);
+}
+
+// A device that presses the wire thinner than it is (a gap below 2r) or pulls
+// two points to a negative distance is refused; the thickness follows the radius.
+TEST(KnotLoading, PlatesThinnerThanTheWireAndNegativeDistancesAreRefused) {
+  KnotLoadOptions o;
+  o.kind = LoadKind::Plates;
+  o.to = 0.39;
+  fixtures::expect_input_error([&] { o.validate(); }, "thickness 2r = 0.4");
+  o.to = 0.4;
+  EXPECT_NO_THROW(o.validate());
+  o.from = 0.2;
+  fixtures::expect_input_error([&] { o.validate(); }, "thickness");
+  o.from.reset();
+  o.relax.material.radius = 0.1;
+  o.to = 0.25;
+  EXPECT_NO_THROW(o.validate());
+  o.kind = LoadKind::Pull;
+  o.to = -5.0;
+  fixtures::expect_input_error([&] { o.validate(); }, "distance must be positive");
+  o.kind = LoadKind::Force;  // a force may push as well as pull
+  EXPECT_NO_THROW(o.validate());
 }

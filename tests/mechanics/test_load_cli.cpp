@@ -44,7 +44,7 @@ std::vector<std::string> lines_of(const std::string& file) {
 TEST(LoadCli, PressedTrefoilSnapsAndTheFolderAgreesWithTheSummary) {
   const std::string dir = temp_dir("load_cli_plates");
   const std::string state = trefoil(dir);
-  const auto r = run("load " + state + " --plates --to 0.3 -o " + dir + "/out --json");
+  const auto r = run("load " + state + " --plates --to 0.4 -o " + dir + "/out --json");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = r.json();
   EXPECT_EQ(j.at("load"), "plates");
@@ -98,20 +98,24 @@ TEST(LoadCli, BadInputIsOneLineAndExitTwo) {
   const std::string state = trefoil(dir);
   fs::create_directories(dir + "/exists");
   for (const std::string& args :
-       {"load " + dir + "/missing.obj --plates --to 0.3 -o " + dir + "/o1",  // no such file
+       {"load " + dir + "/missing.obj --plates --to 0.5 -o " + dir + "/o1",  // no such file
         "load " + state + " --to 0.3 -o " + dir + "/o2",                       // no load
-        "load " + state + " --plates --pull 0,1 --to 0.3 -o " + dir + "/o3",   // two loads
+        "load " + state + " --plates --pull 0,1 --to 0.5 -o " + dir + "/o3",   // two loads
         "load " + state + " --pull 0 --to 30 -o " + dir + "/o4",               // one vertex
         "load " + state + " --pull 0,500 --to 30 -o " + dir + "/o5",           // beyond the curve
         "load " + state + " --pull 0,1 --normal 0,0,1 --to 30 -o " + dir + "/o6",
         "load " + state + " --plates --from 0.01 --to 0.005 -o " + dir + "/o7",  // the curve is not between
-        "load " + state + " --plates --to 0.3 -o " + dir + "/exists",            // exists, no --overwrite
-        "load " + state + " --plates --to 0.3"}) {                              // no -o
+        "load " + state + " --plates --to 0 -o " + dir + "/o8",                 // thinner than the wire (2r = 0.4)
+        "load " + state + " --pull 0,40 --to -5 -o " + dir + "/o9",             // a negative distance
+        "load " + state + " --plates --to 0.5 -o " + dir + "/exists",            // exists, no --overwrite
+        "load " + state + " --plates --to 0.5"}) {                              // no -o
     const auto r = run(args);
     EXPECT_EQ(r.status, 2) << args;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << ": " << r.err;
   }
   EXPECT_TRUE(fs::is_empty(dir + "/exists"));
+  const auto thin = run("load " + state + " --plates --to 0.399 -o " + dir + "/o10");
+  EXPECT_NE(thin.err.find("at least the wire's thickness 2r = 0.4"), std::string::npos) << thin.err;
 }
 
 // Plates starting at a gap of 0.7, inside the relaxed trefoil's extent plus
@@ -120,7 +124,7 @@ TEST(LoadCli, BadInputIsOneLineAndExitTwo) {
 TEST(LoadCli, AStartWithoutEquilibriumIsOneLineAndExitOne) {
   const std::string dir = temp_dir("load_cli_stalled");
   const std::string state = trefoil(dir);
-  const auto r = run("load " + state + " --plates --from 0.7 --to 0.35 -o " + dir + "/out");
+  const auto r = run("load " + state + " --plates --from 0.7 --to 0.4 -o " + dir + "/out");
   EXPECT_EQ(r.status, 1) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   EXPECT_NE(r.err.find("no equilibrium under the load at its start (gap 0.7"), std::string::npos) << r.err;

@@ -26,7 +26,7 @@ def state():
 
 @pytest.fixture(scope="module")
 def pressed(state):
-    return ek.load(state, "plates", 0.3)
+    return ek.load(state, "plates", 0.4)
 
 
 @pytest.fixture(scope="module")
@@ -74,13 +74,13 @@ def check_path(r, n, sign):
 def test_pressed_trefoil_snaps_once_and_springs_back(state, pressed):
     r = pressed
     check_path(r, 96, -1.0)
-    assert r.load == "plates" and r.parameter == "gap" and r.to == 0.3
+    assert r.load == "plates" and r.parameter == "gap" and r.to == 0.4
     assert r.vertices is None and r.pull_stiffness is None
     assert np.linalg.norm(r.normal) == pytest.approx(1.0, rel=1e-12)
-    assert r.status == "stopped" and len(r.snaps) == 1  # it snaps before the gap reaches 0.3
+    assert r.status == "stopped" and len(r.snaps) == 1  # it snaps before the gap reaches 0.4
     s = r.snaps[0]
     assert s.point == r.points - 1 and r.path.event[-1] == "snap"
-    assert s.parameter > 0.3 and s.reaction > 0.0 and s.energy_drop > 0.0
+    assert s.parameter > 0.4 and s.reaction > 0.0 and s.energy_drop > 0.0
     assert s.jump > 0.1 * np.mean(np.linalg.norm(np.roll(state, -1, axis=0) - state, axis=1))
     # released, it relaxes back to the start's state
     assert s.released_energy == pytest.approx(r.start_energy, rel=1e-6)
@@ -143,7 +143,7 @@ def test_load_equals_the_cli(knots, tmp_path, state, pressed, dataset_path):
     src = str(tmp_path / "state.obj")
     ek.write_curve(src, state)
     out = tmp_path / "plates"
-    cli = knots.json("load", src, "--plates", "--to", "0.3", "-o", out)
+    cli = knots.json("load", src, "--plates", "--to", "0.4", "-o", out)
     expected = {k: v for k, v in cli.items() if k not in ("input", "output")}
     assert without_times(json_of(pressed)) == without_times(expected)
     assert list(json_of(pressed)) == list(expected)  # the command's key order
@@ -160,9 +160,9 @@ def test_load_equals_the_cli(knots, tmp_path, state, pressed, dataset_path):
         assert np.array_equal(pressed.path[name], rows[name]), name
     assert list(pressed.path.event) == list(rows["event"])
     # with options, and matched to a data set's equilibria
-    r = ek.load(state, "plates", 0.35, from_=0.9, normal=[0.0, 0.0, 1.0], steps=20, max_points=50,
+    r = ek.load(state, "plates", 0.4, from_=0.9, normal=[0.0, 0.0, 1.0], steps=20, max_points=50,
                 rest_length=1.0, dataset=dataset_path)
-    cli = knots.json("load", src, "--plates", "--to", "0.35", "--from", "0.9", "--normal", "0,0,1", "--steps", "20",
+    cli = knots.json("load", src, "--plates", "--to", "0.4", "--from", "0.9", "--normal", "0,0,1", "--steps", "20",
                      "--max-points", "50", "--rest-length", "1", "--dataset", dataset_path, "-o", tmp_path / "options")
     expected = {k: v for k, v in cli.items() if k not in ("input", "output")}
     assert without_times(json_of(r)) == without_times(expected)
@@ -174,7 +174,7 @@ def test_load_equals_the_cli(knots, tmp_path, state, pressed, dataset_path):
 def test_a_path_without_a_point_is_a_result(state):
     """Plates starting at a gap that presses the relaxed state (0.7 < 0.80): the start does not
     converge, the path stalls there with no point, and the result says so (no crash)."""
-    r = ek.load(state, "plates", 0.35, from_=0.7)
+    r = ek.load(state, "plates", 0.4, from_=0.7)
     assert r.points == 0 and len(r.path.parameter) == 0 and r.path.points.shape == (0, 96, 3)
     assert r.status == "stalled" and r.snaps == [] and r.work == 0.0 and r["from"] == 0.7
     assert r.end_energy is None and r.end_parameter is None and r.start_match is None
@@ -189,9 +189,11 @@ def test_bad_input_is_a_value_error_with_the_cli_message(knots, tmp_path, state)
              (("pull", 30.0), {"vertices": (0, 48), "normal": (0, 0, 1)},
               ["--pull", "0,48", "--to", "30", "--normal", "0,0,1"]),
              (("pull", 30.0), {"rest_length": -1.0}, ["--pull", "0,48", "--to", "30", "--rest-length", "-1"]),
-             (("plates", 0.3), {"from_": 0.01}, ["--plates", "--to", "0.3", "--from", "0.01"]),
-             (("plates", 0.3), {"normal": (0, 0, 0)}, ["--plates", "--to", "0.3", "--normal", "0,0,0"]),
-             (("plates", 0.3), {"steps": 0}, ["--plates", "--to", "0.3", "--steps", "0"])]
+             (("plates", 0.3), {}, ["--plates", "--to", "0.3"]),  # thinner than the wire
+             (("pull", -5.0), {"vertices": (0, 48)}, ["--pull", "0,48", "--to", "-5"]),  # a negative distance
+             (("plates", 0.5), {"from_": 0.01}, ["--plates", "--to", "0.5", "--from", "0.01"]),
+             (("plates", 0.5), {"normal": (0, 0, 0)}, ["--plates", "--to", "0.5", "--normal", "0,0,0"]),
+             (("plates", 0.5), {"steps": 0}, ["--plates", "--to", "0.5", "--steps", "0"])]
     for args, kwargs, cli in cases:
         with pytest.raises(ValueError) as e:
             ek.load(state, *args, **kwargs)
@@ -200,9 +202,9 @@ def test_bad_input_is_a_value_error_with_the_cli_message(knots, tmp_path, state)
     with pytest.raises(ValueError, match=r"^unknown load 'twist' \(expected pull, plates or force\)$"):
         ek.load(state, "twist", 1.0)
     with pytest.raises(ValueError, match="vertices apply to pull and force only"):
-        ek.load(state, "plates", 0.3, vertices=(0, 48))
+        ek.load(state, "plates", 0.5, vertices=(0, 48))
     with pytest.raises(ValueError, match=r"shape \(96, 2\)"):
-        ek.load(state[:, :2], "plates", 0.3)
+        ek.load(state[:, :2], "plates", 0.5)
     with pytest.raises(TypeError):
         ek.load(state, "pull", 30.0, vertices=(0, 1, 2))
     with pytest.raises(TypeError):
@@ -210,7 +212,7 @@ def test_bad_input_is_a_value_error_with_the_cli_message(knots, tmp_path, state)
 
 
 def test_load_in_a_thread_pool_equals_sequential_loads(state, pressed):
-    jobs = [("plates", 0.3, {}), ("pull", 30.0, {"vertices": (0, 48)})]
+    jobs = [("plates", 0.4, {}), ("pull", 30.0, {"vertices": (0, 48)})]
     sequential = [pressed, ek.load(state, "pull", 30.0, vertices=(0, 48))]
     with ThreadPoolExecutor(max_workers=2) as pool:
         parallel = list(pool.map(lambda job: ek.load(state, job[0], job[1], **job[2]), jobs))

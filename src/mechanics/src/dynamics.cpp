@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 #include "ek/contact/barrier.hpp"
 #include "ek/core/errors.hpp"
@@ -190,7 +191,13 @@ void DynamicsOptions::validate() const {
   require_input(std::isfinite(friction) && friction >= 0.0, "dynamics: the friction coefficient must be >= 0");
   require_input(std::isfinite(friction_velocity) && friction_velocity > 0.0,
                 "dynamics: the friction velocity must be positive");
-  if (envelope) envelope->validate();
+  if (envelope) {
+    envelope->validate();
+    std::ostringstream t;
+    t << 2.0 * model.material.radius;
+    require_input(envelope->half_thickness >= model.material.radius,
+                  "dynamics: the envelope's gap 2h must be at least the wire's thickness 2r = " + t.str());
+  }
   require_input(std::isfinite(envelope_speed) && envelope_speed >= 0.0, "dynamics: the envelope speed must be >= 0");
   require_input(frame_every >= 1, "dynamics: frames every >= 1 steps");
   require_input(std::isfinite(rest_speed) && rest_speed >= 0.0, "dynamics: the rest speed must be >= 0");

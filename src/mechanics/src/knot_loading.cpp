@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 #include "ek/core/errors.hpp"
 #include "ek/geometry/polyline.hpp"
@@ -39,6 +40,16 @@ void KnotLoadOptions::validate() const {
                 "load: the pull's stiffness and the plates' reach and stiffness must be positive");
   require_input(steps >= 1 && max_points >= 2 && eigen_count >= 0, "load: steps >= 1, max_points >= 2 required");
   require_input(snap_jump > 0.0 && std::isfinite(snap_jump), "load: snap_jump must be positive");
+  // A device that would press the wire thinner than it is, or pull two
+  // points to a negative distance, describes no physical load.
+  const double thickness = 2.0 * relax.material.radius;
+  std::ostringstream t;
+  t << thickness;
+  if (kind == LoadKind::Plates)
+    require_input(to >= thickness && (!from || *from >= thickness),
+                  "load: the plates' gap must be at least the wire's thickness 2r = " + t.str());
+  if (kind == LoadKind::Pull)
+    require_input(to > 0.0 && (!from || *from > 0.0), "load: the pulled points' distance must be positive");
 }
 
 namespace {
