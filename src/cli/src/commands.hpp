@@ -28,4 +28,5 @@ int cmd_transitions(int argc, char** argv);
 int cmd_path(int argc, char** argv);
 int cmd_connect(int argc, char** argv);
 int cmd_load(int argc, char** argv);
+int cmd_dynamics(int argc, char** argv);
 }  // namespace ek::cli

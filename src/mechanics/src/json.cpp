@@ -1,5 +1,8 @@
 #include "ek/mechanics/json.hpp"
 
+#include <algorithm>
+
+#include "ek/analysis/attributes.hpp"
 #include "ek/core/errors.hpp"
 
 namespace ek {
@@ -43,6 +46,45 @@ Json knot_load_json(const KnotLoadOptions& o, const KnotLoadResult& r, const Jso
     j["snaps"].push_back(sj);
   }
   j["seconds"] = json_number(r.path.seconds);
+  return j;
+}
+
+Json dynamics_json(const DynamicsOptions& o, const DynamicsResult& r, const Json& end_match, double seconds) {
+  require(!r.frames.empty(), "dynamics_json: a run has its first frame");
+  const DynamicsFrame &first = r.frames.front(), &last = r.frames.back();
+  double max_threedim = 0.0;
+  for (const DynamicsFrame& f : r.frames) max_threedim = std::max(max_threedim, threedim(f.positions));
+  const auto total = [](const DynamicsFrame& f) { return f.kinetic + f.elastic + f.gravity; };
+  Json j;
+  j["model"] = r.model;
+  j["link"] = o.model.link ? json_number(*o.model.link) : Json(nullptr);
+  j["time_step"] = json_number(o.time_step);
+  j["duration"] = json_number(o.duration);
+  j["density"] = json_number(o.density);
+  j["damping"] = json_number(o.damping);
+  j["gravity"] = Json({o.gravity(0), o.gravity(1), o.gravity(2)});
+  j["friction"] = json_number(o.friction);
+  j["friction_velocity"] = json_number(o.friction_velocity);
+  j["envelope"] = o.envelope ? json_number(o.envelope->half_thickness) : Json(nullptr);
+  j["envelope_speed"] = json_number(o.envelope_speed);
+  j["status"] = r.status;
+  j["failed_status"] = r.failed_status.empty() ? Json(nullptr) : Json(r.failed_status);
+  j["steps"] = r.steps;
+  j["time"] = json_number(r.time);
+  j["rest_time"] = r.rest_time ? json_number(*r.rest_time) : Json(nullptr);
+  j["frames"] = r.frames.size();
+  j["newton_iterations"] = r.newton_iterations;
+  j["max_speed"] = json_number(r.max_speed);
+  j["max_kinetic"] = json_number(r.max_kinetic);
+  j["start_energy"] = json_number(first.elastic);
+  j["end_energy"] = json_number(last.elastic);
+  j["start_threedim"] = json_number(threedim(first.positions));
+  j["end_threedim"] = json_number(threedim(last.positions));
+  j["max_threedim"] = json_number(max_threedim);
+  j["dissipated"] = json_number(total(first) - total(last));
+  j["alexander_preserved"] = r.alexander_preserved;
+  j["end_match"] = end_match;
+  j["seconds"] = json_number(seconds);
   return j;
 }
 
