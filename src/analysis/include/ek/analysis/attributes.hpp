@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Attributes of an equilibrium curve for filtering and sorting (paper
 /// Section 7.3, Fig. 7).
 ///

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Oriented bounding boxes of point sets, for the 3D-ness attribute (paper
 /// Section 7.3).
 #include "ek/geometry/types.hpp"

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// A closed curve as a union of k circles in space (paper Section 8.4, Fig.
 /// 15: 9_35's 3D state "is composed of three intertwined circles", and the
 /// knots retrieved near it "are all composed of three circular parts that are

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Agglomerative hierarchical clustering with complete linkage (paper
 /// Section 7.2, Fig. 6) on a distance matrix, usually D = 1 - S for a
 /// similarity matrix S (similarity.hpp).

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Similarity of two links of the same number of components: the
 /// curvature-torsion similarity of their components (similarity.hpp, paper
 /// Section 7.1) under the best pairing of components.

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// States of a link: when two equilibria of one link type are the same
 /// state. This is the comparison that a link's data set clusters on
 /// (dataset/pipeline.hpp). The paper's data sets hold knots only. Its

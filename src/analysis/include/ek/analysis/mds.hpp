@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Classical multidimensional scaling (Torgerson 1952; Gower 1966) of a
 /// distance matrix, for the 2D scatter plot of Fig. 6 (paper Section 7.2).
 ///

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Rigid alignment of closed curves (ICP with a search over cyclic shifts and
 /// symmetries) and cross-topology search (paper Section 8.2, Fig. 10): filter
 /// candidates by attribute ranges, then rank them by alignment distance.

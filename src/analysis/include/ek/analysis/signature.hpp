@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Curvature and curvature-weighted torsion signatures of a closed polygon
 /// (paper Section 7.1).
 ///

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Curvature-torsion similarity of closed curves (paper Section 7.1) with
 /// FFT cross-correlations.
 ///

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Rotational symmetry of closed curves and the crossing polygons of periodic
 /// braids (paper Section 8.4, Fig. 16: "the observed topological pattern also
 /// manifests itself in geometric symmetry"; "the crossing patterns form two

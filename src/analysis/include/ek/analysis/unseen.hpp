@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// What a knot's sampling has not seen yet, estimated from how many samples
 /// fell into each distinct state: a state is a "species", a sample an
 /// "individual", and the estimators are those of species richness.

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// The IPC barrier and the contact energy of one pair of segments (paper
 /// Section 6, "Contact Handling"; Li et al. 2020, "Incremental Potential
 /// Contact", eq. 6 and Section 4.3).

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Broad phase for edge-edge contact: all pairs of non-excluded edges whose
 /// axis-aligned boxes overlap, by a uniform spatial hash (no O(n²) scan).
 ///

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Self-contact of closed polylines that can never change the knot type
 /// (paper Section 6, "Contact Handling", eq. 1: E_rod + ω E_contact; the
 /// variational contact of Li et al. 2020 "Incremental Potential Contact" and

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Differentiable squared distances between the closest features of two
 /// segments (paper Section 6, "Contact Handling"; the distance types of
 /// Li et al. 2020, "Incremental Potential Contact", Section 4 and supplement).

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Collision detection for the linear motion between two curves, as `knots
 /// ccd` reports it (and the Python module's ccd()): vertex i moves on the line
 /// from start_i to end_i; the largest certified t ∈ [0, 1] such that up to t

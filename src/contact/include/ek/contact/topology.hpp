@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Closed polygonal components stored back to back in one Points array: a
 /// knot has one component, a link several. Component c owns the vertices
 /// starts[c] .. starts[c+1] − 1; edge v joins vertex v to next(v) (the

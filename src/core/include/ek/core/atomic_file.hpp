@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Crash-safe file output: nothing a user had is lost or overwritten by a
 /// failed or interrupted run.
 ///

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Error types shared by all modules.
 ///
 /// Conventions (docs/cli.md, "Common behaviour"):

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Which Hessian an energy term assembles.
 #include <string>
 

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// 128-bit integers (a GCC/Clang extension) for exact arithmetic.
 namespace ek {
 __extension__ typedef __int128 int128;

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Local-to-global assembly of sparse symmetric Hessians with a cached
 /// sparsity pattern (conventions 5 and 7: one shared helper; the pattern is
 /// built once per structure and then only filled with values).

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// What two data sets of the same knots, computed by two relaxation methods
 /// from the same lattice samples, say alike (`make compare-methods`,
 /// docs/reproducing.md). The method decides which local minimum a start

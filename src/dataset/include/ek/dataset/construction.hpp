@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Knots built from a PD code the project constructs (e.g. ek::pretzel_pd),
 /// drawn, relaxed and compared with a pattern state (paper Section 8.4,
 /// Fig. 15: "we can easily adapt the number of these crossings separately at

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// The data-set file: one HDF5 file holds the equilibria of many knot types
 /// (paper Section 7.4). Layout (docs/dataset-format.md documents it for users):
 ///

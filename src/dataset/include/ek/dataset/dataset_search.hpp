@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Searching a data set by attribute (the filters of paper Section 7.3,
 /// Fig. 7: attribute_extremes) and by shape (below).
 ///

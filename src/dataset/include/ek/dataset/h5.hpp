@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Thin RAII helpers over the HDF5 C API, shared by the HDF5 files of the
 /// project: data sets (dataset_file.hpp) and transition graphs
 /// (ek/transitions/transitions_file.hpp). Includes hdf5.h: a module that uses

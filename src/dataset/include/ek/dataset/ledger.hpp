@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// The ledger: a data set's result, small enough to commit and read without
 /// the data set (paper Section 7.4 builds the data set; Fig. 9 and the
 /// planarity claim only need per-knot results). Per knot type it keeps the

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// The parameters of a data set (the root attributes of its HDF5 file) as one
 /// table, metadata_fields(): every field's attribute name, unit, how it is
 /// compared, what a file written before the attribute existed reads as, and

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Filtering and sorting the equilibria of a data set by their attributes,
 /// as `knots query` does (and the Python module's Dataset.query()), on a
 /// data set or on a ledger.

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Many knot types into one data-set file: resumable, shardable, with
 /// progress reports (`knots explore` and `knots dataset`).
 ///

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// What sampling a data set cost, and what sampling more knots the same way
 /// would cost: the samples per knot of the adaptive rule (paper Section 7.4:
 /// 50 samples, then batches of 10 while new low-energy states appear, at

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Analyses of a knot's stored states (a KnotEntry of a data set) used by the
 /// paper experiments: how many distinct states are distinctly 3D (Figs. 2, 6,
 /// 8), which low-energy states a prefix of the samples finds (adaptive

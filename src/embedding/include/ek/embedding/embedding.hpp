@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Initial 3D embeddings of a knot type (paper Sections 5 and 8.3, Fig. 13):
 /// simple closed polygons with a requested number of vertices and equal edge
 /// lengths, built from a braid word or a PD code of the table.

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Hausdorff distance between two polylines (as point sets, not their
 /// vertices), the "direct measure of geometric similarity" the paper compares
 /// its curvature-torsion similarity with (Section 7.1, Fig. 5).

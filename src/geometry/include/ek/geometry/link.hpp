@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Links: several closed polygons (components) at once (paper Section 8.5:
 /// "intertwined combinations of several knots").
 ///

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// The best rigid motion between two point sets in correspondence (Kabsch,
 /// Acta Cryst. A32, 1976; proper rotations only, as in Umeyama, IEEE PAMI
 /// 13, 1991): with centred points y_c = y − ȳ, x_c = x − x̄ and the

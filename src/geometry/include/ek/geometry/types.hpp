@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Basic array types.
 ///
 /// A closed curve (polygon) with n vertices is a `Points` array, n by 3, one

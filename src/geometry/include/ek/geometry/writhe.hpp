@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Writhe of a closed polygon (paper Appendix C, eq. 5).
 #include "ek/geometry/types.hpp"
 

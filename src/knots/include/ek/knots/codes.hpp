@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Knot notations as they appear in the KnotInfo table (paper Section 3 and
 /// Appendix A): Dowker-Thistlethwaite (DT), planar diagram (PD) and braid words.
 ///

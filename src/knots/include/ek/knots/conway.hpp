@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// The Conway polynomial of knots and links, and Milnor's triple linking
 /// number of three-component links with vanishing linking numbers: the
 /// invariants that tell a link from the unlink when the components and the

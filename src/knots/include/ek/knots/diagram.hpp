@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Knot diagrams as signed Gauss codes, and their simplification.
 #include <cstdint>
 #include <vector>

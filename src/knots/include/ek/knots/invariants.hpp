@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Invariants of a table knot and of a curve, as `knots info` and `knots
 /// invariants` report them (and the Python module's knot() and invariants()).
 #include <cstdint>

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// A small table of links (several components), the counterpart of the
 /// knot table for links: each entry a braid word whose closure is the link
 /// (one component per cycle of its permutation, closure_cycles() order) and

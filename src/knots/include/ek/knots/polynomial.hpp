@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Exact integer polynomials for knot invariants.
 #include <cstdint>
 #include <string>

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Choosing knots of the table for a run smaller than the whole table: a
 /// deterministic stratified sample, so that a run on a small machine speaks
 /// for every kind of knot of the crossing numbers it samples.

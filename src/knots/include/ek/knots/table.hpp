@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// The KnotInfo knot table (C. Livingston and A. H. Moore, KnotInfo: Table of
 /// Knot Invariants), as a CSV file: the unknot and the 2,977 prime knots with
 /// up to 12 crossings (the table the paper's data set was computed on, paper

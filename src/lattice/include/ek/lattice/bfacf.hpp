@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// The BFACF random walk on self-avoiding lattice polygons (Berg and Foerster
 /// 1981; Aragão de Carvalho, Caracciolo and Fröhlich 1983; paper Section 5 and
 /// Fig. 4), with the fugacity parametrisation of Madras and Slade (The

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Polygons on the simple cubic lattice Z³ (paper Section 5, Fig. 4).
 ///
 /// A lattice polygon with n vertices is an n by 3 array of integers, one site

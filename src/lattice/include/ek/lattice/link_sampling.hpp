@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Random embeddings of a link on the cubic lattice: the knot schedule of
 /// sampling.hpp run on every component of one BFACF walk whose polygons share
 /// their occupied sites (bfacf.hpp), so no component passes through another.

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Equilibria of a knot along a load path, by pseudo-arclength continuation
 /// (Keller 1977), so that the path passes limit points (folds) where the
 /// load parameter turns back, with the stability of every point.

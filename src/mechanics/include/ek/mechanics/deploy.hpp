@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Deploying a flat multi-covered coil at a prescribed link: the jumping-knot
 /// pipeline of paper Section 8.3 (Figs. 12, 13), used for the periodic braids
 /// of Section 8.4 (Fig. 16: "initialized ... from multi-covered circle

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// JSON description of a knot under load (docs/cli.md, `knots load`): the
 /// summary's keys without those that name files (the command adds `input`
 /// first and `output` before `seconds`); the Python module's load() returns

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// A knot under load: the path of its equilibria as a device pulls two of
 /// its points apart, presses it between two plates, or applies a pair of
 /// forces (loads.hpp), followed by pseudo-arclength continuation

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Loads on a knot as potential terms of the position dofs (beside the rod,
 /// contact and slab terms of knot_terms.hpp), each controlled by one scalar
 /// parameter μ: a pull between two material points under displacement

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Discrete elastic rod for closed curves: stretching, bending and twisting
 /// with exact gradient and sparse Hessian, and the link Lk = Tw + Wr of the
 /// framed curve (paper Section 6 and Appendix C; Bergou et al. 2008 and 2010).

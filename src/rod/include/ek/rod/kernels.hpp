@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Local kernels of the discrete elastic rod (Bergou et al. 2008, "Discrete
 /// Elastic Rods"; Bergou et al. 2010, "Discrete Viscous Threads"; paper
 /// Section 6). Each kernel is a trio value / gradient / Hessian of free

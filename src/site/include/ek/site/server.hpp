@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// A static file server for a site held in memory (`knots serve`): HTTP/1.1
 /// on the loopback interface (127.0.0.1) only, GET and HEAD only, one
 /// request per connection. It answers only the site's own files: a target

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// The data-set explorer (paper Section 7: similarity, clustering, MDS,
 /// filters, cross-knot queries): a static web site written from a data-set
 /// file or from ledgers (ledger.hpp: a ledger file, or a folder of them

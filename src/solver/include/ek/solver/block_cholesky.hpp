@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Sparse Cholesky factorisation H + s·I = L Lᵀ in 3 × 3 blocks, for the
 /// Hessians of discrete rods: the three coordinates of a vertex form one
 /// block, so the symbolic work runs on the graph of the n vertices (not of

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Sparse Cholesky factorisation of H + shift·I with CHOLMOD (SuiteSparse),
 /// keeping the symbolic analysis between factorisations (paper Section 6,
 /// "Numerical Solver": the pattern of the contact Hessian changes only when

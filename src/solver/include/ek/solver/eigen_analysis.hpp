@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Smallest eigenpairs of a sparse symmetric Hessian (stability, stiffness,
 /// negative-curvature directions) with Spectra's Lanczos solver on the
 /// shift-inverted operator P (H + sI)⁻¹ P, using a CHOLMOD factor of H + sI:

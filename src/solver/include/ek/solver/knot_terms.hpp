@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// The terms of the knot relaxation (paper Section 6, eq. 1) as Potentials
 /// (objective.hpp) over the rod's dofs [x (3n) | θ (n) | Θ]:
 ///

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Relaxation of a link (paper Section 8.5: "We can easily extend our
 /// simulation algorithm to handle links, i.e. intertwined combinations of
 /// several knots").

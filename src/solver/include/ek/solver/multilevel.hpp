@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Coarse and fine versions of one closed curve for the multilevel
 /// relaxation (RelaxMethod::Multilevel, relax.hpp; docs/models.md, "Solver").
 ///

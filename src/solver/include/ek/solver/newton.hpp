@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Newton's method with a Hessian shift, CHOLMOD factorisation with symbolic
 /// reuse, a collision-free step bound and Armijo backtracking (paper Section 6,
 /// "Numerical Solver"), on an abstract objective (objective.hpp).

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Relaxing a closed curve to a stable equilibrium of the elastic rod with
 /// self-contact (paper Section 6, eq. 1):
 ///

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// The options of `knots relax` as a user gives them (docs/cli.md): the
 /// command-line options, which are also the Python module's relax() keyword
 /// arguments (snake_case of the option names), turned into RelaxOptions in

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Index-1 saddle points and minimum energy paths between stable states
 /// (paper Section 8.5, "transitions between stable states": the paper names
 /// minimum energy paths as the next step; this is ours).

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Planarity slab: a barrier that keeps every vertex between the planes
 /// z = -h and z = +h (used to flatten multi-covered circles for jumping knots,
 /// paper Section 8.3, "relax under the planarity slab").

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Newton restricted to the curves with a p-fold rotational symmetry (paper
 /// Section 8.4, Fig. 16: the periodic braids' states "with p-fold symmetry").
 ///

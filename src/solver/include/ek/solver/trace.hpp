@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// The Newton solver's iteration trace (NewtonOptions::record_trace) as CSV,
 /// one row per IterationRecord (newton.hpp), for `knots relax --trace` and
 /// the solver benchmarks. Columns, in this order:

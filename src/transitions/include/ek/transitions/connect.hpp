@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Joining two states of a transition graph by a chain of verified saddles
 /// (paper Section 8.5: the transitions between stable states and the
 /// barriers separating them are left open there).

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Double-ended search for a transition between two known, distinct stable
 /// states A and B of an elastic knot (paper Section 8.5: "we currently do not
 /// have the means to find the transition between such states, nor quantify

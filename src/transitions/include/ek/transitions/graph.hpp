@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// The transition graph of a knot's stable states (paper Section 8.5):
 /// nodes are states with their energies (the data set's clusters at a cut,
 /// represented by their lowest-energy member, and minima that the descents

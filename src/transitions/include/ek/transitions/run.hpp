@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// The transition graph of one knot of a data set (`knots transitions`, the
 /// transitions experiment; paper Section 8.5). The representative of every
 /// cluster at the cut (clusters_at_cut(), by increasing energy) is a state;

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Verified index-1 saddles of an elastic knot next to one of its stable
 /// states, and the minimum energy paths through them (paper Section 8.5:
 /// "we currently do not have the means to find the transition between such

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// The outcomes of the searches of this module as types. Their texts
 /// (to_string(), from_string()) appear only in files, JSON and CSV: the
 /// transitions file's searches/ and pairs/ columns (transitions_file.hpp),

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// The transitions file (HDF5; docs/dataset-format.md, "Transitions file"):
 ///
 ///   /   attributes: format = "elastic-knots-transitions", format_version = 1,
