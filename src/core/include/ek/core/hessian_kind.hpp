@@ -5,6 +5,8 @@
 
 namespace ek {
 
+/// Which Hessian an energy term assembles: the exact one or a positive
+/// semidefinite approximation of it.
 enum class HessianKind {
   /// The exact second derivative (the stability test at convergence, eigen-analysis, saddles).
   Exact,
@@ -13,6 +15,7 @@ enum class HessianKind {
   /// pair's barrier), for better Newton directions far from equilibrium.
   Projected,
 };
+/// "exact" or "projected".
 inline std::string to_string(HessianKind kind) { return kind == HessianKind::Exact ? "exact" : "projected"; }
 
 }  // namespace ek
