@@ -23,7 +23,7 @@
 
 namespace ek {
 
-using Link = std::vector<Points>;
+using Link = std::vector<Points>;  ///< One closed polygon (n_c by 3) per component.
 
 /// Parses link text ("obj" or "txt"); `source` names the input in messages.
 /// Every component is validated (validate_closed_curve) and the link too
