@@ -89,8 +89,10 @@ class BfacfWalk {
   /// polygon and no two share a site.
   BfacfWalk(const std::vector<LatticePoints>& components, std::uint64_t seed);
   ~BfacfWalk();
+  /// Moves the walk (its polygons, occupied sites and generator); the walk moved
+  /// from may only be destroyed or assigned to.
   BfacfWalk(BfacfWalk&&) noexcept;
-  BfacfWalk& operator=(BfacfWalk&&) noexcept;
+  BfacfWalk& operator=(BfacfWalk&&) noexcept;  ///< Moves the walk, as the move constructor.
   BfacfWalk(const BfacfWalk&) = delete;
   BfacfWalk& operator=(const BfacfWalk&) = delete;
 

@@ -91,7 +91,7 @@ struct LatticeStartOptions {
   /// EmbeddingOptions::pd_crossing_height of the PD drawings (the embedding's
   /// default 0.3 gives a smaller clearance relative to the length).
   double pd_crossing_height = 1.0;  ///< [shortest piece]
-  RoundingOptions rounding;
+  RoundingOptions rounding;         ///< How each embedding is rounded onto Z³ (rounding.hpp).
 };
 
 /// A table knot's initial lattice polygon and how it was obtained.
