@@ -47,8 +47,8 @@ double barrier_second_derivative(double d, double dhat);
 /// The mollifier m(c) = (c/ε)(2 − c/ε) for c < ε, 1 otherwise, and its first
 /// and second derivatives in c.
 double parallel_mollifier(double c, double eps);
-double parallel_mollifier_first_derivative(double c, double eps);
-double parallel_mollifier_second_derivative(double c, double eps);
+double parallel_mollifier_first_derivative(double c, double eps);   ///< m'(c).
+double parallel_mollifier_second_derivative(double c, double eps);  ///< m''(c).
 
 /// sin² of the angle between a = ea1 − ea0 and b = eb1 − eb0,
 /// c = 1 − (a·b)²/(|a|²|b|²), with gradient and Hessian in the dofs
@@ -66,8 +66,12 @@ struct PairBarrierParams {
 /// dofs (ea0, ea1, eb0, eb1). +∞ when the segments touch.
 double edge_edge_barrier(const Vec3& ea0, const Vec3& ea1, const Vec3& eb0, const Vec3& eb1,
                          const PairBarrierParams& params);
+/// Gradient (12) of edge_edge_barrier() in the dofs (ea0, ea1, eb0, eb1);
+/// zero when the pair is farther than d̂.
 Vec12 edge_edge_barrier_gradient(const Vec3& ea0, const Vec3& ea1, const Vec3& eb0, const Vec3& eb1,
                                  const PairBarrierParams& params);
+/// Hessian (12 by 12) of edge_edge_barrier() in the dofs (ea0, ea1, eb0, eb1);
+/// zero when the pair is farther than d̂.
 Mat12 edge_edge_barrier_hessian(const Vec3& ea0, const Vec3& ea1, const Vec3& eb0, const Vec3& eb1,
                                 const PairBarrierParams& params);
 

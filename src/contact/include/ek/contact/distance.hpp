@@ -47,12 +47,12 @@
 
 namespace ek {
 
-using Vec6 = Eigen::Matrix<double, 6, 1>;
-using Vec9 = Eigen::Matrix<double, 9, 1>;
-using Vec12 = Eigen::Matrix<double, 12, 1>;
-using Mat6 = Eigen::Matrix<double, 6, 6>;
-using Mat9 = Eigen::Matrix<double, 9, 9>;
-using Mat12 = Eigen::Matrix<double, 12, 12>;
+using Vec6 = Eigen::Matrix<double, 6, 1>;     ///< Gradient in the dofs of 2 points (x, y, z each).
+using Vec9 = Eigen::Matrix<double, 9, 1>;     ///< Gradient in the dofs of 3 points (x, y, z each).
+using Vec12 = Eigen::Matrix<double, 12, 1>;   ///< Gradient in the dofs of 4 points (x, y, z each).
+using Mat6 = Eigen::Matrix<double, 6, 6>;     ///< Hessian in the dofs of 2 points.
+using Mat9 = Eigen::Matrix<double, 9, 9>;     ///< Hessian in the dofs of 3 points.
+using Mat12 = Eigen::Matrix<double, 12, 12>;  ///< Hessian in the dofs of 4 points.
 
 /// Below this sin² of the angle between two segments the edge-edge interior
 /// case is not used (see the file comment).
@@ -61,17 +61,21 @@ inline constexpr double kParallelSin2 = 1e-10;
 // ---------------------------------------------------------------------------
 // Point-point: s = |p − q|².
 
+/// s = |p − q|² [length²].
 double point_point_distance_squared(const Vec3& p, const Vec3& q);
-Vec6 point_point_distance_squared_gradient(const Vec3& p, const Vec3& q);
-Mat6 point_point_distance_squared_hessian(const Vec3& p, const Vec3& q);
+Vec6 point_point_distance_squared_gradient(const Vec3& p, const Vec3& q);  ///< ∇s in the dofs (p, q).
+Mat6 point_point_distance_squared_hessian(const Vec3& p, const Vec3& q);   ///< ∇²s in the dofs (p, q).
 
 // ---------------------------------------------------------------------------
 // Point-line: s = |(p − e0) × e|² / |e|², e = e1 − e0 (distance from p to the
 // infinite line through e0 and e1; e0 != e1). Closest point e0 + t e with
 // t = (p − e0)·e / |e|².
 
+/// s = |(p − e0) × e|² / |e|² [length²], e = e1 − e0 (e0 != e1).
 double point_line_distance_squared(const Vec3& p, const Vec3& e0, const Vec3& e1);
+/// ∇s in the dofs (p, e0, e1).
 Vec9 point_line_distance_squared_gradient(const Vec3& p, const Vec3& e0, const Vec3& e1);
+/// ∇²s in the dofs (p, e0, e1).
 Mat9 point_line_distance_squared_hessian(const Vec3& p, const Vec3& e0, const Vec3& e1);
 
 // ---------------------------------------------------------------------------
@@ -80,8 +84,11 @@ Mat9 point_line_distance_squared_hessian(const Vec3& p, const Vec3& e0, const Ve
 // eb0 + t b with (s, t) solving [a·a, −a·b; −a·b, b·b] (s, t) = (−a·r, b·r),
 // r = ea0 − eb0.
 
+/// s = ((ea0 − eb0)·n)² / |n|² [length²], n = a × b (the lines not parallel).
 double line_line_distance_squared(const Vec3& ea0, const Vec3& ea1, const Vec3& eb0, const Vec3& eb1);
+/// ∇s in the dofs (ea0, ea1, eb0, eb1).
 Vec12 line_line_distance_squared_gradient(const Vec3& ea0, const Vec3& ea1, const Vec3& eb0, const Vec3& eb1);
+/// ∇²s in the dofs (ea0, ea1, eb0, eb1).
 Mat12 line_line_distance_squared_hessian(const Vec3& ea0, const Vec3& ea1, const Vec3& eb0, const Vec3& eb1);
 
 // ---------------------------------------------------------------------------
@@ -91,11 +98,14 @@ Mat12 line_line_distance_squared_hessian(const Vec3& ea0, const Vec3& ea1, const
 /// (P_E1), or the interior (P_E, point-line distance).
 enum class PointEdgeDistanceType { P_E0, P_E1, P_E };
 
+/// The closest feature of [e0, e1] to p.
 PointEdgeDistanceType point_edge_distance_type(const Vec3& p, const Vec3& e0, const Vec3& e1);
 /// The chosen case's squared distance (the exact point-segment distance when
 /// `type` is point_edge_distance_type(p, e0, e1)); dofs (p, e0, e1).
 double point_edge_distance_squared(const Vec3& p, const Vec3& e0, const Vec3& e1, PointEdgeDistanceType type);
+/// Gradient (9) of the chosen case in the dofs (p, e0, e1).
 Vec9 point_edge_distance_squared_gradient(const Vec3& p, const Vec3& e0, const Vec3& e1, PointEdgeDistanceType type);
+/// Hessian (9 by 9) of the chosen case in the dofs (p, e0, e1).
 Mat9 point_edge_distance_squared_hessian(const Vec3& p, const Vec3& e0, const Vec3& e1, PointEdgeDistanceType type);
 
 // ---------------------------------------------------------------------------
@@ -105,15 +115,15 @@ Mat9 point_edge_distance_squared_hessian(const Vec3& p, const Vec3& e0, const Ve
 /// against the other segment's interior (EA0_EB, ...), or two endpoints
 /// (EA0_EB0, ...).
 enum class EdgeEdgeDistanceType {
-  EA_EB,
-  EA0_EB,
-  EA1_EB,
-  EA_EB0,
-  EA_EB1,
-  EA0_EB0,
-  EA0_EB1,
-  EA1_EB0,
-  EA1_EB1
+  EA_EB,    ///< Interior of a against interior of b (line-line distance).
+  EA0_EB,   ///< Endpoint ea0 against the interior of b (point-line).
+  EA1_EB,   ///< Endpoint ea1 against the interior of b (point-line).
+  EA_EB0,   ///< Endpoint eb0 against the interior of a (point-line).
+  EA_EB1,   ///< Endpoint eb1 against the interior of a (point-line).
+  EA0_EB0,  ///< Endpoints ea0 and eb0 (point-point).
+  EA0_EB1,  ///< Endpoints ea0 and eb1 (point-point).
+  EA1_EB0,  ///< Endpoints ea1 and eb0 (point-point).
+  EA1_EB1   ///< Endpoints ea1 and eb1 (point-point).
 };
 
 /// Short name of a type ("EA_EB", "EA0_EB1", ...).
@@ -125,9 +135,10 @@ EdgeEdgeDistanceType edge_edge_distance_type(const Vec3& ea0, const Vec3& ea1, c
 
 /// Classification and value in one pass (the squared segment distance).
 struct EdgeEdgeClosest {
-  EdgeEdgeDistanceType type = EdgeEdgeDistanceType::EA_EB;
+  EdgeEdgeDistanceType type = EdgeEdgeDistanceType::EA_EB;  ///< The closest features (edge_edge_distance_type()).
   double distance_squared = 0.0;  ///< [length²]
 };
+/// edge_edge_distance_type() and the squared distance of that case.
 EdgeEdgeClosest edge_edge_closest(const Vec3& ea0, const Vec3& ea1, const Vec3& eb0, const Vec3& eb1);
 
 /// Parameters (s, t) of the closest points ea0 + s (ea1 − ea0) and
@@ -138,8 +149,10 @@ void edge_edge_closest_parameters(const Vec3& ea0, const Vec3& ea1, const Vec3& 
 /// The chosen case's squared distance, scattered into the dofs (ea0, ea1, eb0, eb1).
 double edge_edge_distance_squared(const Vec3& ea0, const Vec3& ea1, const Vec3& eb0, const Vec3& eb1,
                                   EdgeEdgeDistanceType type);
+/// Gradient (12) of the chosen case in the dofs (ea0, ea1, eb0, eb1).
 Vec12 edge_edge_distance_squared_gradient(const Vec3& ea0, const Vec3& ea1, const Vec3& eb0, const Vec3& eb1,
                                           EdgeEdgeDistanceType type);
+/// Hessian (12 by 12) of the chosen case in the dofs (ea0, ea1, eb0, eb1).
 Mat12 edge_edge_distance_squared_hessian(const Vec3& ea0, const Vec3& ea1, const Vec3& eb0, const Vec3& eb1,
                                          EdgeEdgeDistanceType type);
 

@@ -26,8 +26,9 @@ class AtomicFile {
   AtomicFile(const AtomicFile&) = delete;
   AtomicFile& operator=(const AtomicFile&) = delete;
 
-  std::ostream& stream() { return out_; }  ///< The stream that writes the temporary file.
-  const std::string& temporary_path() const { return tmp_; }  ///< "<path>.tmp.<pid>.<counter>", renamed onto the destination by commit().
+  std::ostream& stream() { return out_; }                     ///< The stream that writes the temporary file.
+  /// "<path>.tmp.<pid>.<counter>", renamed onto the destination by commit().
+  const std::string& temporary_path() const { return tmp_; }
   /// Flushes, fsyncs and renames the temporary onto the destination.
   /// Throws InputError if any write failed.
   void commit();

@@ -35,7 +35,7 @@ struct PDCrossing {
 /// PD code of a knot diagram with c crossings and 2c edges labelled 1..2c
 /// along the orientation.
 struct PDCode {
-  std::vector<PDCrossing> crossings;  ///< The c crossings, in the code's order.
+  std::vector<PDCrossing> crossings;                               ///< The c crossings, in the code's order.
   int size() const { return static_cast<int>(crossings.size()); }  ///< c, the number of crossings.
 };
 
@@ -43,7 +43,7 @@ struct PDCode {
 /// σ_i is a positive crossing of strands i and i+1 (the closure's diagram
 /// has writhe = Σ sign(letters)).
 struct BraidWord {
-  int strands = 0;  ///< Number of strands (≥ 1 + max |letter|).
+  int strands = 0;           ///< Number of strands (≥ 1 + max |letter|).
   std::vector<int> letters;  ///< ±i for σ_i^{±1}, in the order of the word.
   /// Number of letters (crossings of the closure's diagram).
   int length() const { return static_cast<int>(letters.size()); }
@@ -98,7 +98,7 @@ std::vector<BraidWord> parse_braid_list(const std::string& text);
 
 /// Table spellings: "[4; 6; 8; 2]", "[[4;2;5;1];[8;6;1;5]]", "{1;-2;1;-2}".
 std::string to_string(const DTCode& code);
-std::string to_string(const PDCode& code);   ///< The table's spelling, "[[4;2;5;1];[8;6;1;5]]".
+std::string to_string(const PDCode& code);     ///< The table's spelling, "[[4;2;5;1];[8;6;1;5]]".
 std::string to_string(const BraidWord& word);  ///< The table's spelling, "{1;-2;1;-2}".
 
 /// Number of components of the braid's closure (cycles of its permutation).

@@ -49,8 +49,8 @@ LinkSampleBatch sample_lattice_link(const std::vector<LatticePoints>& start, con
 /// type (components' types, linking numbers, ∇).
 struct LatticeLinkStart {
   std::vector<LatticePoints> components;  ///< One self-avoiding lattice polygon per component; no two share a site.
-  LinkType type;  ///< The link type the start was checked against (the table's or the curves').
-  double scale = 0.0;  ///< [lattice units / length] of the rounding; 0 when no rounding was needed
+  LinkType type;                          ///< The link type the start was checked against (the table's or the curves').
+  double scale = 0.0;                     ///< [lattice units / length] of the rounding; 0 when no rounding was needed
 };
 /// The lattice start of the table link `link` (see LatticeLinkStart). Throws
 /// TopologyError when the rounded link's type (the components' Alexander

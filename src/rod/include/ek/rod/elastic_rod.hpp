@@ -91,10 +91,10 @@ class ElasticRod {
   /// belongs to edge j from vertex j to vertex j+1).
   ElasticRod(const Points& positions, const VecX& rest_edge_lengths, RodMaterial material, TwistModel model);
 
-  int num_vertices() const { return n_; }
-  int num_dofs() const;
-  TwistModel model() const { return model_; }
-  const RodMaterial& material() const { return material_; }
+  int num_vertices() const { return n_; }                    ///< n, the number of vertices (= edges).
+  int num_dofs() const;                                      ///< 3n (TwistFree), 4n + 1 (FreeTheta) or 4n (FixedLink).
+  TwistModel model() const { return model_; }                ///< The unknowns of the rod (TwistModel).
+  const RodMaterial& material() const { return material_; }  ///< E, ν and r of the wire.
 
   /// [x (3n) | θ (n) | Θ (FreeTheta only)].
   VecX dofs() const;
@@ -102,7 +102,7 @@ class ElasticRod {
   /// changed: reference directors and twists follow by time-parallel transport
   /// from the source (see update_reference_frames()).
   void set_dofs(const VecX& x);
-  const Points& positions() const { return x_; }
+  const Points& positions() const { return x_; }  ///< Current vertices x_i (n by 3).
   /// Material angles θ_j (n; zero in TwistFree).
   const VecX& thetas() const { return theta_; }
 
@@ -135,13 +135,18 @@ class ElasticRod {
   /// Complete state (positions, angles, source frames), for a line search:
   /// save() before trial points, restore() to go back (conventions 8).
   struct State {
-    Points x;
-    VecX theta;
-    double Theta = 0.0;
-    Eigen::Matrix3Xd source_tangents, source_directors;  ///< 3 by n, column j for edge j
+    Points x;            ///< Vertices (n by 3).
+    VecX theta;          ///< Material angles θ_j (n) [rad].
+    double Theta = 0.0;  ///< Injected twist Θ [rad].
+    ///@{
+    /// Source tangents s_j and source directors u_j of the parallel transport
+    /// (3 by n, column j for edge j).
+    Eigen::Matrix3Xd source_tangents, source_directors;
+    ///@}
     VecX source_twist;                                   ///< n, m_i at the source
   };
-  State save() const;
+  State save() const;                ///< The complete state, to return to with restore().
+  /// Returns to a state that save() took; std::invalid_argument for a state of another size.
   void restore(const State& state);
 
   /// Sets θ (and Θ in FreeTheta) to the minimiser of the twisting energy for

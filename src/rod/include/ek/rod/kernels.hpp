@@ -16,12 +16,14 @@
 
 #include "ek/geometry/types.hpp"
 
+/// The rod's local kernels (value, gradient, Hessian of one stencil), which
+/// ElasticRod assembles.
 namespace ek::rod {
 
-using Vec6 = Eigen::Matrix<double, 6, 1>;
-using Mat6 = Eigen::Matrix<double, 6, 6>;
-using Vec9 = Eigen::Matrix<double, 9, 1>;
-using Mat9 = Eigen::Matrix<double, 9, 9>;
+using Vec6 = Eigen::Matrix<double, 6, 1>;  ///< Gradient of a vertex kernel: (∂/∂a, ∂/∂b).
+using Mat6 = Eigen::Matrix<double, 6, 6>;  ///< Hessian of a vertex kernel in the edge vectors (a, b).
+using Vec9 = Eigen::Matrix<double, 9, 1>;  ///< Gradient in the coordinates of three vertices (x_{i-1}, x_i, x_{i+1}).
+using Mat9 = Eigen::Matrix<double, 9, 9>;  ///< Hessian in the coordinates of three vertices (x_{i-1}, x_i, x_{i+1}).
 
 // ---------------------------------------------------------------------------
 // Stretching of one edge
