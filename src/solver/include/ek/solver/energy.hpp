@@ -19,6 +19,8 @@
 
 namespace ek {
 
+/// The model of curve_energy(): the material, and the link and rest length when
+/// prescribed.
 struct CurveEnergyOptions {
   RodMaterial material;              ///< E, ν, r (paper defaults)
   std::optional<double> link;        ///< [1] prescribed link Lk (full model, Θ fixed); none: twist-free
@@ -29,6 +31,8 @@ struct CurveEnergyOptions {
   void validate() const;
 };
 
+/// What curve_energy() reports: the energy's parts, the gradient norm, the
+/// contacts, and twist, writhe and link.
 struct CurveEnergy {
   int vertices = 0;                  ///< [1] n
   std::string model;                 ///< "twist-free" or "fixed-link"

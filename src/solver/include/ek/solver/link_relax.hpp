@@ -32,13 +32,16 @@
 
 namespace ek {
 
+/// What relax_link() returns: the equilibrium of the link, the solver's
+/// reports and the link type checked on the result.
 struct LinkRelaxResult {
   Link positions;                               ///< the equilibrium, one n_c by 3 array per component
   NewtonReport report;                          ///< of the solve at ω
   std::vector<NewtonReport> continuation_reports;  ///< of the continuation solves, in order
   double energy = 0.0;                          ///< [energy] E at the result
   std::vector<EnergyPart> parts;                ///< E's parts at the result: "stretch", "bend", "contact"
-  double min_distance = 0.0;                    ///< [length] smallest distance of edges sharing no vertex, components included
+  /// [length] smallest distance of edges sharing no vertex, components included
+  double min_distance = 0.0;
   std::vector<AlexanderPolynomial> alexander;   ///< of the input's components
   Eigen::MatrixXi linking_numbers;              ///< [1] of the input (m by m)
   bool alexander_preserved = true;              ///< every component's polynomial equal on the result
@@ -46,7 +49,7 @@ struct LinkRelaxResult {
   ConwayPolynomial conway;                      ///< the input link's ∇ (conway.hpp)
   bool conway_preserved = true;                 ///< ∇ equal on the result (tells the Borromean rings from the unlink)
 
-  bool converged() const;
+  bool converged() const;  ///< Whether the solve at ω converged (stable or, with stop_at_critical_point, unstable).
   /// Every component's Alexander polynomial, every linking number and ∇ kept.
   bool topology_preserved() const { return alexander_preserved && linking_preserved && conway_preserved; }
   /// The solver's status, or "topology-changed" when a component's
@@ -73,7 +76,7 @@ class LinkModel {
   Objective& objective(double factor = 1.0);
   Link components() const;  ///< the current positions, one array per component
   double min_distance();    ///< [length] smallest distance of edges sharing no vertex
-  const ResolvedModel& model() const;
+  const ResolvedModel& model() const;  ///< d̂, ω and the tolerance resolved from the options.
   /// The Newton options of the relaxation (newton_options() of relax.hpp),
   /// λ_min that of the straight rod with the link's total vertex count.
   NewtonOptions newton_options() const;

@@ -13,6 +13,8 @@
 
 namespace ek {
 
+/// The options of `knots relax` (and the Python module's relax()) as given,
+/// before options() turns them into RelaxOptions.
 struct RelaxRequest {
   std::optional<double> link;          ///< [1] --link: prescribed Lk = Tw + Wr (full model, Θ fixed); none: Θ free
   std::optional<double> planar;        ///< [length] --planar H: keep every vertex in the slab |z| < H

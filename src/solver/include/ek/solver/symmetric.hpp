@@ -90,7 +90,7 @@ class SymmetricObjective : public Objective {
 
   /// The full dofs S y + b of reduced dofs y.
   VecX full_dofs(const VecX& y) const { return S_ * y + b_; }
-  const CyclicSymmetry& symmetry() const { return symmetry_; }
+  const CyclicSymmetry& symmetry() const { return symmetry_; }  ///< The symmetry of the subspace.
 
  private:
   Objective& full_;
@@ -124,8 +124,8 @@ struct CriticalPointOptions {
 /// "converged" whatever the index (solve_critical_point() does not test it),
 /// MaxIterations or Stalled.
 struct CriticalPointReport {
-  SolverStatus status = SolverStatus::MaxIterations;
-  int iterations = 0;
+  SolverStatus status = SolverStatus::MaxIterations;  ///< ConvergedUnstable (converged), MaxIterations or Stalled
+  int iterations = 0;          ///< [1] Newton–Raphson iterations taken
   double energy = 0.0;         ///< [energy]
   double gradient_norm = 0.0;  ///< [energy/length] ||g||₂ of the objective's dofs
   double seconds = 0.0;        ///< [s]
@@ -145,6 +145,8 @@ enum class SymmetricSolve {
 };
 std::string to_string(SymmetricSolve solve);          ///< "minimize", "root"
 
+/// The model and the solve of find_symmetric_critical_point() and
+/// descend_symmetric().
 struct SymmetricSearchOptions {
   /// The model (twist-free only: no link, no full model, no slab): material,
   /// d̂, ω, tolerance, iteration cap and Newton options as for relax().
@@ -194,13 +196,12 @@ struct SymmetricCriticalPoint {
   /// rigid modes projected out. Complete when `index_complete`; otherwise a
   /// lower bound (every computed eigenvalue was negative).
   int index = 0;
-  bool index_complete = false;
+  bool index_complete = false;        ///< some computed eigenvalue was non-negative: `index` is the whole index
   int near_zero = 0;                  ///< [1] eigenvalues within ±threshold
   double threshold = 0.0;             ///< [energy/length²]
   /// The lowest eigenpairs, ascending: every negative one and the lowest
   /// non-negative ones computed with them.
   std::vector<SymmetricMode> modes;
-  /// The lowest eigenvalue restricted to the symmetric subspace's directions
   /// The index within the subspace: the negative eigenvalues of the
   /// restricted Hessian Sᵀ H S (symmetric rigid modes projected out), below
   /// −p·threshold. 0: the point is a minimum within the subspace, so every

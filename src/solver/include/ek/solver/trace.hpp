@@ -48,10 +48,14 @@ struct TraceSummary {
   int short_steps = 0;            ///< accepted step t < 1/64 (cut by the line search or the collision bound)
   int collision_limited = 0;      ///< collision-free bound < 1
   int exact_iterations = 0;       ///< the exact Hessian's
+  ///@{
+  /// Sums over the records: numeric factorisations (failed included), failed
+  /// factorisations, and iterations whose Hessian pattern changed.
   int factorizations = 0, failed_factorizations = 0, pattern_changes = 0;
+  ///@}
   double seconds = 0.0;           ///< [s] summed iteration time
   double seconds_exact = 0.0;     ///< [s] of it in iterations with the exact Hessian
-  void add(const TraceSummary& other);
+  void add(const TraceSummary& other);  ///< Adds `other`'s counts and times (summaries of several runs).
 };
 
 /// Summarises a trace (every phase; excess energies per phase).
