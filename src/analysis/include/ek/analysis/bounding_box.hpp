@@ -11,7 +11,7 @@ struct OrientedBox {
   Vec3 center = Vec3::Zero();  ///< [length]
   Mat3 axes = Mat3::Identity();  ///< orthonormal columns a_0, a_1, a_2 (right-handed)
   Vec3 extents = Vec3::Zero();   ///< [length] edge lengths along the axes, sorted descending
-  double volume() const { return extents.prod(); }
+  double volume() const { return extents.prod(); }  ///< [length³] product of the extents
 };
 
 /// Box aligned with the principal axes of the points' covariance (PCA box).

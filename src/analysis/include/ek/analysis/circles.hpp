@@ -59,6 +59,7 @@ struct CircleFit {
   double max_distance = 0.0;     ///< [length] largest distance of a vertex to its circle
   double mean_radius = 0.0;      ///< [length] share-weighted mean radius
   double min_plane_angle = 0.0;  ///< [rad] smallest angle between two circles' planes, in [0, π/2]
+  /// [1] rms_distance / mean_radius (0 when the mean radius is 0)
   double relative_rms() const { return mean_radius > 0.0 ? rms_distance / mean_radius : 0.0; }
 };
 

@@ -27,6 +27,8 @@
 
 namespace ek {
 
+/// What compare_links() returns: the link similarity, the best pairing of
+/// components and each pair's curve similarity.
 struct LinkSimilarityResult {
   double similarity = 0.0;                 ///< [1] S(A, B) in [0, 1]
   std::vector<int> pairing;                ///< component i of A is paired with pairing[i] of B

@@ -54,6 +54,8 @@
 
 namespace ek {
 
+/// The resolution of the link descriptor: q points per component and K
+/// quantiles (see the file's description).
 struct LinkShapeOptions {
   int samples = 256;    ///< [1] q, points per component (>= 4)
   int quantiles = 128;  ///< [1] K, quantiles of each distance distribution (>= 1)
@@ -63,12 +65,13 @@ struct LinkShapeOptions {
 /// A link's descriptor: each component's quantile function Q_c (K values,
 /// [mean component length]).
 struct LinkShape {
-  std::vector<Eigen::VectorXd> components;
+  std::vector<Eigen::VectorXd> components;  ///< Q_c, one K-vector per component, in the link's order
 };
 
 /// The descriptor of `link` (components of >= 3 vertices, positive length).
 LinkShape link_shape(const Link& link, const LinkShapeOptions& options = {});
 
+/// What link_state_distance() returns: d(A, B) and the pairing that realises it.
 struct LinkStateDistance {
   double distance = 0.0;     ///< [mean component length] d(A, B)
   std::vector<int> pairing;  ///< component c of A is paired with pairing[c] of B

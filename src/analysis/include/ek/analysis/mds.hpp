@@ -32,7 +32,7 @@ struct MdsResult {
   /// [1] Σ_k max(λ_k, 0) / trace(B): the share of the total squared spread
   /// (trace B = Σ_i |p_i - centroid|² for Euclidean D) that the d axes keep.
   double explained = 0.0;
-  MdsStatus status = MdsStatus::Converged;
+  MdsStatus status = MdsStatus::Converged;  ///< NotConverged when the dense eigensolver failed
 };
 
 /// Classical MDS of a symmetric N by N distance matrix (finite, symmetric to

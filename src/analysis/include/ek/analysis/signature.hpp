@@ -57,7 +57,7 @@ inline constexpr double kCoplanarSafety = 16.0;
 struct CurveSignature {
   VecX curvature;  ///< K_i = κ_i [1/length]
   VecX torsion;    ///< T_i = κ_i (τ^{i-1} + τ^i)/2 [1/length²]
-  int size() const { return static_cast<int>(curvature.size()); }
+  int size() const { return static_cast<int>(curvature.size()); }  ///< n, the number of nodes
 };
 
 /// Discrete curvature κ_i (length n) of the closed polygon P (n by 3, n >= 3).

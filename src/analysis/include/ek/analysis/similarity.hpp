@@ -109,10 +109,12 @@ class SignatureSpectrum {
  public:
   SignatureSpectrum() = default;
   int size() const { return n_; }  ///< n, the signature length
-  bool curvature_is_zero() const { return k_zero_; }
+  bool curvature_is_zero() const { return k_zero_; }  ///< whether K is zero (‖K‖ = 0)
+  /// whether T counts as zero (RMS(T) <= zero_tolerance · mean(K²), or K zero)
   bool torsion_is_zero() const { return t_zero_; }
   /// r2c transforms (n/2 + 1 coefficients) of K/‖K‖ and T/‖T‖ (zero arrays for zero profiles).
   const std::vector<std::complex<double>>& curvature_spectrum() const { return fk_; }
+  /// as curvature_spectrum(), of T/‖T‖
   const std::vector<std::complex<double>>& torsion_spectrum() const { return ft_; }
 
  private:
@@ -133,11 +135,11 @@ class SimilarityEngine {
   ~SimilarityEngine();
   SimilarityEngine(const SimilarityEngine&) = delete;
   SimilarityEngine& operator=(const SimilarityEngine&) = delete;
-  SimilarityEngine(SimilarityEngine&&) noexcept;
-  SimilarityEngine& operator=(SimilarityEngine&&) noexcept;
+  SimilarityEngine(SimilarityEngine&&) noexcept;             ///< Moves the plans and buffers.
+  SimilarityEngine& operator=(SimilarityEngine&&) noexcept;  ///< Moves the plans and buffers.
 
-  int size() const;
-  const SimilarityOptions& options() const;
+  int size() const;                          ///< n, the signature length compared
+  const SimilarityOptions& options() const;  ///< the options as given
 
   /// Spectrum of a curve (resampled to n vertices when it has another count or options.resample is set).
   SignatureSpectrum spectrum(const Points& P);

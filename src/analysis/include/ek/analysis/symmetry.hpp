@@ -73,6 +73,7 @@ struct RegularPolygonFit {
   double phase = 0.0;       ///< [rad] in (-π/p, π/p]
   double max_error = 0.0;   ///< [deg] largest deviation from the nearest vertex
 };
+/// The regular p-gon (p >= 1) fitted to `angles` [rad] (see RegularPolygonFit).
 RegularPolygonFit fit_regular_polygon(const std::vector<double>& angles, int p);
 
 /// The two p-gons of a braid closure's crossings seen along `axis`.
@@ -80,7 +81,10 @@ struct CrossingPolygons {
   int projected = 0;   ///< [1] crossings of the projection along the axis
   int crossings = 0;   ///< [1] of them, those whose strands pass within max_gap along the axis
   bool by_radius = false;  ///< split at the median distance from the axis (else at the median height)
-  RegularPolygonFit top, bottom;  ///< the two halves (outer and inner ring when by_radius)
+  ///@{
+  /// The two halves (outer and inner ring when by_radius).
+  RegularPolygonFit top, bottom;
+  ///@}
   double rotation = 0.0;  ///< [deg] between the two p-gons' phases, in [0, 180/p]
   /// [deg] the larger of the two halves' max_error
   double error() const { return top.max_error > bottom.max_error ? top.max_error : bottom.max_error; }

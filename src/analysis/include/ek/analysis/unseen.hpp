@@ -33,10 +33,13 @@
 
 namespace ek {
 
+/// The confidence level of estimate_unseen()'s interval.
 struct UnseenOptions {
   double confidence = 0.95;  ///< [1] two-sided level of the interval, in (0, 1)
 };
 
+/// What estimate_unseen() returns: the counts it starts from and the estimates
+/// of the unseen states (see the file's description).
 struct UnseenEstimate {
   int samples = 0;                     ///< [1] n: samples that reached a state
   int observed = 0;                    ///< [1] D: states seen
