@@ -31,6 +31,7 @@
 
 namespace ek {
 
+/// The model and the thresholds of deploy_at_link() and scan_links().
 struct DeployOptions {
   /// Material, rest lengths, tolerances, ... of every solve; its link, slab
   /// and release_slab are set per run (the full model with Θ fixed).
@@ -69,6 +70,7 @@ struct DeployRun {
 /// Throws InputError when the coil does not lie strictly inside the slab.
 DeployRun deploy_at_link(const Points& coil, double link, const DeployOptions& options = {});
 
+/// The links scan_links() relaxes the coil at, and the bisection of the onsets.
 struct LinkScanOptions {
   /// [turns] links of the coarse scan, ascending, at least one.
   std::vector<double> grid;
@@ -87,18 +89,24 @@ struct LinkScanOptions {
 /// The links at which the flat coil stays stable and where it stops.
 struct LinkScan {
   std::vector<DeployRun> runs;  ///< every run, by ascending link
+  ///@{
   /// [turns] the ends of the stable interval: the smallest and largest
   /// scanned links of the run of consecutive flat and stable links around
   /// the centre (null when the coil is not flat and stable there).
   std::optional<double> flat_low, flat_high;
+  ///@}
+  ///@{
   /// [turns] the next scanned links outside it at which the coil buckles
   /// (null: the neighbour did not buckle, or the interval reaches the
   /// grid's end): the flat coil loses stability in (buckled_below, flat_low)
   /// and in (flat_high, buckled_above).
   std::optional<double> buckled_below, buckled_above;
+  ///@}
+  ///@{
   /// [turns] the scanned links nearest to the stable interval, below and
   /// above it, whose released states are stable and 3D (null: none).
   std::optional<double> three_d_below, three_d_above;
+  ///@}
 };
 
 /// Runs deploy_at_link() at every grid link, then bisects each bracket

@@ -45,6 +45,7 @@ class ControlledLoad : public Potential {
   /// for a pull or forces between two points; for plates, the translations
   /// in their plane and the rotation about their normal.
   virtual bool plates() const { return false; }
+  /// The plates' unit normal a (plates()); +z for the other loads.
   virtual Vec3 normal() const { return Vec3::UnitZ(); }
 };
 
@@ -83,6 +84,8 @@ class PullLoad : public ControlledLoad {
 ///   E = −F δ,  δ = |x_i − x_j|.
 class ForceLoad : public ControlledLoad {
  public:
+  /// Forces of magnitude `force` [force] on vertices i != j (>= 0); InputError
+  /// otherwise or for a non-finite force.
   ForceLoad(int i, int j, double force);
   void set_dofs(const VecX& x) override;
   double energy() const override { return -F_ * distance(); }
@@ -114,6 +117,9 @@ class ForceLoad : public ControlledLoad {
 /// press with (> 0). max_step keeps every vertex strictly between them.
 class PlatesLoad : public ControlledLoad {
  public:
+  /// Plates through `center` [length] with normal `normal` (nonzero, normalised
+  /// here), gap g = `gap` [length] > 0, barrier reach [length] > 0 and stiffness
+  /// κ [energy/length²] > 0; InputError otherwise.
   PlatesLoad(const Vec3& center, const Vec3& normal, double gap, double reach, double stiffness);
   void set_dofs(const VecX& x) override;
   double energy() const override;
