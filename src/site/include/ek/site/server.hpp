@@ -19,6 +19,7 @@
 
 namespace ek {
 
+/// The port, the workers and the limits of SiteServer.
 struct ServeOptions {
   int port = 8000;            ///< [1] TCP port on 127.0.0.1; 0: any free port
   int workers = 8;            ///< [1] connections served at once
@@ -28,9 +29,9 @@ struct ServeOptions {
 
 /// The answer to one request.
 struct HttpResponse {
-  int status = 200;
+  int status = 200;          ///< HTTP status code: 200, 403, 404, 405, ...
   std::string reason;        ///< "OK", "Not Found", ...
-  std::string content_type;
+  std::string content_type;  ///< Content-Type of the body (content_type())
   std::string body;          ///< the file, or a one-line text for errors
 };
 
@@ -40,12 +41,15 @@ HttpResponse respond(const SiteFiles& files, const std::string& method, const st
 /// The response head and body as sent (the body omitted for HEAD).
 std::string http_message(const HttpResponse& response, bool head_only);
 
+/// Serves a site's files (held in memory) on 127.0.0.1 with a few worker
+/// threads (see the file's description).
 class SiteServer {
  public:
   /// Binds 127.0.0.1:port and listens; InputError when the port is taken or
   /// not allowed.
   SiteServer(SiteFiles files, const ServeOptions& options);
-  ~SiteServer();
+  ~SiteServer();  ///< Stops the workers and closes the sockets.
+  /// Not copyable: one server owns its socket and threads.
   SiteServer(const SiteServer&) = delete;
   SiteServer& operator=(const SiteServer&) = delete;
 
