@@ -17,7 +17,7 @@
 
 /// Everything of the library: the modules (core, geometry, knots, embedding,
 /// lattice, rod, contact, solver, analysis, mechanics, dataset, site,
-/// transitions) share this one namespace; their headers are ek/<module>/.
+/// transitions) share this one namespace; their headers are `ek/<module>/`.
 namespace ek {
 
 /// `text` on one line: control characters (a newline in a quoted input, ...)

@@ -66,6 +66,8 @@
 
 namespace ek {
 
+/// The search budget and the double-ended searches' options of
+/// connect_states().
 struct ConnectOptions {
   int max_searches = 6;             ///< [1] double-ended searches at most (>= 1)
   /// The double-ended searches' options (the model is its saddle.relax).
@@ -75,7 +77,10 @@ struct ConnectOptions {
 
 /// One double-ended search of connect_states().
 struct ConnectAttempt {
-  int u = -1, v = -1;               ///< states searched from and towards
+  ///@{
+  /// States searched from (u) and towards (v).
+  int u = -1, v = -1;
+  ///@}
   double distance = 0.0;            ///< [length] aligned RMS vertex distance of u and v
   SearchStatus status;              ///< transition_search()'s, or Refused (search_pair())
   bool reached = false;             ///< the steered chain reached v
@@ -85,6 +90,8 @@ struct ConnectAttempt {
   double seconds = 0.0;             ///< [s]
 };
 
+/// What connect_states() returns: whether a chain of verified saddles joins the
+/// two states, its barriers, and every search it ran.
 struct ConnectResult {
   bool connected = false;           ///< a chain of verified saddles joins a and b
   /// Connected, Budget (max_searches spent), Exhausted (no untried pair)
