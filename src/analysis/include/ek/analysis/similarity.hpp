@@ -107,7 +107,7 @@ struct SimilarityResult {
 /// shared by several engines and threads.
 class SignatureSpectrum {
  public:
-  SignatureSpectrum() = default;
+  SignatureSpectrum() = default;   ///< An empty spectrum (size 0); SimilarityEngine::spectrum() makes real ones.
   int size() const { return n_; }  ///< n, the signature length
   bool curvature_is_zero() const { return k_zero_; }  ///< whether K is zero (‖K‖ = 0)
   /// whether T counts as zero (RMS(T) <= zero_tolerance · mean(K²), or K zero)
@@ -132,11 +132,11 @@ class SimilarityEngine {
  public:
   /// n >= 3 signature length; options.samples is ignored (n is the common count).
   explicit SimilarityEngine(int n, const SimilarityOptions& options = {});
-  ~SimilarityEngine();
-  SimilarityEngine(const SimilarityEngine&) = delete;
-  SimilarityEngine& operator=(const SimilarityEngine&) = delete;
-  SimilarityEngine(SimilarityEngine&&) noexcept;             ///< Moves the plans and buffers.
-  SimilarityEngine& operator=(SimilarityEngine&&) noexcept;  ///< Moves the plans and buffers.
+  ~SimilarityEngine();                                            ///< Destroys the FFTW plans and buffers.
+  SimilarityEngine(const SimilarityEngine&) = delete;             ///< Not copyable.
+  SimilarityEngine& operator=(const SimilarityEngine&) = delete;  ///< Not copyable.
+  SimilarityEngine(SimilarityEngine&&) noexcept;                  ///< Moves the plans and buffers.
+  SimilarityEngine& operator=(SimilarityEngine&&) noexcept;       ///< Moves the plans and buffers.
 
   int size() const;                          ///< n, the signature length compared
   const SimilarityOptions& options() const;  ///< the options as given

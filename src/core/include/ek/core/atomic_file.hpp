@@ -24,7 +24,7 @@ class AtomicFile {
   ~AtomicFile();  ///< Without commit(): closes and removes the temporary; the destination is untouched.
   /// Not copyable: one writer owns its temporary file.
   AtomicFile(const AtomicFile&) = delete;
-  AtomicFile& operator=(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;  ///< Not copyable.
 
   std::ostream& stream() { return out_; }                     ///< The stream that writes the temporary file.
   /// "<path>.tmp.<pid>.<counter>", renamed onto the destination by commit().

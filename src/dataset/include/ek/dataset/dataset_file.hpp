@@ -108,9 +108,9 @@ class DatasetWriter {
   /// Opens the temporary file next to `path` and writes `meta`; InputError when
   /// `path` cannot be written.
   DatasetWriter(const std::string& path, const DatasetMetadata& meta);
-  ~DatasetWriter();
-  DatasetWriter(const DatasetWriter&) = delete;
-  DatasetWriter& operator=(const DatasetWriter&) = delete;
+  ~DatasetWriter();  ///< Without commit(): removes the temporary file; an existing file at the path stays untouched.
+  DatasetWriter(const DatasetWriter&) = delete;             ///< Not copyable.
+  DatasetWriter& operator=(const DatasetWriter&) = delete;  ///< Not copyable.
   void add(const KnotEntry& knot);  ///< Writes one knot's group (its name must be new in the file).
   void commit();                    ///< Writes the knot list, seals the file and renames it onto `path`.
 
@@ -128,9 +128,9 @@ class DatasetReader {
   /// Opens `path` and reads its metadata; InputError for a file that is not a
   /// data set.
   explicit DatasetReader(const std::string& path);
-  ~DatasetReader();
-  DatasetReader(const DatasetReader&) = delete;
-  DatasetReader& operator=(const DatasetReader&) = delete;
+  ~DatasetReader();                              ///< Closes the file.
+  DatasetReader(const DatasetReader&) = delete;  ///< Not copyable.
+  DatasetReader& operator=(const DatasetReader&) = delete;  ///< Not copyable.
   const DatasetMetadata& metadata() const;       ///< The parameters the data set was computed with.
   std::vector<std::string> knot_names() const;   ///< in table order of the file
   bool has_knot(const std::string& name) const;  ///< Whether the file holds a group for `name`.

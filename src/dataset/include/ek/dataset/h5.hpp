@@ -35,10 +35,10 @@ class Handle {
   }
   /// Not copyable: one handle closes its identifier.
   Handle(const Handle&) = delete;
-  Handle& operator=(const Handle&) = delete;
-  hid_t id() const { return id_; }         ///< The identifier (-1 when empty).
-  bool valid() const { return id_ >= 0; }  ///< Whether it holds an identifier.
-  void reset() { close(); }                ///< Closes the identifier, ignoring errors.
+  Handle& operator=(const Handle&) = delete;  ///< Not copyable.
+  hid_t id() const { return id_; }            ///< The identifier (-1 when empty).
+  bool valid() const { return id_ >= 0; }     ///< Whether it holds an identifier.
+  void reset() { close(); }                   ///< Closes the identifier, ignoring errors.
   /// Closes the identifier; false when HDF5 reports an error (a file that
   /// could not be flushed completely).
   bool close() {

@@ -88,13 +88,13 @@ class BfacfWalk {
   /// above. Throws InputError unless every polygon is a self-avoiding lattice
   /// polygon and no two share a site.
   BfacfWalk(const std::vector<LatticePoints>& components, std::uint64_t seed);
-  ~BfacfWalk();
+  ~BfacfWalk();  ///< Releases the walk's state.
   /// Moves the walk (its polygons, occupied sites and generator); the walk moved
   /// from may only be destroyed or assigned to.
   BfacfWalk(BfacfWalk&&) noexcept;
-  BfacfWalk& operator=(BfacfWalk&&) noexcept;  ///< Moves the walk, as the move constructor.
-  BfacfWalk(const BfacfWalk&) = delete;
-  BfacfWalk& operator=(const BfacfWalk&) = delete;
+  BfacfWalk& operator=(BfacfWalk&&) noexcept;       ///< Moves the walk, as the move constructor.
+  BfacfWalk(const BfacfWalk&) = delete;             ///< Not copyable.
+  BfacfWalk& operator=(const BfacfWalk&) = delete;  ///< Not copyable.
 
   /// Current number of vertices (= edges), of all components.
   int length() const;

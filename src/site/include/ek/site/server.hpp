@@ -51,7 +51,7 @@ class SiteServer {
   ~SiteServer();  ///< Stops the workers and closes the sockets.
   /// Not copyable: one server owns its socket and threads.
   SiteServer(const SiteServer&) = delete;
-  SiteServer& operator=(const SiteServer&) = delete;
+  SiteServer& operator=(const SiteServer&) = delete;  ///< Not copyable.
 
   /// The bound port (the chosen one for port 0).
   int port() const { return port_; }

@@ -71,7 +71,7 @@ class CholeskySolver {
   ~CholeskySolver();                                        ///< Releases the CHOLMOD context and factors.
   /// Not copyable: one solver owns its CHOLMOD context.
   CholeskySolver(const CholeskySolver&) = delete;
-  CholeskySolver& operator=(const CholeskySolver&) = delete;
+  CholeskySolver& operator=(const CholeskySolver&) = delete;  ///< Not copyable.
 
   /// Factorises H + shift·I, where H is given by its upper triangle (compressed,
   /// column-major, sorted row indices, as SparseAssembler::matrix()). The

@@ -67,9 +67,9 @@ class LinkModel {
  public:
   /// Throws InputError as relax_link() does.
   LinkModel(const Link& link, const RelaxOptions& options);
-  ~LinkModel();
-  LinkModel(const LinkModel&) = delete;
-  LinkModel& operator=(const LinkModel&) = delete;
+  ~LinkModel();                                     ///< Releases the rods, the contact and the objective.
+  LinkModel(const LinkModel&) = delete;             ///< Not copyable.
+  LinkModel& operator=(const LinkModel&) = delete;  ///< Not copyable.
   /// The objective with contact stiffness factor·ω (factor > 0; 1: the
   /// model's), at the current positions. A call with another factor
   /// invalidates the previous reference.

@@ -121,7 +121,7 @@ struct NewtonOptions : NewtonMethodOptions {
   /// Report converged-unstable at a saddle instead of leaving it along a
   /// direction of negative curvature.
   bool stop_at_critical_point = false;
-  NewtonOptions() = default;
+  NewtonOptions() = default;  ///< The default method and goal.
   /// `method` with the default goal.
   explicit NewtonOptions(const NewtonMethodOptions& method) : NewtonMethodOptions(method) {}
   void validate() const;  ///< std::invalid_argument for impossible values
@@ -201,9 +201,9 @@ class NewtonSolver {
  public:
   /// A solver with these options; std::invalid_argument for impossible ones.
   explicit NewtonSolver(const NewtonOptions& options = {});
-  ~NewtonSolver();
-  NewtonSolver(const NewtonSolver&) = delete;
-  NewtonSolver& operator=(const NewtonSolver&) = delete;
+  ~NewtonSolver();                                        ///< Releases the assembler and the factorisation.
+  NewtonSolver(const NewtonSolver&) = delete;             ///< Not copyable.
+  NewtonSolver& operator=(const NewtonSolver&) = delete;  ///< Not copyable.
 
   const NewtonOptions& options() const { return options_; }  ///< The options of the next minimize().
   /// Validates and sets the options of the following minimisations.

@@ -36,7 +36,7 @@ struct EnergyPart {
 /// parallel-transport reference frames or refresh contact sets).
 class Objective {
  public:
-  virtual ~Objective() = default;
+  virtual ~Objective() = default;            ///< Objectives are used through references to this interface.
   virtual int num_dofs() const = 0;          ///< Length of the dof vector x.
   virtual VecX dofs() const = 0;             ///< The current dofs x (num_dofs()).
   virtual void set_dofs(const VecX& x) = 0;  ///< Moves to x (num_dofs()): a trial point or the next iterate.
@@ -76,7 +76,7 @@ class Objective {
 /// over positions reads its first 3n entries).
 class Potential {
  public:
-  virtual ~Potential() = default;
+  virtual ~Potential() = default;  ///< Terms are used through pointers to this interface.
   /// Moves the term to x (the objective's dofs, every trial point).
   virtual void set_dofs(const VecX& x) = 0;
   /// E_k at the current point [energy]; +infinity when infeasible.

@@ -180,9 +180,9 @@ class KnotSystem {
   /// full_model, max_iterations, newton); the slab is not allowed.
   /// InputError for a curve or options that relax() refuses.
   KnotSystem(const Points& x, const VecX& rest, const RelaxOptions& options);
-  ~KnotSystem();
-  KnotSystem(const KnotSystem&) = delete;
-  KnotSystem& operator=(const KnotSystem&) = delete;
+  ~KnotSystem();                                      ///< Releases the rod, the contact and the objective.
+  KnotSystem(const KnotSystem&) = delete;             ///< Not copyable.
+  KnotSystem& operator=(const KnotSystem&) = delete;  ///< Not copyable.
 
   Objective& objective();  ///< E_rod + ω E_contact over the rod's dofs (owned by the system).
   ElasticRod& rod();       ///< The rod (owned by the system); its dofs are the objective's.

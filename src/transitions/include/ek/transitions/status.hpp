@@ -79,8 +79,8 @@ enum class ConnectStatus {
 
 /// The outcome's text ("verified", "index-K", "refused: <reason>", ...).
 std::string to_string(const SearchStatus& status);
-std::string to_string(DescentStatus status);        ///< The status's text ("converged-stable", ...).
-std::string to_string(ConnectStatus status);        ///< "connected", "budget" or "exhausted".
+std::string to_string(DescentStatus status);  ///< The status's text ("converged-stable", ...).
+std::string to_string(ConnectStatus status);  ///< "connected", "budget" or "exhausted".
 /// A list of statuses as one text, ";" between them ("" for none): the
 /// pairs' seed_statuses column (a seed's status is never "refused").
 std::string to_string(const std::vector<SearchStatus>& list);
