@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// Attributes of an equilibrium curve for filtering and sorting (paper
-/// Section 7.3, Fig. 7).
+/// Section 7.3, Fig.\ 7).
 ///
 /// Geometric attributes (functions of the centerline alone; all invariant
 /// under rigid motions and cyclic re-indexing):

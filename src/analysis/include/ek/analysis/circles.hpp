@@ -1,7 +1,7 @@
 #pragma once
 /// \file
-/// A closed curve as a union of k circles in space (paper Section 8.4, Fig.
-/// 15: 9_35's 3D state "is composed of three intertwined circles", and the
+/// A closed curve as a union of k circles in space (paper Section 8.4, Fig.\ 15:
+/// 9_35's 3D state "is composed of three intertwined circles", and the
 /// knots retrieved near it "are all composed of three circular parts that are
 /// linked through a variable number of crossings at their touching regions").
 ///

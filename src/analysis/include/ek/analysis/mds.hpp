@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// Classical multidimensional scaling (Torgerson 1952; Gower 1966) of a
-/// distance matrix, for the 2D scatter plot of Fig. 6 (paper Section 7.2).
+/// distance matrix, for the 2D scatter plot of Fig.\ 6 (paper Section 7.2).
 ///
 /// Given an N by N distance matrix D, with J = I - 11ᵀ/N the centring matrix,
 ///   B = -½ J D⁽²⁾ J     (D⁽²⁾ the entrywise squares),

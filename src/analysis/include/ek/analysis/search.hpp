@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// Rigid alignment of closed curves (ICP with a search over cyclic shifts and
-/// symmetries) and cross-topology search (paper Section 8.2, Fig. 10): filter
+/// symmetries) and cross-topology search (paper Section 8.2, Fig.\ 10): filter
 /// candidates by attribute ranges, then rank them by alignment distance.
 ///
 /// Alignment of a candidate C to a query Q:

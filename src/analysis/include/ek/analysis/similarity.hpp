@@ -153,7 +153,7 @@ class SimilarityEngine {
 
   /// N by N symmetric matrix of similarities, diagonal exactly 1 (each pair computed once).
   Eigen::MatrixXd matrix(const std::vector<SignatureSpectrum>& spectra);
-  /// |a| by |b| matrix of similarities between two sets (e.g. a new batch against earlier curves).
+  /// |a| by |b| matrix of similarities between two sets (e.g.\ a new batch against earlier curves).
   Eigen::MatrixXd cross_matrix(const std::vector<SignatureSpectrum>& a, const std::vector<SignatureSpectrum>& b);
 
  private:

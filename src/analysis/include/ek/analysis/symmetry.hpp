@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// Rotational symmetry of closed curves and the crossing polygons of periodic
-/// braids (paper Section 8.4, Fig. 16: "the observed topological pattern also
+/// braids (paper Section 8.4, Fig.\ 16: "the observed topological pattern also
 /// manifests itself in geometric symmetry"; "the crossing patterns form two
 /// regular p-gons, one at the top and one at the bottom of each embedding.
 /// For odd p these align, while for even p they are rotated relative to each

@@ -1,8 +1,8 @@
 #pragma once
 /// \file
 /// The IPC barrier and the contact energy of one pair of segments (paper
-/// Section 6, "Contact Handling"; Li et al. 2020, "Incremental Potential
-/// Contact", eq. 6 and Section 4.3).
+/// Section 6, "Contact Handling"; Li et al.\ 2020, "Incremental Potential
+/// Contact", eq.\ 6 and Section 4.3).
 ///
 /// Barrier (in the distance d, not its square):
 ///   b(d) = −(d − d̂)² ln(d / d̂)   for 0 < d < d̂,      0 for d >= d̂,

@@ -1,9 +1,9 @@
 #pragma once
 /// \file
 /// Self-contact of closed polylines that can never change the knot type
-/// (paper Section 6, "Contact Handling", eq. 1: E_rod + ω E_contact; the
-/// variational contact of Li et al. 2020 "Incremental Potential Contact" and
-/// Li et al. 2021 "Codimensional IPC", here for closed curves).
+/// (paper Section 6, "Contact Handling", eq.\ 1: E_rod + ω E_contact; the
+/// variational contact of Li et al.\ 2020 "Incremental Potential Contact" and
+/// Li et al.\ 2021 "Codimensional IPC", here for closed curves).
 ///
 /// Energy:  E(x) = ω Σ_{active pairs (i, j)} e_ij(x)
 ///   over pairs of edges that are not excluded (edges sharing a vertex are;

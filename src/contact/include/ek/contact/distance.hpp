@@ -2,7 +2,7 @@
 /// \file
 /// Differentiable squared distances between the closest features of two
 /// segments (paper Section 6, "Contact Handling"; the distance types of
-/// Li et al. 2020, "Incremental Potential Contact", Section 4 and supplement).
+/// Li et al.\ 2020, "Incremental Potential Contact", Section 4 and supplement).
 ///
 /// Every kernel is a trio of free functions with the same arguments: the value,
 /// the gradient and the Hessian of a SQUARED distance s = d², on fixed-size

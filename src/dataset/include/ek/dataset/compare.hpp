@@ -55,7 +55,7 @@ struct KnotComparison {
   int clusters_a = 0, clusters_b = 0;
   ///@}
   ///@{
-  /// Every cluster of one data set (a, resp. b) with its counterpart in the other.
+  /// Every cluster of one data set (a, resp.\ b) with its counterpart in the other.
   std::vector<ClusterCounterpart> a_in_b, b_in_a;
   ///@}
   ///@{

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// The ledger: a data set's result, small enough to commit and read without
-/// the data set (paper Section 7.4 builds the data set; Fig. 9 and the
+/// the data set (paper Section 7.4 builds the data set; Fig.\ 9 and the
 /// planarity claim only need per-knot results). Per knot type it keeps the
 /// runs (sample, status, stored row, iterations, seconds), every stored
 /// equilibrium's attributes and its state, the complete-linkage dendrogram,

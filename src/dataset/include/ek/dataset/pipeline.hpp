@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// The data-set pipeline (paper Section 7.4, Fig. 3): for a knot type, random
+/// The data-set pipeline (paper Section 7.4, Fig.\ 3): for a knot type, random
 /// cubic-lattice samples (lattice module) are relaxed to stable equilibria
 /// (solver), compared with the curvature-torsion similarity, clustered
 /// (analysis), and stored with their attributes and the report of every run.

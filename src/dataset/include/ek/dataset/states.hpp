@@ -1,10 +1,10 @@
 #pragma once
 /// \file
 /// Analyses of a knot's stored states (a KnotEntry of a data set) used by the
-/// paper experiments: how many distinct states are distinctly 3D (Figs. 2, 6,
+/// paper experiments: how many distinct states are distinctly 3D (Figs.\ 2, 6,
 /// 8), which low-energy states a prefix of the samples finds (adaptive
-/// sampling, Section 7.4), knot puzzles (Section 8.3, Fig. 14), and the
-/// Hausdorff distance against the similarity measure (Section 7.1, Fig. 5).
+/// sampling, Section 7.4), knot puzzles (Section 8.3, Fig.\ 14), and the
+/// Hausdorff distance against the similarity measure (Section 7.1, Fig.\ 5).
 ///
 /// Distinct states are the clusters of clusters_at_cut(): complete linkage on
 /// 1 - similarity cut at a distance, sorted by increasing lowest energy, each
@@ -96,7 +96,7 @@ struct Puzzle {
 std::vector<Puzzle> find_puzzles(const KnotEntry& entry, double cut, double writhe_tolerance);
 
 /// Two equilibria of one knot compared by the similarity measure and by
-/// geometric distances after rigid alignment (Fig. 5).
+/// geometric distances after rigid alignment (Fig.\ 5).
 struct StatePair {
   ///@{
   /// Equilibrium indices, a < b.
@@ -146,7 +146,7 @@ HausdorffSeparation hausdorff_separation(const std::vector<StatePair>& pairs, do
 
 /// Pairs separated by the similarity (as above) by increasing Hausdorff
 /// distance, at most one per pair of clusters, the first `count` (the pairs
-/// of Fig. 5: close in Hausdorff distance, apart in similarity).
+/// of Fig.\ 5: close in Hausdorff distance, apart in similarity).
 std::vector<StatePair> closest_distinct_pairs(const std::vector<StatePair>& pairs, double cut, int count);
 
 }  // namespace ek

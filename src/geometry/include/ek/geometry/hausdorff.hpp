@@ -2,7 +2,7 @@
 /// \file
 /// Hausdorff distance between two polylines (as point sets, not their
 /// vertices), the "direct measure of geometric similarity" the paper compares
-/// its curvature-torsion similarity with (Section 7.1, Fig. 5).
+/// its curvature-torsion similarity with (Section 7.1, Fig.\ 5).
 ///
 ///   h(A → B) = sup_{a ∈ A} dist(a, B),   d_H(A, B) = max(h(A → B), h(B → A))   [length]
 ///

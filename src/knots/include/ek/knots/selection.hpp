@@ -16,7 +16,7 @@ struct StratifiedSampleOptions {
   /// [1] share of each stratum taken, in (0, 1]: ⌈fraction · size⌉ knots of
   /// every stratum, so at least this share of every crossing number
   double fraction = 0.1;
-  /// Also take every BB knot (bridge index = braid index, paper Fig. 9) of
+  /// Also take every BB knot (bridge index = braid index, paper Fig.\ 9) of
   /// the sampled crossing numbers.
   bool all_bb_knots = true;
   void validate() const;  ///< InputError for impossible values

@@ -2,7 +2,7 @@
 /// \file
 /// The BFACF random walk on self-avoiding lattice polygons (Berg and Foerster
 /// 1981; Aragão de Carvalho, Caracciolo and Fröhlich 1983; paper Section 5 and
-/// Fig. 4), with the fugacity parametrisation of Madras and Slade (The
+/// Fig.\ 4), with the fugacity parametrisation of Madras and Slade (The
 /// Self-Avoiding Walk, 1993, Chapter 9) and Janse van Rensburg and Whittington
 /// (J. Phys. A 24:5553, 1991).
 ///
@@ -49,7 +49,7 @@ namespace ek {
 /// Critical fugacity β_c = 1/μ of self-avoiding polygons on Z³.
 constexpr double kCriticalFugacity = 0.21349092124;
 
-/// The three move types of Fig. 4 and "no change" (rejected or impossible).
+/// The three move types of Fig.\ 4 and "no change" (rejected or impossible).
 enum class BfacfMove { None, I, II, III };
 
 /// Counts of one run of attempted moves.

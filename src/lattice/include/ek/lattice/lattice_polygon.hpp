@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// Polygons on the simple cubic lattice Z³ (paper Section 5, Fig. 4).
+/// Polygons on the simple cubic lattice Z³ (paper Section 5, Fig.\ 4).
 ///
 /// A lattice polygon with n vertices is an n by 3 array of integers, one site
 /// per row; edge i joins site i to site (i + 1) mod n and has length 1 (the

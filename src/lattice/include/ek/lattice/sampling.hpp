@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// Random embeddings of a knot type on the cubic lattice (paper Section 5,
-/// Fig. 4): an initial polygon from the knot table is rounded onto Z³
+/// Fig.\ 4): an initial polygon from the knot table is rounded onto Z³
 /// (rounding.hpp), then a biased BFACF walk (bfacf.hpp) produces samples with
 /// exactly n vertices.
 ///

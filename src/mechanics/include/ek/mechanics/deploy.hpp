@@ -1,8 +1,8 @@
 #pragma once
 /// \file
 /// Deploying a flat multi-covered coil at a prescribed link: the jumping-knot
-/// pipeline of paper Section 8.3 (Figs. 12, 13), used for the periodic braids
-/// of Section 8.4 (Fig. 16: "initialized ... from multi-covered circle
+/// pipeline of paper Section 8.3 (Figs.\ 12, 13), used for the periodic braids
+/// of Section 8.4 (Fig.\ 16: "initialized ... from multi-covered circle
 /// embeddings obtained from the generalized braid word representations, as
 /// illustrated in Figure 13").
 ///
@@ -74,7 +74,7 @@ DeployRun deploy_at_link(const Points& coil, double link, const DeployOptions& o
 struct LinkScanOptions {
   /// [turns] links of the coarse scan, ascending, at least one.
   std::vector<double> grid;
-  /// [turns] a link inside the coil's stable interval, e.g. its twist-free
+  /// [turns] a link inside the coil's stable interval, e.g.\ its twist-free
   /// link (the flat coil's writhe): the interval is the run of consecutive
   /// grid links at which the coil stays flat and stable that contains the
   /// grid link nearest to it.

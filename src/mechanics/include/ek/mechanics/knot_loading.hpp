@@ -54,7 +54,7 @@ struct KnotLoadOptions {
   int max_points = 400;                ///< [1] points of the path at most
   bool stop_at_snap = true;            ///< end the path at its first snap (else go on from the state it snapped into)
   /// relax the start without the load first (false: the start is taken as
-  /// it is, e.g. a point of an earlier path, already an equilibrium under the
+  /// it is, e.g.\ a point of an earlier path, already an equilibrium under the
   /// load at `from`; the path's first point brings it to the tolerance there)
   bool relax_start = true;
   int eigen_count = 4;                 ///< [1] lowest eigenpairs at each point (the index)

@@ -2,7 +2,7 @@
 /// \file
 /// Discrete elastic rod for closed curves: stretching, bending and twisting
 /// with exact gradient and sparse Hessian, and the link Lk = Tw + Wr of the
-/// framed curve (paper Section 6 and Appendix C; Bergou et al. 2008 and 2010).
+/// framed curve (paper Section 6 and Appendix C; Bergou et al.\ 2008 and 2010).
 ///
 /// Discretisation. Vertices x_0 .. x_{n-1} (n >= 3); edge j is
 /// e_j = x_{j+1} - x_j (indices mod n), with rest length l̄_j (the input's edge
@@ -161,9 +161,9 @@ class ElasticRod {
   double total_reference_twist() const;
   /// Twist angle τ_i = θ_i - θ_{i-1} + m_i (+ Θ at i = 0) [rad]; 0 in TwistFree.
   double twist_angle(int i) const;
-  /// Tw = (Θ + Σ_i m_i) / (2π) (Appendix C, eq. 6); 0 in TwistFree.
+  /// Tw = (Θ + Σ_i m_i) / (2π) (Appendix C, eq.\ 6); 0 in TwistFree.
   double twist() const;
-  /// Wr = ek::writhe(positions) (Appendix C, eq. 5). O(n²).
+  /// Wr = ek::writhe(positions) (Appendix C, eq.\ 5). O(n²).
   double writhe() const;
   /// Lk = Tw + Wr.
   double link() const;

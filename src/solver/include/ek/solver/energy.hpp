@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// The energy of a closed curve as the elastic rod with self-contact (paper
-/// Section 6, eq. 1), as `knots energy` reports it (and the Python module's
+/// Section 6, eq.\ 1), as `knots energy` reports it (and the Python module's
 /// energy()): the rod's parts, the contact barrier with d̂ = 2r and ω scaled
 /// with E and r exactly as relax() does, the gradient norm, twist, writhe and
 /// link.

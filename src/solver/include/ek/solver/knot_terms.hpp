@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// The terms of the knot relaxation (paper Section 6, eq. 1) as Potentials
+/// The terms of the knot relaxation (paper Section 6, eq.\ 1) as Potentials
 /// (objective.hpp) over the rod's dofs [x (3n) | θ (n) | Θ]:
 ///
 ///   RodTerm      E_stretch + E_bend + E_twist        (elastic_rod.hpp)

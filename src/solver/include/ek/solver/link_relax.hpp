@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// Relaxation of a link (paper Section 8.5: "We can easily extend our
-/// simulation algorithm to handle links, i.e. intertwined combinations of
+/// simulation algorithm to handle links, i.e.\ intertwined combinations of
 /// several knots").
 ///
 /// Model: one twist-free elastic rod per component (elastic_rod.hpp, eq. 1 of

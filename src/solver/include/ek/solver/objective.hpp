@@ -1,6 +1,6 @@
 #pragma once
 /// \file
-/// What the Newton solver minimises (paper Section 6, eq. 1):
+/// What the Newton solver minimises (paper Section 6, eq.\ 1):
 ///
 ///   E(x) = Σ_k E_k(x)
 ///

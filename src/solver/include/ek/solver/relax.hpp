@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// Relaxing a closed curve to a stable equilibrium of the elastic rod with
-/// self-contact (paper Section 6, eq. 1):
+/// self-contact (paper Section 6, eq.\ 1):
 ///
 ///   min_{x, θ} E_rod(x, θ) + ω E_contact(x) [+ E_slab(x)]
 ///

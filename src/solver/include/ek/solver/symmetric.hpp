@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// Newton restricted to the curves with a p-fold rotational symmetry (paper
-/// Section 8.4, Fig. 16: the periodic braids' states "with p-fold symmetry").
+/// Section 8.4, Fig.\ 16: the periodic braids' states "with p-fold symmetry").
 ///
 /// A closed curve of n = p·m vertices is cyclically symmetric when a rotation
 /// R by `angle` about an axis through c carries every vertex m places along
