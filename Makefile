@@ -54,7 +54,8 @@ deps:
 # The API reference (docs/api/Doxyfile: the public headers and the pages of
 # docs/api/) in $(BUILD)/docs/html. Every Doxygen warning (an undocumented
 # public declaration, a malformed command) fails the target; the warnings are
-# printed from $(BUILD)/docs/warnings.log.
+# printed from $(BUILD)/docs/warnings.log, each once (Doxygen reports a free
+# function's twice: in its file and in its namespace).
 EK_VERSION = $(shell sed -n 's/^project.elastic_knots VERSION \([0-9.]*\).*/\1/p' CMakeLists.txt)
 docs: deps
 	@rm -rf $(BUILD)/docs/html && mkdir -p $(BUILD)/docs
@@ -63,8 +64,8 @@ docs: deps
 	   echo 'WARN_LOGFILE = "$(BUILD)/docs/warnings.log"'; \
 	   echo 'PROJECT_NUMBER = $(EK_VERSION)' ) | doxygen - ; status=$$?; \
 	if [ $$status -ne 0 ] || [ -s $(BUILD)/docs/warnings.log ]; then \
-	  cat $(BUILD)/docs/warnings.log >&2; \
-	  echo "make docs: $$(grep -c . $(BUILD)/docs/warnings.log) Doxygen warnings (doxygen exit status $$status)" >&2; \
+	  awk '!seen[$$0]++' $(BUILD)/docs/warnings.log >&2; \
+	  echo "make docs: $$(sort -u $(BUILD)/docs/warnings.log | grep -c .) Doxygen warnings (doxygen exit status $$status)" >&2; \
 	  exit 1; fi
 	@echo "API reference: $(BUILD)/docs/html/index.html"
 
