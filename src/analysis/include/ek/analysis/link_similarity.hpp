@@ -8,7 +8,9 @@
 /// of B (options as for curves: `reversal` lets each pair be compared with
 /// B_j's orientation reversed), the link similarity is
 ///
+/// ~~~{.unparsed}
 ///   S(A, B) = max_π (1/m) Σ_i S_{i π(i)}
+/// ~~~
 ///
 /// over the bijections π of the m components. With `mirror`, B's mirror image
 /// is compared too, as a whole (every component mirrored at once, never some

@@ -21,12 +21,16 @@
 /// the link's mean component length L̄. F_c is their distribution, and its
 /// quantile function is read at K midpoints:
 ///
+/// ~~~{.unparsed}
 ///   Q_c[k] = F_c⁻¹((k + ½)/K),  k = 0 .. K−1,
+/// ~~~
 ///
 /// the "distance distribution" shape descriptor of Osada et al. (2002), one
 /// per component. The distance of links A and B with m components each is
 ///
+/// ~~~{.unparsed}
 ///   d(A, B) = min_π max_c RMS_k( Q^A_c[k] − Q^B_{π(c)}[k] )   [mean component length],
+/// ~~~
 ///
 /// over the m! pairings π. Two links are the same state when every
 /// component has the shape of its partner.

@@ -7,11 +7,15 @@
 /// signature.hpp; curves are first brought to a common vertex count n, below)
 /// the normalised cyclic cross-correlation is
 ///
+/// ~~~{.unparsed}
 ///   (A ⋆ B)[s] = Σ_i A_i B_{(i+s) mod n} / (‖A‖ ‖B‖),   s = 0 .. n-1,
+/// ~~~
 ///
 /// and the score of one symmetry is
 ///
+/// ~~~{.unparsed}
 ///   S = max_s ( [(K1 ⋆ K2)[s]]₊ + [(T1 ⋆ T2)[s]]₊ ) / 2 ∈ [0, 1],  [x]₊ = max(x, 0).
+/// ~~~
 ///
 /// The paper writes the bracket without the factor 1/2 and states that it lies
 /// in [0, 1]; the sum of two correlations reaches 2, so we divide by 2: S = 1

@@ -20,8 +20,10 @@ namespace ek {
 /// p-fold rotational symmetry error of P about the line through `center`
 /// along the unit vector `axis`:
 ///
+/// ~~~{.unparsed}
 ///   error = (1/n) Σ_i dist(c + R(2π/p)(x_i - c), P) / r_g,
 ///   r_g   = sqrt((1/n) Σ_i |x_i - c|²)   (radius of gyration about c),
+/// ~~~
 ///
 /// where dist(·, P) is the distance to the polygon (its edges). 0 for a curve
 /// that the rotation maps onto itself; scale-free. O(n²). p >= 2, n >= 3.

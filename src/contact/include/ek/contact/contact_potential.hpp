@@ -33,7 +33,9 @@
 /// forces that scale with the bending stiffness EI = E π r⁴/4 (paper defaults
 /// E = 2000, r = 0.2: EI ≈ 2.51, unit rest edges). To keep the same relative
 /// penetration ρ = d/d̂ at the same curve shape, scale ω ∝ EI/d̂ ∝ E r³:
+/// ~~~{.unparsed}
 ///   ω = 1e3 · (E / 2000) · (r / 0.2)³.
+/// ~~~
 ///
 /// Cost: update() is the broad phase (spatial hash over the n edges, O(n) for
 /// edges of similar length) plus one segment distance per candidate pair; with

@@ -8,16 +8,20 @@
 /// the gradient and the Hessian of a SQUARED distance s = d², on fixed-size
 /// Eigen types (nothing allocates). The dof order of a gradient / Hessian is
 /// the order of the arguments, each point contributing (x, y, z):
+/// ~~~{.unparsed}
 ///   point_point (p, q)                 6 dofs
 ///   point_line  (p, e0, e1)            9 dofs
 ///   line_line   (ea0, ea1, eb0, eb1)  12 dofs
+/// ~~~
 ///
 /// Formulas. Each squared distance is s(x) = min_u g(x, u), g = |w(x, u)|²,
 /// where w is the vector between the two closest points and u their free
 /// parameters (none, t on the line, or (s, t) on two lines). At the unique
 /// minimiser u*(x) (envelope theorem / implicit function theorem):
+/// ~~~{.unparsed}
 ///   ∇s  = g_x = 2 Jᵀ w,                       J = ∂w/∂x (3 by dofs, u fixed)
 ///   ∇²s = g_xx − g_xu g_uu⁻¹ g_ux,            g_xx = 2 JᵀJ
+/// ~~~
 /// which is exact (it is the Hessian of the closed-form |(p−e0)×e|²/|e|² and
 /// |(ea0−eb0)·(a×b)|²/|a×b|²) and avoids their cancellation-prone quotients.
 ///

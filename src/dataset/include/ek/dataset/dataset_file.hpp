@@ -3,7 +3,7 @@
 /// The data-set file: one HDF5 file holds the equilibria of many knot types
 /// (paper Section 7.4). Layout (docs/dataset-format.md documents it for users):
 ///
-/// ~~~
+/// ~~~{.unparsed}
 ///   /                                  attributes: format = "elastic-knots-dataset", format_version = 1,
 ///                                      and one per field of metadata_fields() (metadata.hpp): material,
 ///                                      n, solver, sampling, lattice walk, seed, stiffness flag, provenance

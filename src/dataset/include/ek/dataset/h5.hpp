@@ -63,7 +63,9 @@ Handle create_file(const std::string& path);
 Handle open_file(const std::string& path, bool writable);
 
 /// The checksum header (the HDF5 user block, which the HDF5 library skips):
+/// ~~~{.unparsed}
 ///   "elastic-knots-dataset checksum 1\ncrc32 <8 hex digits>\nlength <bytes>\n",
+/// ~~~
 /// zero-padded to kUserBlock bytes. crc32 is the CRC-32 (zlib) of every byte
 /// after the user block, length the size of the whole file: any change to the
 /// file after it was written (truncation, a flipped bit, a byte appended) is

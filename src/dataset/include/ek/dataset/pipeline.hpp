@@ -9,9 +9,11 @@
 /// score, is not available, so the definition is ours): 50 initial samples,
 /// then batches of 10; after each batch the importance score
 ///
+/// ~~~{.unparsed}
 ///   S = max_{j in batch, stable} ν_j · w_j  ∈ [0, 1],
 ///   ν_j = min(1, (1 - max_{i earlier or earlier in the batch} sim(j, i)) / δ)   (geometric novelty)
 ///   w_j = E_min / E_j                                                         (energy weight)
+/// ~~~
 ///
 /// where sim is the similarity of Section 7.1 (with orientation reversal),
 /// δ = novelty_distance, the distance at which two states count as different,

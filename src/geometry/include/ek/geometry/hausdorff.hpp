@@ -4,7 +4,9 @@
 /// vertices), the "direct measure of geometric similarity" the paper compares
 /// its curvature-torsion similarity with (Section 7.1, Fig.\ 5).
 ///
+/// ~~~{.unparsed}
 ///   h(A → B) = sup_{a ∈ A} dist(a, B),   d_H(A, B) = max(h(A → B), h(B → A))   [length]
+/// ~~~
 ///
 /// where A and B are the unions of their segments. The supremum need not lie
 /// at a vertex of A (the distance to B along a segment of A is a minimum of

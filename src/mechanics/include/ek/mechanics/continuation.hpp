@@ -11,7 +11,9 @@
 ///   G(x, μ) = 0,   w² t_xᵀ(x − x_p) + t_μ(μ − μ_p) = 0,
 /// by two solves with the exact Hessian H (indefinite in general; a sparse
 /// LU of H + κ QQᵀ, Q the rigid modes that keep the load):
+/// ~~~{.unparsed}
 ///   H a = −G,  H b = −∂G/∂μ,  Δμ = −(N + w² t_xᵀa) / (w² t_xᵀb + t_μ),  Δx = a + Δμ b.
+/// ~~~
 /// Every corrector step is cut to the collision-free fraction (the CCD of the
 /// contact term, the plates' barrier), so the knot type is kept, and halved
 /// until ||G|| decreases; a corrector that does not converge in

@@ -51,7 +51,9 @@ class ControlledLoad : public Potential {
 
 /// Pull between vertices i and j under displacement control, by a stiff
 /// spring of rest length D (the parameter):
+/// ~~~{.unparsed}
 ///   E = (k/2)(δ − D)²,  δ = |x_i − x_j|,  F = ∂E/∂D·(−1) = k(D − δ)
+/// ~~~
 /// (F > 0: the device pulls the points apart; F = ∂E/∂D). With k much stiffer than
 /// the knot along the pull, δ follows D (a hard device in the limit).
 class PullLoad : public ControlledLoad {
@@ -81,7 +83,9 @@ class PullLoad : public ControlledLoad {
 
 /// Opposite point forces of magnitude F (the parameter) on vertices i and j
 /// along the line joining them (F > 0 pulls them apart):
+/// ~~~{.unparsed}
 ///   E = −F δ,  δ = |x_i − x_j|.
+/// ~~~
 class ForceLoad : public ControlledLoad {
  public:
   /// Forces of magnitude `force` [force] on vertices i != j (>= 0); InputError
@@ -111,7 +115,9 @@ class ForceLoad : public ControlledLoad {
 /// Two parallel plates with unit normal a, through the planes
 /// a·(x − c) = ±g/2 (the gap g is the parameter), as a barrier on every
 /// vertex's distance to each plate, as the planarity slab (slab.hpp):
+/// ~~~{.unparsed}
 ///   E = κ Σ_i [ b(g/2 − s_i) + b(g/2 + s_i) ],  s_i = a·(x_i − c),
+/// ~~~
 /// b the IPC barrier with activation distance `reach` (the wire radius: the
 /// plates touch the wire's surface). F = −∂E/∂g is the force the plates
 /// press with (> 0). max_step keeps every vertex strictly between them.

@@ -10,9 +10,11 @@
 /// its rest Voronoi length is l̄_i^V = (l̄_{i-1} + l̄_i)/2. Vertex 0 is the
 /// closing vertex (edge n-1 to edge 0).
 ///
+/// ~~~{.unparsed}
 ///   E_stretch = Σ_j EA/2 (|e_j|/l̄_j - 1)² l̄_j
 ///   E_bend    = Σ_i EI/2 |(κb)_i|² / l̄_i^V,   (κb)_i = 2 e_{i-1}×e_i / (|e_{i-1}||e_i| + e_{i-1}·e_i)
 ///   E_twist   = Σ_i GJ/2 τ_i² / l̄_i^V,        τ_i = θ_i - θ_{i-1} + m_i + [i = 0] Θ
+/// ~~~
 ///
 /// Bending is the material-frame energy of Bergou et al. 2008 (eq. 5, per-edge
 /// material curvatures ω_i^j, j ∈ {i-1, i}, averaged over the two edges):

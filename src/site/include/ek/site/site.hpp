@@ -18,7 +18,7 @@
 ///
 /// Site layout (docs/explorer.md documents it for users):
 ///
-/// ~~~
+/// ~~~{.unparsed}
 ///   index.html, style.css, js/*.js      the pages (embedded in the program at build time)
 ///   three/build/three.module.js         three.js and its OrbitControls, copied from
 ///   three/examples/jsm/controls/...     Debian's libjs-three at run time

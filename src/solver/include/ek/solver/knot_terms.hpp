@@ -3,9 +3,11 @@
 /// The terms of the knot relaxation (paper Section 6, eq.\ 1) as Potentials
 /// (objective.hpp) over the rod's dofs [x (3n) | θ (n) | Θ]:
 ///
+/// ~~~{.unparsed}
 ///   RodTerm      E_stretch + E_bend + E_twist        (elastic_rod.hpp)
 ///   ContactTerm  ω Σ b(d_ij) over close edge pairs   (contact_potential.hpp)
 ///   SlabTerm     κ Σ b(h ∓ z_i), the planarity slab  (slab.hpp)
+/// ~~~
 ///
 /// Each wraps an object it does not own; the contact and slab terms act on
 /// the position dofs only. knot_objective() sums them.

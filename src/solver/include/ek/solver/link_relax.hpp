@@ -9,7 +9,9 @@
 /// edge lengths), and the contact barrier with its certified collision
 /// detection between every pair of edges of the link that do not share a
 /// vertex, across components too (contact_potential.hpp, CurveTopology):
+/// ~~~{.unparsed}
 ///   E(x) = Σ_c E_rod(x_c) + ω Σ_{pairs} b(d_ij).
+/// ~~~
 /// The dofs are the components' positions back to back, [x_0 (3n_0) | x_1
 /// (3n_1) | ...]. Since no accepted step lets two edges touch, no component
 /// changes its knot type and no two components pass through each other: the

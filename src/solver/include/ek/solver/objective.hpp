@@ -2,7 +2,9 @@
 /// \file
 /// What the Newton solver minimises (paper Section 6, eq.\ 1):
 ///
+/// ~~~{.unparsed}
 ///   E(x) = Σ_k E_k(x)
+/// ~~~
 ///
 /// over one vector of degrees of freedom x, as a sum of potentials E_k (the
 /// elastic rod, ω times the contact barrier, the planarity slab, ...). The

@@ -3,7 +3,9 @@
 /// Relaxing a closed curve to a stable equilibrium of the elastic rod with
 /// self-contact (paper Section 6, eq.\ 1):
 ///
+/// ~~~{.unparsed}
 ///   min_{x, θ} E_rod(x, θ) + ω E_contact(x) [+ E_slab(x)]
+/// ~~~
 ///
 /// by Newton's method (newton.hpp) with the Hessian shift ε·λ_min, λ_min the
 /// smallest nonzero eigenvalue of the straight rod's Hessian (computed once per

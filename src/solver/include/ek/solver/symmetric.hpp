@@ -7,12 +7,16 @@
 /// R by `angle` about an axis through c carries every vertex m places along
 /// the curve:
 ///
+/// ~~~{.unparsed}
 ///   x_{i+m} = c + R (x_i − c)   (indices mod n),   angle = 2πk/p, gcd(k, p) = 1.
+/// ~~~
 ///
 /// The symmetric curves form a linear subspace, parameterised by the
 /// fundamental vertices y = (x_0 … x_{m−1}) (3m dofs):
 ///
+/// ~~~{.unparsed}
 ///   x = S y + b,   x_{i+tm} = R^t y_i + (I − R^t) c   (t = 0 … p−1).
+/// ~~~
 ///
 /// E is invariant under the symmetry, so by the principle of symmetric
 /// criticality (Palais 1979) a critical point of E(S y + b) over y is a

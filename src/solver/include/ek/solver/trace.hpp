@@ -4,6 +4,7 @@
 /// one row per IterationRecord (newton.hpp), for `knots relax --trace` and
 /// the solver benchmarks. Columns, in this order:
 ///
+/// ~~~{.unparsed}
 ///   phase         index of the phase (minimize() call)
 ///   phase_name    its name (RelaxResult::phases), "" when not given
 ///   iteration     iterations taken before this one, in the phase
@@ -21,6 +22,7 @@
 ///   step          [1] accepted step fraction (0: none)
 ///   line_search_trials, active_pairs
 ///   seconds       [s] wall time of the iteration
+/// ~~~
 #include <array>
 #include <ostream>
 #include <string>

@@ -18,6 +18,7 @@
 /// more often, so the route prefers several short hops through
 /// intermediate minima to one long jump. Here:
 ///
+/// ~~~{.unparsed}
 ///   while minimax_path(g, a, b) is nullopt and attempts < max_searches:
 ///     weights on the complete graph of g's states: 0 for u, v joined by an
 ///       inter-state edge (either direction; an edge from == to joins two
@@ -36,6 +37,7 @@
 ///     add_pair(g, u, v, ...): its verified saddle joins u and v, and its
 ///     other saddles join the states their minima match (at `threshold`),
 ///     new minima become new states of g (and candidates for later links).
+/// ~~~
 ///
 /// The loop also ends when no path with an untried link is left
 /// (Exhausted). When a and b are joined, the chain is minimax_path(g, a, b)
