@@ -41,9 +41,10 @@ class ControlledLoad : public Potential {
   virtual double displacement() const = 0;
   /// What the parameter is: "distance", "gap" or "force".
   virtual std::string parameter_name() const = 0;
-  /// Whether a rigid motion of the curve leaves the load unchanged: all six
-  /// for a pull or forces between two points; for plates, the translations
-  /// in their plane and the rotation about their normal.
+  /// Whether the load is a pair of plates. The rigid motions of the curve
+  /// that leave a load unchanged are all six for a pull or forces between
+  /// two points, and for plates only the translations in their plane and the
+  /// rotation about their normal (LoadedKnot::rigid_modes()).
   virtual bool plates() const { return false; }
   /// The plates' unit normal a (plates()); +z for the other loads.
   virtual Vec3 normal() const { return Vec3::UnitZ(); }
