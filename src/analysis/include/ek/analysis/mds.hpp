@@ -22,7 +22,8 @@ namespace ek {
 /// Matrices up to this size use the dense eigensolver.
 inline constexpr int kMdsDenseLimit = 16;
 
-/// Outcome of the eigensolver.
+/// Outcome of the eigensolver: Converged, or NotConverged when the dense
+/// eigensolver failed.
 enum class MdsStatus { Converged, NotConverged };
 
 /// Result of classical_mds().

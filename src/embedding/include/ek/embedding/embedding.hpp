@@ -152,7 +152,8 @@ Embedding embed_pd(const PDCode& pd, const EmbeddingOptions& options = {});
 /// and when no drawing keeps the link type (use more vertices).
 LinkEmbedding embed_pd_link(const PDLinkCode& pd, const EmbeddingOptions& options = {});
 
-/// Which code an embedding of a table knot is built from.
+/// Which code an embedding of a table knot is built from: Braid, the table's
+/// braid word (embed_braid()), or PD, its PD code (embed_pd()).
 enum class EmbeddingSource { Braid, PD };
 EmbeddingSource parse_embedding_source(const std::string& text);  ///< "braid" | "pd"; InputError otherwise
 

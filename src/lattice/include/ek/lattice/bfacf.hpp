@@ -49,7 +49,8 @@ namespace ek {
 /// Critical fugacity β_c = 1/μ of self-avoiding polygons on Z³.
 constexpr double kCriticalFugacity = 0.21349092124;
 
-/// The three move types of Fig.\ 4 and "no change" (rejected or impossible).
+/// The three move types of Fig.\ 4 and "no change" (rejected or impossible):
+/// I (length −2), II (length +2), III (length ±0) as above, None.
 enum class BfacfMove { None, I, II, III };
 
 /// Counts of one run of attempted moves.

@@ -80,7 +80,8 @@ enum class TwistModel {
 };
 std::string to_string(TwistModel model);  ///< "twist-free", "free-theta", "fixed-link"
 
-/// Energy terms, each evaluable on its own.
+/// Energy terms, each evaluable on its own: Stretch, Bend, Twist (0 in
+/// TwistFree) or All, their sum.
 enum class EnergyTerm { Stretch, Bend, Twist, All };
 
 /// A closed discrete elastic rod (see the file comment for the formulas).
