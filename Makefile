@@ -13,7 +13,7 @@ CONFIGURE = cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DEK_KNOT_TABLE=$(
             -DPython3_EXECUTABLE=$(PYTHON) $(CMAKE_ARGS)
 CTEST     = cd $(BUILD) && KNOT_TABLE=$(KNOT_TABLE) ctest --output-on-failure -j$(JOBS)
 
-.PHONY: ledger-results ledger-shards stopping-truth help help-experiments deps configure build python test unit sanitize fuzz fuzz-build fuzz-test fuzz-seeds stress slurm-test bench figures experiments studies claims paper-open manifest compare-methods clean \
+.PHONY: ledger-results ledger-shards stopping-truth help help-experiments deps docs configure build python test unit sanitize fuzz fuzz-build fuzz-test fuzz-seeds stress slurm-test bench figures experiments studies claims paper-open manifest compare-methods clean \
         explorer explorer-screenshots serve browser
 
 help:
@@ -39,6 +39,7 @@ help:
 	@echo "make fuzz      libFuzzer on every reader, FUZZ_SECONDS=$(FUZZ_SECONDS) per target; crash inputs in results/fuzz/"
 	@echo "make unit      unit tests only"
 	@echo "make python    the Python module elastic_knots in $(BUILD)/python (docs/python.md)"
+	@echo "make docs      the API reference of the public headers (Doxygen) in $(BUILD)/docs/html; fails on any warning"
 	@echo "make deps      install missing Debian packages (scripts/install-deps.sh)"
 	@echo "make manifest  regenerate experiments/manifest.mk from experiments/manifest.json"
 	@echo "make clean     remove build folders (results/ and figures/out/ are kept)"
@@ -49,6 +50,24 @@ help:
 
 deps:
 	@scripts/install-deps.sh
+
+# The API reference (docs/api/Doxyfile: the public headers and the pages of
+# docs/api/) in $(BUILD)/docs/html. Every Doxygen warning (an undocumented
+# public declaration, a malformed command) fails the target; the warnings are
+# printed from $(BUILD)/docs/warnings.log, each once (Doxygen reports a free
+# function's twice: in its file and in its namespace).
+EK_VERSION = $(shell sed -n 's/^project.elastic_knots VERSION \([0-9.]*\).*/\1/p' CMakeLists.txt)
+docs: deps
+	@rm -rf $(BUILD)/docs/html && mkdir -p $(BUILD)/docs
+	@( cat docs/api/Doxyfile; \
+	   echo 'OUTPUT_DIRECTORY = "$(BUILD)/docs"'; \
+	   echo 'WARN_LOGFILE = "$(BUILD)/docs/warnings.log"'; \
+	   echo 'PROJECT_NUMBER = $(EK_VERSION)' ) | doxygen - ; status=$$?; \
+	if [ $$status -ne 0 ] || [ -s $(BUILD)/docs/warnings.log ]; then \
+	  awk '!seen[$$0]++' $(BUILD)/docs/warnings.log >&2; \
+	  echo "make docs: $$(sort -u $(BUILD)/docs/warnings.log | grep -c .) Doxygen warnings (doxygen exit status $$status)" >&2; \
+	  exit 1; fi
+	@echo "API reference: $(BUILD)/docs/html/index.html"
 
 configure: deps
 	@$(CONFIGURE) > /dev/null

@@ -15,6 +15,7 @@ packages=(
   libjs-three                                     # the data-set explorer (knots site)
   chromium chromium-driver python3-selenium       # the explorer's browser tests
   python3-dev python3-pybind11 python3-pytest     # the Python module (make python) and its tests
+  doxygen                                         # the API reference (make docs)
 )
 optional=(slurmctld slurmd slurm-client munge)
 

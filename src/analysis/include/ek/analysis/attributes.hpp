@@ -1,6 +1,7 @@
 #pragma once
+/// \file
 /// Attributes of an equilibrium curve for filtering and sorting (paper
-/// Section 7.3, Fig. 7).
+/// Section 7.3, Fig.\ 7).
 ///
 /// Geometric attributes (functions of the centerline alone; all invariant
 /// under rigid motions and cyclic re-indexing):
@@ -83,8 +84,8 @@ struct PhysicalAttributes {
 
 /// All attributes of one curve.
 struct Attributes {
-  GeometricAttributes geometric;
-  PhysicalAttributes physical;
+  GeometricAttributes geometric;  ///< functions of the centerline alone
+  PhysicalAttributes physical;    ///< stress, energies and stiffness of the wire
 };
 
 /// Geometric attributes of the closed polygon P (n by 3, n >= 3, finite, no zero-length edge).
@@ -120,7 +121,10 @@ double sphericity(const Points& P);
 /// Largest vertex-to-vertex distance and the vertex pair (i < j) realising it.
 struct Diameter {
   double distance = 0.0;  ///< [length]
+  ///@{
+  /// The vertex pair realising the diameter, i < j.
   int i = 0, j = 0;
+  ///@}
 };
 /// Exact O(n²) maximum over vertex pairs (n = 400: ~80k distances, tens of µs).
 Diameter diameter(const Points& P);

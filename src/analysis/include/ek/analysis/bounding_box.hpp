@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Oriented bounding boxes of point sets, for the 3D-ness attribute (paper
 /// Section 7.3).
 #include "ek/geometry/types.hpp"
@@ -10,7 +11,7 @@ struct OrientedBox {
   Vec3 center = Vec3::Zero();  ///< [length]
   Mat3 axes = Mat3::Identity();  ///< orthonormal columns a_0, a_1, a_2 (right-handed)
   Vec3 extents = Vec3::Zero();   ///< [length] edge lengths along the axes, sorted descending
-  double volume() const { return extents.prod(); }
+  double volume() const { return extents.prod(); }  ///< [length³] product of the extents
 };
 
 /// Box aligned with the principal axes of the points' covariance (PCA box).

@@ -1,6 +1,7 @@
 #pragma once
-/// A closed curve as a union of k circles in space (paper Section 8.4, Fig.
-/// 15: 9_35's 3D state "is composed of three intertwined circles", and the
+/// \file
+/// A closed curve as a union of k circles in space (paper Section 8.4, Fig.\ 15:
+/// 9_35's 3D state "is composed of three intertwined circles", and the
 /// knots retrieved near it "are all composed of three circular parts that are
 /// linked through a variable number of crossings at their touching regions").
 ///
@@ -58,6 +59,7 @@ struct CircleFit {
   double max_distance = 0.0;     ///< [length] largest distance of a vertex to its circle
   double mean_radius = 0.0;      ///< [length] share-weighted mean radius
   double min_plane_angle = 0.0;  ///< [rad] smallest angle between two circles' planes, in [0, π/2]
+  /// [1] rms_distance / mean_radius (0 when the mean radius is 0)
   double relative_rms() const { return mean_radius > 0.0 ? rms_distance / mean_radius : 0.0; }
 };
 

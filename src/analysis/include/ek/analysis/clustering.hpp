@@ -1,6 +1,7 @@
 #pragma once
+/// \file
 /// Agglomerative hierarchical clustering with complete linkage (paper
-/// Section 7.2, Fig. 6) on a distance matrix, usually D = 1 - S for a
+/// Section 7.2, Fig.\ 6) on a distance matrix, usually D = 1 - S for a
 /// similarity matrix S (similarity.hpp).
 ///
 /// Complete linkage: the distance between clusters A and B is
@@ -41,7 +42,7 @@ struct Dendrogram {
   /// Throws std::invalid_argument for a malformed matrix.
   static Dendrogram from_linkage(const Eigen::MatrixXd& linkage);
   /// Leaves in the left-to-right order of the drawn dendrogram (a before b at
-  /// every merge), e.g. to reorder a similarity matrix for display.
+  /// every merge), e.g.\ to reorder a similarity matrix for display.
   std::vector<int> leaf_order() const;
 };
 

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// JSON descriptions of the analysis results (docs/cli.md): the objects of
 /// `knots similarity --json` and `knots attributes --json` without the keys
 /// that name files (the command adds them first).

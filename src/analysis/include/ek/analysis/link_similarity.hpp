@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Similarity of two links of the same number of components: the
 /// curvature-torsion similarity of their components (similarity.hpp, paper
 /// Section 7.1) under the best pairing of components.
@@ -7,7 +8,9 @@
 /// of B (options as for curves: `reversal` lets each pair be compared with
 /// B_j's orientation reversed), the link similarity is
 ///
+/// ~~~{.unparsed}
 ///   S(A, B) = max_π (1/m) Σ_i S_{i π(i)}
+/// ~~~
 ///
 /// over the bijections π of the m components. With `mirror`, B's mirror image
 /// is compared too, as a whole (every component mirrored at once, never some
@@ -26,6 +29,8 @@
 
 namespace ek {
 
+/// What compare_links() returns: the link similarity, the best pairing of
+/// components and each pair's curve similarity.
 struct LinkSimilarityResult {
   double similarity = 0.0;                 ///< [1] S(A, B) in [0, 1]
   std::vector<int> pairing;                ///< component i of A is paired with pairing[i] of B

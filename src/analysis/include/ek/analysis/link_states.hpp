@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// States of a link: when two equilibria of one link type are the same
 /// state. This is the comparison that a link's data set clusters on
 /// (dataset/pipeline.hpp). The paper's data sets hold knots only. Its
@@ -20,12 +21,16 @@
 /// the link's mean component length L̄. F_c is their distribution, and its
 /// quantile function is read at K midpoints:
 ///
+/// ~~~{.unparsed}
 ///   Q_c[k] = F_c⁻¹((k + ½)/K),  k = 0 .. K−1,
+/// ~~~
 ///
 /// the "distance distribution" shape descriptor of Osada et al. (2002), one
 /// per component. The distance of links A and B with m components each is
 ///
+/// ~~~{.unparsed}
 ///   d(A, B) = min_π max_c RMS_k( Q^A_c[k] − Q^B_{π(c)}[k] )   [mean component length],
+/// ~~~
 ///
 /// over the m! pairings π. Two links are the same state when every
 /// component has the shape of its partner.
@@ -53,6 +58,8 @@
 
 namespace ek {
 
+/// The resolution of the link descriptor: q points per component and K
+/// quantiles (see the file's description).
 struct LinkShapeOptions {
   int samples = 256;    ///< [1] q, points per component (>= 4)
   int quantiles = 128;  ///< [1] K, quantiles of each distance distribution (>= 1)
@@ -62,12 +69,13 @@ struct LinkShapeOptions {
 /// A link's descriptor: each component's quantile function Q_c (K values,
 /// [mean component length]).
 struct LinkShape {
-  std::vector<Eigen::VectorXd> components;
+  std::vector<Eigen::VectorXd> components;  ///< Q_c, one K-vector per component, in the link's order
 };
 
 /// The descriptor of `link` (components of >= 3 vertices, positive length).
 LinkShape link_shape(const Link& link, const LinkShapeOptions& options = {});
 
+/// What link_state_distance() returns: d(A, B) and the pairing that realises it.
 struct LinkStateDistance {
   double distance = 0.0;     ///< [mean component length] d(A, B)
   std::vector<int> pairing;  ///< component c of A is paired with pairing[c] of B

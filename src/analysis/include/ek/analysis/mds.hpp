@@ -1,6 +1,7 @@
 #pragma once
+/// \file
 /// Classical multidimensional scaling (Torgerson 1952; Gower 1966) of a
-/// distance matrix, for the 2D scatter plot of Fig. 6 (paper Section 7.2).
+/// distance matrix, for the 2D scatter plot of Fig.\ 6 (paper Section 7.2).
 ///
 /// Given an N by N distance matrix D, with J = I - 11ᵀ/N the centring matrix,
 ///   B = -½ J D⁽²⁾ J     (D⁽²⁾ the entrywise squares),
@@ -21,7 +22,8 @@ namespace ek {
 /// Matrices up to this size use the dense eigensolver.
 inline constexpr int kMdsDenseLimit = 16;
 
-/// Outcome of the eigensolver.
+/// Outcome of the eigensolver: Converged, or NotConverged when the dense
+/// eigensolver failed.
 enum class MdsStatus { Converged, NotConverged };
 
 /// Result of classical_mds().
@@ -31,7 +33,7 @@ struct MdsResult {
   /// [1] Σ_k max(λ_k, 0) / trace(B): the share of the total squared spread
   /// (trace B = Σ_i |p_i - centroid|² for Euclidean D) that the d axes keep.
   double explained = 0.0;
-  MdsStatus status = MdsStatus::Converged;
+  MdsStatus status = MdsStatus::Converged;  ///< NotConverged when the dense eigensolver failed
 };
 
 /// Classical MDS of a symmetric N by N distance matrix (finite, symmetric to

@@ -1,6 +1,7 @@
 #pragma once
+/// \file
 /// Rigid alignment of closed curves (ICP with a search over cyclic shifts and
-/// symmetries) and cross-topology search (paper Section 8.2, Fig. 10): filter
+/// symmetries) and cross-topology search (paper Section 8.2, Fig.\ 10): filter
 /// candidates by attribute ranges, then rank them by alignment distance.
 ///
 /// Alignment of a candidate C to a query Q:
@@ -55,6 +56,8 @@ struct AlignmentOptions {
   void validate() const;
 };
 
+/// How the ICP of the best start ended: its mean squared distance decreased by
+/// less than relative_tolerance (Converged), or max_iterations were reached.
 enum class AlignmentStatus { Converged, MaxIterations };
 
 /// Result of align_curves().
@@ -63,12 +66,12 @@ struct Alignment {
   /// Rigid motion x -> rotation·x + translation mapping the candidate (after
   /// its symmetry) onto the query.
   Mat3 rotation = Mat3::Identity();
-  Vec3 translation = Vec3::Zero();
+  Vec3 translation = Vec3::Zero();  ///< [length]
   int shift = 0;          ///< [1] initial correspondence of the best start: Q_i <-> C_{(i+shift) mod m}
   bool reversed = false;  ///< the best alignment uses the candidate's reversed orientation
   bool mirrored = false;  ///< the best alignment uses the candidate's mirror image (x -> -x, applied first)
   int iterations = 0;     ///< [1] ICP iterations (step 3) of the best start
-  AlignmentStatus status = AlignmentStatus::Converged;
+  AlignmentStatus status = AlignmentStatus::Converged;  ///< of the best start's ICP
 };
 
 /// Aligns `candidate` to `query` (closed polygons, >= 3 vertices each).
@@ -107,7 +110,7 @@ struct SearchOptions {
 struct SearchHit {
   int index = 0;          ///< index into the candidate list
   double distance = 0.0;  ///< [length] alignment distance
-  Alignment alignment;
+  Alignment alignment;    ///< the rigid motion and symmetry that align the candidate to the query
 };
 
 /// Cross-topology search: keeps the candidates whose attributes pass

@@ -1,9 +1,11 @@
 #pragma once
+/// \file
 /// Curvature and curvature-weighted torsion signatures of a closed polygon
 /// (paper Section 7.1).
 ///
 /// For a closed polygon x_0 .. x_{n-1} (n by 3, edge j = x_{j+1} - x_j, cyclic):
 ///
+/// ~~~{.unparsed}
 ///   curvature   κ_i = φ_i / ℓ_i,   φ_i = turning angle at node i (angle in
 ///               [0, π] between e_{i-1} and e_i), ℓ_i = (|e_{i-1}| + |e_i|)/2
 ///               the node's Voronoi length;                     [1/length]
@@ -13,6 +15,7 @@
 ///               θ_j = atan2((b_j × b_{j+1})·t_j, b_j·b_{j+1}) ∈ (-π, π];
 ///               positive for a right-handed helix;           [1/length]
 ///   signature   K_i = κ_i,  T_i = κ_i (τ^{i-1} + τ^i)/2.   [1/length, 1/length²]
+/// ~~~
 ///
 /// Degenerate cases (no NaN is ever produced):
 ///  - a node whose incident edges are (anti)parallel, |e_{i-1} × e_i| <=
@@ -56,7 +59,7 @@ inline constexpr double kCoplanarSafety = 16.0;
 struct CurveSignature {
   VecX curvature;  ///< K_i = κ_i [1/length]
   VecX torsion;    ///< T_i = κ_i (τ^{i-1} + τ^i)/2 [1/length²]
-  int size() const { return static_cast<int>(curvature.size()); }
+  int size() const { return static_cast<int>(curvature.size()); }  ///< n, the number of nodes
 };
 
 /// Discrete curvature κ_i (length n) of the closed polygon P (n by 3, n >= 3).

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Curvature-torsion similarity of closed curves (paper Section 7.1) with
 /// FFT cross-correlations.
 ///
@@ -6,11 +7,15 @@
 /// signature.hpp; curves are first brought to a common vertex count n, below)
 /// the normalised cyclic cross-correlation is
 ///
+/// ~~~{.unparsed}
 ///   (A ⋆ B)[s] = Σ_i A_i B_{(i+s) mod n} / (‖A‖ ‖B‖),   s = 0 .. n-1,
+/// ~~~
 ///
 /// and the score of one symmetry is
 ///
+/// ~~~{.unparsed}
 ///   S = max_s ( [(K1 ⋆ K2)[s]]₊ + [(T1 ⋆ T2)[s]]₊ ) / 2 ∈ [0, 1],  [x]₊ = max(x, 0).
+/// ~~~
 ///
 /// The paper writes the bracket without the factor 1/2 and states that it lies
 /// in [0, 1]; the sum of two correlations reaches 2, so we divide by 2: S = 1
@@ -106,12 +111,14 @@ struct SimilarityResult {
 /// shared by several engines and threads.
 class SignatureSpectrum {
  public:
-  SignatureSpectrum() = default;
+  SignatureSpectrum() = default;   ///< An empty spectrum (size 0); SimilarityEngine::spectrum() makes real ones.
   int size() const { return n_; }  ///< n, the signature length
-  bool curvature_is_zero() const { return k_zero_; }
+  bool curvature_is_zero() const { return k_zero_; }  ///< whether K is zero (‖K‖ = 0)
+  /// whether T counts as zero (RMS(T) <= zero_tolerance · mean(K²), or K zero)
   bool torsion_is_zero() const { return t_zero_; }
   /// r2c transforms (n/2 + 1 coefficients) of K/‖K‖ and T/‖T‖ (zero arrays for zero profiles).
   const std::vector<std::complex<double>>& curvature_spectrum() const { return fk_; }
+  /// as curvature_spectrum(), of T/‖T‖
   const std::vector<std::complex<double>>& torsion_spectrum() const { return ft_; }
 
  private:
@@ -129,14 +136,14 @@ class SimilarityEngine {
  public:
   /// n >= 3 signature length; options.samples is ignored (n is the common count).
   explicit SimilarityEngine(int n, const SimilarityOptions& options = {});
-  ~SimilarityEngine();
-  SimilarityEngine(const SimilarityEngine&) = delete;
-  SimilarityEngine& operator=(const SimilarityEngine&) = delete;
-  SimilarityEngine(SimilarityEngine&&) noexcept;
-  SimilarityEngine& operator=(SimilarityEngine&&) noexcept;
+  ~SimilarityEngine();                                            ///< Destroys the FFTW plans and buffers.
+  SimilarityEngine(const SimilarityEngine&) = delete;             ///< Not copyable.
+  SimilarityEngine& operator=(const SimilarityEngine&) = delete;  ///< Not copyable.
+  SimilarityEngine(SimilarityEngine&&) noexcept;                  ///< Moves the plans and buffers.
+  SimilarityEngine& operator=(SimilarityEngine&&) noexcept;       ///< Moves the plans and buffers.
 
-  int size() const;
-  const SimilarityOptions& options() const;
+  int size() const;                          ///< n, the signature length compared
+  const SimilarityOptions& options() const;  ///< the options as given
 
   /// Spectrum of a curve (resampled to n vertices when it has another count or options.resample is set).
   SignatureSpectrum spectrum(const Points& P);
@@ -150,7 +157,7 @@ class SimilarityEngine {
 
   /// N by N symmetric matrix of similarities, diagonal exactly 1 (each pair computed once).
   Eigen::MatrixXd matrix(const std::vector<SignatureSpectrum>& spectra);
-  /// |a| by |b| matrix of similarities between two sets (e.g. a new batch against earlier curves).
+  /// |a| by |b| matrix of similarities between two sets (e.g.\ a new batch against earlier curves).
   Eigen::MatrixXd cross_matrix(const std::vector<SignatureSpectrum>& a, const std::vector<SignatureSpectrum>& b);
 
  private:

@@ -1,6 +1,7 @@
 #pragma once
+/// \file
 /// Rotational symmetry of closed curves and the crossing polygons of periodic
-/// braids (paper Section 8.4, Fig. 16: "the observed topological pattern also
+/// braids (paper Section 8.4, Fig.\ 16: "the observed topological pattern also
 /// manifests itself in geometric symmetry"; "the crossing patterns form two
 /// regular p-gons, one at the top and one at the bottom of each embedding.
 /// For odd p these align, while for even p they are rotated relative to each
@@ -19,8 +20,10 @@ namespace ek {
 /// p-fold rotational symmetry error of P about the line through `center`
 /// along the unit vector `axis`:
 ///
+/// ~~~{.unparsed}
 ///   error = (1/n) Σ_i dist(c + R(2π/p)(x_i - c), P) / r_g,
 ///   r_g   = sqrt((1/n) Σ_i |x_i - c|²)   (radius of gyration about c),
+/// ~~~
 ///
 /// where dist(·, P) is the distance to the polygon (its edges). 0 for a curve
 /// that the rotation maps onto itself; scale-free. O(n²). p >= 2, n >= 3.
@@ -72,6 +75,7 @@ struct RegularPolygonFit {
   double phase = 0.0;       ///< [rad] in (-π/p, π/p]
   double max_error = 0.0;   ///< [deg] largest deviation from the nearest vertex
 };
+/// The regular p-gon (p >= 1) fitted to `angles` [rad] (see RegularPolygonFit).
 RegularPolygonFit fit_regular_polygon(const std::vector<double>& angles, int p);
 
 /// The two p-gons of a braid closure's crossings seen along `axis`.
@@ -79,7 +83,10 @@ struct CrossingPolygons {
   int projected = 0;   ///< [1] crossings of the projection along the axis
   int crossings = 0;   ///< [1] of them, those whose strands pass within max_gap along the axis
   bool by_radius = false;  ///< split at the median distance from the axis (else at the median height)
-  RegularPolygonFit top, bottom;  ///< the two halves (outer and inner ring when by_radius)
+  ///@{
+  /// The two halves (outer and inner ring when by_radius).
+  RegularPolygonFit top, bottom;
+  ///@}
   double rotation = 0.0;  ///< [deg] between the two p-gons' phases, in [0, 180/p]
   /// [deg] the larger of the two halves' max_error
   double error() const { return top.max_error > bottom.max_error ? top.max_error : bottom.max_error; }

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// What a knot's sampling has not seen yet, estimated from how many samples
 /// fell into each distinct state: a state is a "species", a sample an
 /// "individual", and the estimators are those of species richness.
@@ -32,10 +33,13 @@
 
 namespace ek {
 
+/// The confidence level of estimate_unseen()'s interval.
 struct UnseenOptions {
   double confidence = 0.95;  ///< [1] two-sided level of the interval, in (0, 1)
 };
 
+/// What estimate_unseen() returns: the counts it starts from and the estimates
+/// of the unseen states (see the file's description).
 struct UnseenEstimate {
   int samples = 0;                     ///< [1] n: samples that reached a state
   int observed = 0;                    ///< [1] D: states seen

@@ -1,20 +1,25 @@
 #pragma once
+/// \file
 /// The IPC barrier and the contact energy of one pair of segments (paper
-/// Section 6, "Contact Handling"; Li et al. 2020, "Incremental Potential
-/// Contact", eq. 6 and Section 4.3).
+/// Section 6, "Contact Handling"; Li et al.\ 2020, "Incremental Potential
+/// Contact", eq.\ 6 and Section 4.3).
 ///
 /// Barrier (in the distance d, not its square):
+/// ~~~{.unparsed}
 ///   b(d) = −(d − d̂)² ln(d / d̂)   for 0 < d < d̂,      0 for d >= d̂,
 ///   b'(d)  = −2 (d − d̂) ln(d/d̂) − (d − d̂)²/d,
 ///   b''(d) = −2 ln(d/d̂) − 4 (d − d̂)/d + (d − d̂)²/d².
+/// ~~~
 /// b, b' and b'' vanish at d̂ (b is C2 there), b → +∞ as d → 0; units length².
 /// The kernels work with the squared distance s = d² (distance.hpp) and the
 /// chain rule B(s) = b(√s), B'(s) = b'(d)/(2d), B''(s) = (b''(d) − b'(d)/d)/(4d²).
 ///
 /// Pair energy. For segments A = [ea0, ea1] and B = [eb0, eb1] with segment
 /// distance f (distance.hpp, the exact minimum over both segments):
+/// ~~~{.unparsed}
 ///   e(x) = b(f)                                     if sin²θ >= ε,
 ///   e(x) = m(c) b(f) + (1 − m(c)) · ½ Σ_k b(d_k)   if c = sin²θ < ε,
+/// ~~~
 /// where θ is the angle between the segments, c = sin²θ = 1 − (a·b)²/(|a|²|b|²),
 /// m(c) = (c/ε)(2 − c/ε) the IPC mollifier (m(0) = 0, m(ε) = 1, m'(ε) = 0),
 /// ε = parallel_threshold, and d_k the four endpoint-to-segment distances
@@ -46,8 +51,8 @@ double barrier_second_derivative(double d, double dhat);
 /// The mollifier m(c) = (c/ε)(2 − c/ε) for c < ε, 1 otherwise, and its first
 /// and second derivatives in c.
 double parallel_mollifier(double c, double eps);
-double parallel_mollifier_first_derivative(double c, double eps);
-double parallel_mollifier_second_derivative(double c, double eps);
+double parallel_mollifier_first_derivative(double c, double eps);   ///< m'(c).
+double parallel_mollifier_second_derivative(double c, double eps);  ///< m''(c).
 
 /// sin² of the angle between a = ea1 − ea0 and b = eb1 − eb0,
 /// c = 1 − (a·b)²/(|a|²|b|²), with gradient and Hessian in the dofs
@@ -65,8 +70,12 @@ struct PairBarrierParams {
 /// dofs (ea0, ea1, eb0, eb1). +∞ when the segments touch.
 double edge_edge_barrier(const Vec3& ea0, const Vec3& ea1, const Vec3& eb0, const Vec3& eb1,
                          const PairBarrierParams& params);
+/// Gradient (12) of edge_edge_barrier() in the dofs (ea0, ea1, eb0, eb1);
+/// zero when the pair is farther than d̂.
 Vec12 edge_edge_barrier_gradient(const Vec3& ea0, const Vec3& ea1, const Vec3& eb0, const Vec3& eb1,
                                  const PairBarrierParams& params);
+/// Hessian (12 by 12) of edge_edge_barrier() in the dofs (ea0, ea1, eb0, eb1);
+/// zero when the pair is farther than d̂.
 Mat12 edge_edge_barrier_hessian(const Vec3& ea0, const Vec3& ea1, const Vec3& eb0, const Vec3& eb1,
                                 const PairBarrierParams& params);
 

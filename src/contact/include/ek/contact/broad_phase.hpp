@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Broad phase for edge-edge contact: all pairs of non-excluded edges whose
 /// axis-aligned boxes overlap, by a uniform spatial hash (no O(n²) scan).
 ///
@@ -28,10 +29,12 @@ namespace ek {
 
 /// A pair of edges a < b (edge i joins vertex i to topology.next(i)).
 struct EdgePair {
-  int a = -1;
-  int b = -1;
+  int a = -1;  ///< The edge of lower index.
+  int b = -1;  ///< The edge of higher index.
+  /// Same two edges.
   friend bool operator==(const EdgePair& p, const EdgePair& q) { return p.a == q.a && p.b == q.b; }
-  friend bool operator!=(const EdgePair& p, const EdgePair& q) { return !(p == q); }
+  friend bool operator!=(const EdgePair& p, const EdgePair& q) { return !(p == q); }  ///< Not the same two edges.
+  /// Lexicographic order by (a, b).
   friend bool operator<(const EdgePair& p, const EdgePair& q) { return p.a < q.a || (p.a == q.a && p.b < q.b); }
 };
 
@@ -55,8 +58,8 @@ class EdgeBroadPhase {
   const std::vector<EdgePair>& swept_subset(const std::vector<EdgePair>& candidates, const Points& x,
                                             const Points& dx, double inflation);
 
-  const CurveTopology& topology() const { return topology_; }
-  int excluded_neighbors() const { return excluded_; }
+  const CurveTopology& topology() const { return topology_; }  ///< The components of the curves the broad phase is for.
+  int excluded_neighbors() const { return excluded_; }  ///< Edges within this cyclic index distance are never reported.
   /// Endpoint of edge i other than i (= topology().next(i)).
   int edge_end(int i) const { return next_[static_cast<size_t>(i)]; }
   /// Same as topology().excluded(i, j, excluded_neighbors()), from tables.
@@ -98,9 +101,12 @@ class EdgeBroadPhase {
 };
 
 /// Brute-force references (O(n²), for tests): every non-excluded pair whose
-/// static / swept boxes overlap, sorted.
+/// static / swept boxes overlap, sorted. This one: the static boxes, as
+/// EdgeBroadPhase::static_pairs().
 std::vector<EdgePair> static_pairs_brute_force(const Points& x, const CurveTopology& topology, int excluded_neighbors,
                                                double inflation);
+/// The swept boxes by testing every pair, as EdgeBroadPhase::swept_pairs()
+/// (O(n²), for tests); sorted.
 std::vector<EdgePair> swept_pairs_brute_force(const Points& x, const Points& dx, const CurveTopology& topology,
                                               int excluded_neighbors, double inflation);
 

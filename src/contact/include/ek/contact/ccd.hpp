@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Conservative continuous collision detection for two moving segments
 /// (paper Section 6: "continuous-time collision detection ... to compute
 /// admissible, collision-free step sizes"). Additive CCD in the spirit of

@@ -1,8 +1,9 @@
 #pragma once
+/// \file
 /// Self-contact of closed polylines that can never change the knot type
-/// (paper Section 6, "Contact Handling", eq. 1: E_rod + ω E_contact; the
-/// variational contact of Li et al. 2020 "Incremental Potential Contact" and
-/// Li et al. 2021 "Codimensional IPC", here for closed curves).
+/// (paper Section 6, "Contact Handling", eq.\ 1: E_rod + ω E_contact; the
+/// variational contact of Li et al.\ 2020 "Incremental Potential Contact" and
+/// Li et al.\ 2021 "Codimensional IPC", here for closed curves).
 ///
 /// Energy:  E(x) = ω Σ_{active pairs (i, j)} e_ij(x)
 ///   over pairs of edges that are not excluded (edges sharing a vertex are;
@@ -32,7 +33,9 @@
 /// forces that scale with the bending stiffness EI = E π r⁴/4 (paper defaults
 /// E = 2000, r = 0.2: EI ≈ 2.51, unit rest edges). To keep the same relative
 /// penetration ρ = d/d̂ at the same curve shape, scale ω ∝ EI/d̂ ∝ E r³:
+/// ~~~{.unparsed}
 ///   ω = 1e3 · (E / 2000) · (r / 0.2)³.
+/// ~~~
 ///
 /// Cost: update() is the broad phase (spatial hash over the n edges, O(n) for
 /// edges of similar length) plus one segment distance per candidate pair; with
@@ -75,18 +78,29 @@ namespace ek {
 
 /// Defaults (paper Section 6).
 inline constexpr double kDefaultDhat = 0.4;          ///< 2r with r = 0.2
+/// [energy/length²] ω for the paper's material (E = 2000, r = 0.2) at
+/// d̂ = 0.4; default_contact_stiffness() (solver/relax.hpp) scales it for
+/// another material ("Stiffness scaling" above).
 inline constexpr double kDefaultContactStiffness = 1e3;
 
+/// The parameters of the contact potential: barrier distance and stiffness,
+/// the collision detection and the broad phase.
 struct ContactOptions {
   double dhat = kDefaultDhat;  ///< [length] barrier distance d̂ = wire diameter 2r (paper defaults: r = 0.2)
   double stiffness = kDefaultContactStiffness;  ///< [energy/length²] ω (see "Stiffness scaling" above)
-  int excluded_neighbors = 1;  ///< [edges] edges within this index distance along a component are excluded; 1 = only edges sharing a vertex (the only setting that keeps the guarantee)
+  /// [edges] edges within this index distance along a component are excluded; 1 = only edges sharing a vertex (the only
+  /// setting that keeps the guarantee)
+  int excluded_neighbors = 1;
   bool project_psd = false;    ///< project each pair's 12 by 12 barrier Hessian to positive semidefinite
   double parallel_threshold = 1e-3;  ///< [1] ε: pairs with sin²(angle) < ε use the mollified energy (barrier.hpp)
-  double ccd_separation = 0.1;  ///< [1] CCD keeps every pair at >= this fraction of min(current distance, d̂); in (0, 1)
-  double ccd_tolerance = 0.1;   ///< [1] per-pair CCD stops within this fraction of the gap to the floor (ccd.hpp); in (0, 1]
+  /// [1] CCD keeps every pair at >= this fraction of min(current distance, d̂); in (0, 1)
+  double ccd_separation = 0.1;
+  /// [1] per-pair CCD stops within this fraction of the gap to the floor (ccd.hpp); in (0, 1]
+  double ccd_tolerance = 0.1;
   int ccd_max_iterations = 1000;  ///< [1] per-pair cap on CCD distance evaluations (result stays certified)
-  double broad_phase_skin = 0.1;  ///< [length] update() keeps the broad phase's pairs within d̂ + skin while no vertex has moved skin/2 since it ran (0: run it every time)
+  /// [length] update() keeps the broad phase's pairs within d̂ + skin while no vertex has moved skin/2 since it ran (0:
+  /// run it every time)
+  double broad_phase_skin = 0.1;
   /// [length] Hessian pattern with hysteresis (see "Hessian pattern" above):
   /// 0 = the pattern is the active set; > 0 = the pairs within d̂ + margin at
   /// the last rebuild, kept until an active pair falls outside them.
@@ -98,8 +112,14 @@ struct ContactOptions {
 
 /// One pair of edges within d̂.
 struct ContactPair {
-  int edge_a = -1, edge_b = -1;  ///< edge indices, edge_a < edge_b
-  int a0 = -1, a1 = -1, b0 = -1, b1 = -1;  ///< vertex indices of the endpoints
+  ///@{
+  /// Edge indices, edge_a < edge_b.
+  int edge_a = -1, edge_b = -1;
+  ///@}
+  ///@{
+  /// Vertex indices of the endpoints: edge_a joins a0 to a1, edge_b joins b0 to b1.
+  int a0 = -1, a1 = -1, b0 = -1, b1 = -1;
+  ///@}
   EdgeEdgeDistanceType type = EdgeEdgeDistanceType::EA_EB;  ///< closest features at update()
   double distance = 0.0;  ///< [length] segment distance at update()
 };
@@ -108,24 +128,33 @@ struct ContactPair {
 struct StepReport {
   double t = 1.0;          ///< [1] certified step (max_step)
   int candidates = 0;      ///< pairs whose swept boxes overlap (tested)
-  int edge_a = -1, edge_b = -1;  ///< the pair that limits t (-1 when t = 1)
+  ///@{
+  /// The pair of edges that limits t (-1 when t = 1).
+  int edge_a = -1, edge_b = -1;
+  ///@}
   double start_distance = 0.0;   ///< [length] that pair's distance at s = 0
   double floor = 0.0;            ///< [length] that pair's floor δ
   long long iterations = 0;      ///< distance evaluations over all pairs
 };
 
+/// The contact energy ω Σ e_ij of the curves' edge pairs within d̂, its
+/// gradient and Hessian, and the certified collision-free step (see the
+/// file's description). Keeps the active set of the last update(), the broad
+/// phase's buffers and the Hessian pattern between calls.
 class ContactPotential {
  public:
+  /// For curves of these components; validates the options (std::invalid_argument).
   ContactPotential(CurveTopology topology, ContactOptions options);
 
-  const CurveTopology& topology() const { return broad_.topology(); }
-  const ContactOptions& options() const { return options_; }
-  int num_vertices() const { return n_; }
+  const CurveTopology& topology() const { return broad_.topology(); }  ///< The components of the curves.
+  const ContactOptions& options() const { return options_; }           ///< The options as given.
+  int num_vertices() const { return n_; }                              ///< n, the vertices of all components.
 
   /// Broad phase and active set at positions x (n by 3): pairs of
   /// non-excluded edges with segment distance < d̂, sorted by (edge_a, edge_b).
   void update(const Points& x);
-  size_t num_active() const { return active_.size(); }
+  size_t num_active() const { return active_.size(); }  ///< Number of active pairs (within d̂ at the last update()).
+  /// The active pairs of the last update(), sorted by (edge_a, edge_b).
   const std::vector<ContactPair>& active_pairs() const { return active_; }
   /// Pairs tested by the last update() (boxes within d̂ + hessian_margin).
   size_t num_candidates() const { return candidates_; }

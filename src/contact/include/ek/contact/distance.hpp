@@ -1,22 +1,27 @@
 #pragma once
+/// \file
 /// Differentiable squared distances between the closest features of two
 /// segments (paper Section 6, "Contact Handling"; the distance types of
-/// Li et al. 2020, "Incremental Potential Contact", Section 4 and supplement).
+/// Li et al.\ 2020, "Incremental Potential Contact", Section 4 and supplement).
 ///
 /// Every kernel is a trio of free functions with the same arguments: the value,
 /// the gradient and the Hessian of a SQUARED distance s = d², on fixed-size
 /// Eigen types (nothing allocates). The dof order of a gradient / Hessian is
 /// the order of the arguments, each point contributing (x, y, z):
+/// ~~~{.unparsed}
 ///   point_point (p, q)                 6 dofs
 ///   point_line  (p, e0, e1)            9 dofs
 ///   line_line   (ea0, ea1, eb0, eb1)  12 dofs
+/// ~~~
 ///
 /// Formulas. Each squared distance is s(x) = min_u g(x, u), g = |w(x, u)|²,
 /// where w is the vector between the two closest points and u their free
 /// parameters (none, t on the line, or (s, t) on two lines). At the unique
 /// minimiser u*(x) (envelope theorem / implicit function theorem):
+/// ~~~{.unparsed}
 ///   ∇s  = g_x = 2 Jᵀ w,                       J = ∂w/∂x (3 by dofs, u fixed)
 ///   ∇²s = g_xx − g_xu g_uu⁻¹ g_ux,            g_xx = 2 JᵀJ
+/// ~~~
 /// which is exact (it is the Hessian of the closed-form |(p−e0)×e|²/|e|² and
 /// |(ea0−eb0)·(a×b)|²/|a×b|²) and avoids their cancellation-prone quotients.
 ///
@@ -46,12 +51,12 @@
 
 namespace ek {
 
-using Vec6 = Eigen::Matrix<double, 6, 1>;
-using Vec9 = Eigen::Matrix<double, 9, 1>;
-using Vec12 = Eigen::Matrix<double, 12, 1>;
-using Mat6 = Eigen::Matrix<double, 6, 6>;
-using Mat9 = Eigen::Matrix<double, 9, 9>;
-using Mat12 = Eigen::Matrix<double, 12, 12>;
+using Vec6 = Eigen::Matrix<double, 6, 1>;     ///< Gradient in the dofs of 2 points (x, y, z each).
+using Vec9 = Eigen::Matrix<double, 9, 1>;     ///< Gradient in the dofs of 3 points (x, y, z each).
+using Vec12 = Eigen::Matrix<double, 12, 1>;   ///< Gradient in the dofs of 4 points (x, y, z each).
+using Mat6 = Eigen::Matrix<double, 6, 6>;     ///< Hessian in the dofs of 2 points.
+using Mat9 = Eigen::Matrix<double, 9, 9>;     ///< Hessian in the dofs of 3 points.
+using Mat12 = Eigen::Matrix<double, 12, 12>;  ///< Hessian in the dofs of 4 points.
 
 /// Below this sin² of the angle between two segments the edge-edge interior
 /// case is not used (see the file comment).
@@ -60,17 +65,21 @@ inline constexpr double kParallelSin2 = 1e-10;
 // ---------------------------------------------------------------------------
 // Point-point: s = |p − q|².
 
+/// s = |p − q|² [length²].
 double point_point_distance_squared(const Vec3& p, const Vec3& q);
-Vec6 point_point_distance_squared_gradient(const Vec3& p, const Vec3& q);
-Mat6 point_point_distance_squared_hessian(const Vec3& p, const Vec3& q);
+Vec6 point_point_distance_squared_gradient(const Vec3& p, const Vec3& q);  ///< ∇s in the dofs (p, q).
+Mat6 point_point_distance_squared_hessian(const Vec3& p, const Vec3& q);   ///< ∇²s in the dofs (p, q).
 
 // ---------------------------------------------------------------------------
 // Point-line: s = |(p − e0) × e|² / |e|², e = e1 − e0 (distance from p to the
 // infinite line through e0 and e1; e0 != e1). Closest point e0 + t e with
 // t = (p − e0)·e / |e|².
 
+/// s = |(p − e0) × e|² / |e|² [length²], e = e1 − e0 (e0 != e1).
 double point_line_distance_squared(const Vec3& p, const Vec3& e0, const Vec3& e1);
+/// ∇s in the dofs (p, e0, e1).
 Vec9 point_line_distance_squared_gradient(const Vec3& p, const Vec3& e0, const Vec3& e1);
+/// ∇²s in the dofs (p, e0, e1).
 Mat9 point_line_distance_squared_hessian(const Vec3& p, const Vec3& e0, const Vec3& e1);
 
 // ---------------------------------------------------------------------------
@@ -79,8 +88,11 @@ Mat9 point_line_distance_squared_hessian(const Vec3& p, const Vec3& e0, const Ve
 // eb0 + t b with (s, t) solving [a·a, −a·b; −a·b, b·b] (s, t) = (−a·r, b·r),
 // r = ea0 − eb0.
 
+/// s = ((ea0 − eb0)·n)² / |n|² [length²], n = a × b (the lines not parallel).
 double line_line_distance_squared(const Vec3& ea0, const Vec3& ea1, const Vec3& eb0, const Vec3& eb1);
+/// ∇s in the dofs (ea0, ea1, eb0, eb1).
 Vec12 line_line_distance_squared_gradient(const Vec3& ea0, const Vec3& ea1, const Vec3& eb0, const Vec3& eb1);
+/// ∇²s in the dofs (ea0, ea1, eb0, eb1).
 Mat12 line_line_distance_squared_hessian(const Vec3& ea0, const Vec3& ea1, const Vec3& eb0, const Vec3& eb1);
 
 // ---------------------------------------------------------------------------
@@ -90,11 +102,14 @@ Mat12 line_line_distance_squared_hessian(const Vec3& ea0, const Vec3& ea1, const
 /// (P_E1), or the interior (P_E, point-line distance).
 enum class PointEdgeDistanceType { P_E0, P_E1, P_E };
 
+/// The closest feature of [e0, e1] to p.
 PointEdgeDistanceType point_edge_distance_type(const Vec3& p, const Vec3& e0, const Vec3& e1);
 /// The chosen case's squared distance (the exact point-segment distance when
 /// `type` is point_edge_distance_type(p, e0, e1)); dofs (p, e0, e1).
 double point_edge_distance_squared(const Vec3& p, const Vec3& e0, const Vec3& e1, PointEdgeDistanceType type);
+/// Gradient (9) of the chosen case in the dofs (p, e0, e1).
 Vec9 point_edge_distance_squared_gradient(const Vec3& p, const Vec3& e0, const Vec3& e1, PointEdgeDistanceType type);
+/// Hessian (9 by 9) of the chosen case in the dofs (p, e0, e1).
 Mat9 point_edge_distance_squared_hessian(const Vec3& p, const Vec3& e0, const Vec3& e1, PointEdgeDistanceType type);
 
 // ---------------------------------------------------------------------------
@@ -104,15 +119,15 @@ Mat9 point_edge_distance_squared_hessian(const Vec3& p, const Vec3& e0, const Ve
 /// against the other segment's interior (EA0_EB, ...), or two endpoints
 /// (EA0_EB0, ...).
 enum class EdgeEdgeDistanceType {
-  EA_EB,
-  EA0_EB,
-  EA1_EB,
-  EA_EB0,
-  EA_EB1,
-  EA0_EB0,
-  EA0_EB1,
-  EA1_EB0,
-  EA1_EB1
+  EA_EB,    ///< Interior of a against interior of b (line-line distance).
+  EA0_EB,   ///< Endpoint ea0 against the interior of b (point-line).
+  EA1_EB,   ///< Endpoint ea1 against the interior of b (point-line).
+  EA_EB0,   ///< Endpoint eb0 against the interior of a (point-line).
+  EA_EB1,   ///< Endpoint eb1 against the interior of a (point-line).
+  EA0_EB0,  ///< Endpoints ea0 and eb0 (point-point).
+  EA0_EB1,  ///< Endpoints ea0 and eb1 (point-point).
+  EA1_EB0,  ///< Endpoints ea1 and eb0 (point-point).
+  EA1_EB1   ///< Endpoints ea1 and eb1 (point-point).
 };
 
 /// Short name of a type ("EA_EB", "EA0_EB1", ...).
@@ -124,9 +139,10 @@ EdgeEdgeDistanceType edge_edge_distance_type(const Vec3& ea0, const Vec3& ea1, c
 
 /// Classification and value in one pass (the squared segment distance).
 struct EdgeEdgeClosest {
-  EdgeEdgeDistanceType type = EdgeEdgeDistanceType::EA_EB;
+  EdgeEdgeDistanceType type = EdgeEdgeDistanceType::EA_EB;  ///< The closest features (edge_edge_distance_type()).
   double distance_squared = 0.0;  ///< [length²]
 };
+/// edge_edge_distance_type() and the squared distance of that case.
 EdgeEdgeClosest edge_edge_closest(const Vec3& ea0, const Vec3& ea1, const Vec3& eb0, const Vec3& eb1);
 
 /// Parameters (s, t) of the closest points ea0 + s (ea1 − ea0) and
@@ -137,8 +153,10 @@ void edge_edge_closest_parameters(const Vec3& ea0, const Vec3& ea1, const Vec3& 
 /// The chosen case's squared distance, scattered into the dofs (ea0, ea1, eb0, eb1).
 double edge_edge_distance_squared(const Vec3& ea0, const Vec3& ea1, const Vec3& eb0, const Vec3& eb1,
                                   EdgeEdgeDistanceType type);
+/// Gradient (12) of the chosen case in the dofs (ea0, ea1, eb0, eb1).
 Vec12 edge_edge_distance_squared_gradient(const Vec3& ea0, const Vec3& ea1, const Vec3& eb0, const Vec3& eb1,
                                           EdgeEdgeDistanceType type);
+/// Hessian (12 by 12) of the chosen case in the dofs (ea0, ea1, eb0, eb1).
 Mat12 edge_edge_distance_squared_hessian(const Vec3& ea0, const Vec3& ea1, const Vec3& eb0, const Vec3& eb1,
                                          EdgeEdgeDistanceType type);
 

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// JSON description of a motion check: the object of `knots ccd --json`
 /// (docs/cli.md) after the keys `start` and `end` that name the files.
 #include "ek/contact/motion.hpp"

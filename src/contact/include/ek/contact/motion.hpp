@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Collision detection for the linear motion between two curves, as `knots
 /// ccd` reports it (and the Python module's ccd()): vertex i moves on the line
 /// from start_i to end_i; the largest certified t ∈ [0, 1] such that up to t
@@ -11,6 +12,7 @@
 
 namespace ek {
 
+/// The wire and the tolerance of check_linear_motion().
 struct MotionCheckOptions {
   double radius = 0.2;       ///< [length] wire radius r; the barrier distance d̂ is 2r
   double separation = 0.1;   ///< [1] kept fraction of min(start distance, d̂), in (0, 1)
@@ -21,6 +23,8 @@ struct MotionCheckOptions {
   void validate() const;
 };
 
+/// What check_linear_motion() reports: the certified step t and the clearance
+/// (smallest distance of edges sharing no vertex) along the motion.
 struct MotionCheck {
   int vertices = 0;                    ///< [1] n
   StepReport step;                     ///< t, the pairs tested, the limiting pair (-1: none)

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Crash-safe file output: nothing a user had is lost or overwritten by a
 /// failed or interrupted run.
 ///
@@ -12,16 +13,21 @@
 
 namespace ek {
 
+/// A file written under a temporary name and renamed onto its destination by
+/// commit(), so that the destination holds either its previous contents or the
+/// complete new ones (see the file's description).
 class AtomicFile {
  public:
   /// Opens "<path>.tmp.<pid>.<counter>" for writing. Throws InputError when the
   /// destination folder does not exist or is not writable.
   explicit AtomicFile(std::string path, bool binary = false);
-  ~AtomicFile();
+  ~AtomicFile();  ///< Without commit(): closes and removes the temporary; the destination is untouched.
+  /// Not copyable: one writer owns its temporary file.
   AtomicFile(const AtomicFile&) = delete;
-  AtomicFile& operator=(const AtomicFile&) = delete;
+  AtomicFile& operator=(const AtomicFile&) = delete;  ///< Not copyable.
 
-  std::ostream& stream() { return out_; }
+  std::ostream& stream() { return out_; }                     ///< The stream that writes the temporary file.
+  /// "<path>.tmp.<pid>.<counter>", renamed onto the destination by commit().
   const std::string& temporary_path() const { return tmp_; }
   /// Flushes, fsyncs and renames the temporary onto the destination.
   /// Throws InputError if any write failed.

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// The commit a program was built from (library ek_commit: only what reports
 /// it links it, so that a new commit relinks those alone).
 #include <string>

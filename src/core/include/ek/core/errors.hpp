@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Error types shared by all modules.
 ///
 /// Conventions (docs/cli.md, "Common behaviour"):
@@ -14,24 +15,27 @@
 #include <stdexcept>
 #include <string>
 
+/// Everything of the library: the modules (core, geometry, knots, embedding,
+/// lattice, rod, contact, solver, analysis, mechanics, dataset, site,
+/// transitions) share this one namespace; their headers are `ek/<module>/`.
 namespace ek {
 
 /// `text` on one line: control characters (a newline in a quoted input, ...)
-/// are written as escapes: a newline as the two characters \n, a tab as \t,
-/// a carriage return as \r, other control bytes as \xNN.
+/// are written as escapes: a newline as the two characters `\n`, a tab as
+/// `\t`, a carriage return as `\r`, other control bytes as `\xNN`.
 std::string one_line(const std::string& text);
 
 /// Bad input from a user or a file. `what()` is one line, suitable for stderr
 /// (the message is passed through one_line(): it may quote the input).
 class InputError : public std::runtime_error {
  public:
-  explicit InputError(const std::string& message) : std::runtime_error(one_line(message)) {}
+  explicit InputError(const std::string& message) : std::runtime_error(one_line(message)) {}  ///< `message` made one line by one_line().
 };
 
 /// A result whose knot type differs from its input (Alexander polynomial mismatch).
 class TopologyError : public std::runtime_error {
  public:
-  explicit TopologyError(const std::string& message) : std::runtime_error(message) {}
+  explicit TopologyError(const std::string& message) : std::runtime_error(message) {}  ///< `message` as given.
 };
 
 /// Throws std::invalid_argument(message) unless `condition` holds.

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// SplitMix64 (Steele, Lea and Flood 2014): the 64-bit finaliser used for
 /// seeds derived from other seeds, and a tiny counter-based generator for the
 /// few places that need reproducible numbers without a GSL generator.

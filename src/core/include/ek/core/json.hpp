@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// JSON descriptions of results: the objects that `knots COMMAND --json`
 /// prints and that the Python module returns as result objects (their keys
 /// are the documented contract of docs/cli.md). Each module's json.hpp

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// The library's one way of running independent work items in parallel: a
 /// dynamically scheduled loop over indices on a few threads (relaxations of
 /// samples, members of a family, pairs of states). Each item must be

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Strict parsing of one number from user text (command-line values, query
 /// conditions): the whole text must be the number (an optional leading '+',
 /// no spaces, nothing after it), else InputError with one line that names

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Locations of external data (the knot table) and run-time configuration.
 #include <string>
 

@@ -1,14 +1,17 @@
 #pragma once
+/// \file
 /// Local-to-global assembly of sparse symmetric Hessians with a cached
 /// sparsity pattern (conventions 5 and 7: one shared helper; the pattern is
 /// built once per structure and then only filled with values).
 ///
 /// Usage, once per Hessian evaluation:
+/// ~~~{.cpp}
 ///   A.begin(dofs);
 ///   A.segment(0, rod_structure_id);      rod.add_hessian(A);
 ///   A.segment(1, contact_structure_id);  contact.add_hessian(A);
 ///   bool pattern_changed = A.end();
 ///   const auto& H = A.matrix();          // upper triangle, compressed
+/// ~~~
 ///
 /// A segment whose (id, structure) pair and sequence of add() calls is the
 /// same as in the previous pass is replayed: each add() writes straight into
@@ -27,9 +30,12 @@
 
 namespace ek {
 
+/// Assembles a sparse symmetric matrix (upper triangle) from local
+/// contributions, replaying the cached sparsity pattern when the structure of
+/// every segment is unchanged (see the file's description for the usage).
 class SparseAssembler {
  public:
-  using Index = int;
+  using Index = int;  ///< Row and column index type of the assembled matrix.
 
   /// Starts a pass for a dofs-by-dofs matrix.
   void begin(Index dofs);
@@ -78,7 +84,7 @@ class SparseAssembler {
   const Eigen::SparseMatrix<double, Eigen::ColMajor, Index>& matrix() const { return H_; }
   /// Increases whenever the pattern changes.
   std::uint64_t pattern_version() const { return version_; }
-  bool pattern_changed() const { return changed_; }
+  bool pattern_changed() const { return changed_; }  ///< Whether the last end() rebuilt the sparsity pattern.
   /// Number of entries added in the last pass (before folding duplicates).
   size_t entries() const { return total_; }
 

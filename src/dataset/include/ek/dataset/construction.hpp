@@ -1,7 +1,8 @@
 #pragma once
-/// Knots built from a PD code the project constructs (e.g. ek::pretzel_pd),
+/// \file
+/// Knots built from a PD code the project constructs (e.g.\ ek::pretzel_pd),
 /// drawn, relaxed and compared with a pattern state (paper Section 8.4,
-/// Fig. 15: "we can easily adapt the number of these crossings separately at
+/// Fig.\ 15: "we can easily adapt the number of these crossings separately at
 /// each of the three touching regions [...] and then run our simulation to
 /// validate that these newly constructed knots indeed settle into a
 /// geometrically similar equilibrium").

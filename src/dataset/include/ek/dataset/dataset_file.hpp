@@ -1,7 +1,9 @@
 #pragma once
+/// \file
 /// The data-set file: one HDF5 file holds the equilibria of many knot types
 /// (paper Section 7.4). Layout (docs/dataset-format.md documents it for users):
 ///
+/// ~~~{.unparsed}
 ///   /                                  attributes: format = "elastic-knots-dataset", format_version = 1,
 ///                                      and one per field of metadata_fields() (metadata.hpp): material,
 ///                                      n, solver, sampling, lattice walk, seed, stiffness flag, provenance
@@ -19,6 +21,7 @@
 ///     similarity        float64 [m, m]     pairwise similarity (Section 7.1)
 ///     linkage           float64 [m-1, 4]   complete-linkage merges (a, b, height, size), SciPy layout
 ///     score_history     float64 [b]        adaptive-sampling importance score after each batch
+/// ~~~
 ///
 /// A link (several closed components) is stored in the same group layout:
 /// its equilibria hold the components back to back ([m, n_0 + n_1 + ..., 3]);
@@ -48,11 +51,11 @@ struct RunRecord {
   std::uint64_t seed = 0;        ///< seed of the walk that produced it
   std::string status;            ///< solver status, or "topology-changed", "error"
   int equilibrium = -1;          ///< row in `equilibria`, -1 when not stored
-  int iterations = 0;
+  int iterations = 0;            ///< [1] Newton iterations of the relaxation
   double seconds = 0.0;          ///< [s]
-  double energy = 0.0;
-  double gradient_norm = 0.0;
-  int contacts = 0;
+  double energy = 0.0;           ///< [energy] at the result
+  double gradient_norm = 0.0;    ///< [energy/length] ||g||₂ at the result
+  int contacts = 0;              ///< [1] active contact pairs at the result
   bool alexander_preserved = true;  ///< a link: every component's polynomial, linking number and ∇ kept
   std::string message;           ///< error text for failed runs
 };
@@ -61,14 +64,14 @@ struct RunRecord {
 /// set's entry and a ledger's (ledger.hpp) share, stored alike in both files
 /// (the knot group's attributes and its score_history).
 struct KnotHeader {
-  std::string name;
-  int crossing_number = 0;
+  std::string name;                           ///< the knot's (or link's) table name
+  int crossing_number = 0;                    ///< [1] of the table
   int bridge_index = -1;                      ///< -1: unknown (and for links)
-  int braid_index = -1;
+  int braid_index = -1;                       ///< -1: unknown (and for links)
   std::vector<std::int64_t> alexander;        ///< coefficients, lowest degree first
-  bool adaptive = false;
-  bool complete = true;
-  int samples_used = 0;
+  bool adaptive = false;                      ///< sampled by the adaptive rule (ExploreOptions::adaptive)
+  bool complete = true;                       ///< the attribute `complete` (0/1); the pipeline writes true
+  int samples_used = 0;                       ///< [1] lattice samples relaxed for the entry
   std::vector<double> score_history;          ///< [1] adaptive score after each batch
   /// A link: each component's vertex count n_c, summing to the equilibria's
   /// rows (each component's rows in order); empty for a knot.
@@ -76,7 +79,7 @@ struct KnotHeader {
   std::vector<std::int64_t> conway;           ///< a link's ∇ coefficients, lowest degree first (empty for a knot)
   std::vector<std::int64_t> linking_numbers;  ///< a link's m by m linking numbers, row by row (empty for a knot)
 
-  bool is_link() const { return components.size() > 1; }
+  bool is_link() const { return components.size() > 1; }  ///< A link: more than one component.
 };
 
 /// Everything stored for one knot type.
@@ -84,7 +87,7 @@ struct KnotEntry : KnotHeader {
   std::vector<Points> equilibria;                 ///< m curves, n by 3
   std::vector<std::string> attribute_names;       ///< k names
   Eigen::MatrixXd attributes;                     ///< m by k
-  std::vector<RunRecord> runs;
+  std::vector<RunRecord> runs;                    ///< every relaxation run, failures included
   Eigen::MatrixXd similarity;                     ///< m by m
   Eigen::MatrixXd linkage;                        ///< (m-1) by 4
 
@@ -102,12 +105,14 @@ struct KnotEntry : KnotHeader {
 /// (WhenAbsent::NotRecorded, left out of the file); otherwise std::invalid_argument.
 class DatasetWriter {
  public:
+  /// Opens the temporary file next to `path` and writes `meta`; InputError when
+  /// `path` cannot be written.
   DatasetWriter(const std::string& path, const DatasetMetadata& meta);
-  ~DatasetWriter();
-  DatasetWriter(const DatasetWriter&) = delete;
-  DatasetWriter& operator=(const DatasetWriter&) = delete;
-  void add(const KnotEntry& knot);
-  void commit();
+  ~DatasetWriter();  ///< Without commit(): removes the temporary file; an existing file at the path stays untouched.
+  DatasetWriter(const DatasetWriter&) = delete;             ///< Not copyable.
+  DatasetWriter& operator=(const DatasetWriter&) = delete;  ///< Not copyable.
+  void add(const KnotEntry& knot);  ///< Writes one knot's group (its name must be new in the file).
+  void commit();                    ///< Writes the knot list, seals the file and renames it onto `path`.
 
  private:
   struct Impl;
@@ -120,13 +125,15 @@ class DatasetWriter {
 /// "not recorded").
 class DatasetReader {
  public:
+  /// Opens `path` and reads its metadata; InputError for a file that is not a
+  /// data set.
   explicit DatasetReader(const std::string& path);
-  ~DatasetReader();
-  DatasetReader(const DatasetReader&) = delete;
-  DatasetReader& operator=(const DatasetReader&) = delete;
-  const DatasetMetadata& metadata() const;
+  ~DatasetReader();                              ///< Closes the file.
+  DatasetReader(const DatasetReader&) = delete;  ///< Not copyable.
+  DatasetReader& operator=(const DatasetReader&) = delete;  ///< Not copyable.
+  const DatasetMetadata& metadata() const;       ///< The parameters the data set was computed with.
   std::vector<std::string> knot_names() const;   ///< in table order of the file
-  bool has_knot(const std::string& name) const;
+  bool has_knot(const std::string& name) const;  ///< Whether the file holds a group for `name`.
   KnotEntry read(const std::string& name) const;  ///< InputError if absent
 
  private:

@@ -1,6 +1,7 @@
 #pragma once
+/// \file
 /// Searching a data set by attribute (the filters of paper Section 7.3,
-/// Fig. 7: attribute_extremes) and by shape (below).
+/// Fig.\ 7: attribute_extremes) and by shape (below).
 ///
 /// Cross-topology search over a data set (paper Section 8.2, "Cross-topology
 /// analysis", Fig. 10; also Fig. 15's retrieval of knots close to 9_35's

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Thin RAII helpers over the HDF5 C API, shared by the HDF5 files of the
 /// project: data sets (dataset_file.hpp) and transition graphs
 /// (ek/transitions/transitions_file.hpp). Includes hdf5.h: a module that uses
@@ -9,15 +10,20 @@
 #include <string>
 #include <vector>
 
+/// The HDF5 helpers: RAII handles, files with a checksum header, groups,
+/// datasets and attributes. Every failure is an InputError.
 namespace ek::h5 {
 
 /// Owns an HDF5 identifier and closes it with the matching H5*close.
 class Handle {
  public:
-  Handle() = default;
+  Handle() = default;  ///< No identifier (valid() is false).
+  /// Owns `id`, closed by `closer` (H5Fclose, H5Gclose, ...).
   Handle(hid_t id, herr_t (*closer)(hid_t)) : id_(id), closer_(closer) {}
-  ~Handle() { reset(); }
+  ~Handle() { reset(); }  ///< Closes the identifier.
+  /// Takes over `o`'s identifier (`o` is left empty).
   Handle(Handle&& o) noexcept : id_(o.id_), closer_(o.closer_) { o.id_ = -1; }
+  /// Closes the own identifier and takes over `o`'s.
   Handle& operator=(Handle&& o) noexcept {
     if (this != &o) {
       reset();
@@ -27,11 +33,12 @@ class Handle {
     }
     return *this;
   }
+  /// Not copyable: one handle closes its identifier.
   Handle(const Handle&) = delete;
-  Handle& operator=(const Handle&) = delete;
-  hid_t id() const { return id_; }
-  bool valid() const { return id_ >= 0; }
-  void reset() { close(); }
+  Handle& operator=(const Handle&) = delete;  ///< Not copyable.
+  hid_t id() const { return id_; }            ///< The identifier (-1 when empty).
+  bool valid() const { return id_ >= 0; }     ///< Whether it holds an identifier.
+  void reset() { close(); }                   ///< Closes the identifier, ignoring errors.
   /// Closes the identifier; false when HDF5 reports an error (a file that
   /// could not be flushed completely).
   bool close() {
@@ -56,7 +63,9 @@ Handle create_file(const std::string& path);
 Handle open_file(const std::string& path, bool writable);
 
 /// The checksum header (the HDF5 user block, which the HDF5 library skips):
+/// ~~~{.unparsed}
 ///   "elastic-knots-dataset checksum 1\ncrc32 <8 hex digits>\nlength <bytes>\n",
+/// ~~~
 /// zero-padded to kUserBlock bytes. crc32 is the CRC-32 (zlib) of every byte
 /// after the user block, length the size of the whole file: any change to the
 /// file after it was written (truncation, a flipped bit, a byte appended) is
@@ -70,30 +79,42 @@ void seal(const std::string& path);
 /// Throws InputError naming the file otherwise (damaged, or not a data set);
 /// `kind` names what the file should be in the messages ("data set", "ledger").
 bool verify(const std::string& path, const std::string& kind = "data set");
-Handle create_group(hid_t parent, const std::string& name);
-Handle open_group(hid_t parent, const std::string& name);
-bool exists(hid_t parent, const std::string& name);
+Handle create_group(hid_t parent, const std::string& name);  ///< A new group `name` in `parent`.
+Handle open_group(hid_t parent, const std::string& name);  ///< The group `name` of `parent`; InputError when missing.
+bool exists(hid_t parent, const std::string& name);  ///< Whether `parent` has a member (link) named `name`.
 std::vector<std::string> children(hid_t group);   ///< names of the members, in creation/name order
 
 /// Datasets of doubles / int64 / strings with an arbitrary shape (row-major).
+/// Arrays of 4096 values or more are chunked and compressed (shuffle,
+/// deflate 4). This one: float64 values.
 void write_doubles(hid_t parent, const std::string& name, const std::vector<hsize_t>& shape, const double* data);
 /// Doubles stored as float32 (rounded to nearest); read_doubles reads them back as doubles.
 void write_float32(hid_t parent, const std::string& name, const std::vector<hsize_t>& shape, const double* data);
+/// int64 values in a dataset of `shape` (row-major).
 void write_int64(hid_t parent, const std::string& name, const std::vector<hsize_t>& shape, const std::int64_t* data);
+/// A one-dimensional dataset of variable-length strings.
 void write_strings(hid_t parent, const std::string& name, const std::vector<std::string>& values);
+/// A numeric dataset read as doubles, row-major; its shape into `shape` when
+/// given. InputError when missing or damaged.
 std::vector<double> read_doubles(hid_t parent, const std::string& name, std::vector<hsize_t>* shape = nullptr);
+/// An integer dataset read as int64, row-major (as read_doubles()).
 std::vector<std::int64_t> read_int64(hid_t parent, const std::string& name, std::vector<hsize_t>* shape = nullptr);
+/// A one-dimensional dataset of strings; InputError when missing or damaged.
 std::vector<std::string> read_strings(hid_t parent, const std::string& name);
 
-/// Attributes on a group or file.
+/// Attributes on a group or file: set_attr() replaces an attribute of the
+/// same name. This one: a string.
 void set_attr(hid_t obj, const std::string& name, const std::string& value);
-void set_attr(hid_t obj, const std::string& name, double value);
-void set_attr(hid_t obj, const std::string& name, std::int64_t value);
-void set_attr(hid_t obj, const std::string& name, const std::vector<std::int64_t>& values);
-bool has_attr(hid_t obj, const std::string& name);
+void set_attr(hid_t obj, const std::string& name, double value);                             ///< A float64 attribute.
+void set_attr(hid_t obj, const std::string& name, std::int64_t value);                       ///< An int64 attribute.
+void set_attr(hid_t obj, const std::string& name, const std::vector<std::int64_t>& values);  ///< A list of int64.
+bool has_attr(hid_t obj, const std::string& name);  ///< Whether `obj` has the attribute.
+/// A string attribute; InputError when missing or not one string.
 std::string get_attr_string(hid_t obj, const std::string& name);
+/// A numeric attribute as a double; InputError when missing.
 double get_attr_double(hid_t obj, const std::string& name);
-std::int64_t get_attr_int(hid_t obj, const std::string& name);
+std::int64_t get_attr_int(hid_t obj, const std::string& name);  ///< An integer attribute; InputError when missing.
+/// An integer list (at most 4096); InputError when missing.
 std::vector<std::int64_t> get_attr_ints(hid_t obj, const std::string& name);
 
 }  // namespace ek::h5

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// JSON descriptions of data-set results (docs/cli.md): the objects of
 /// `knots cluster --json`, `knots query --json` and `knots describe --json`
 /// (the latter without the key `file`, which the command adds first).

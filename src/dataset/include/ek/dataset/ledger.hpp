@@ -1,6 +1,7 @@
 #pragma once
+/// \file
 /// The ledger: a data set's result, small enough to commit and read without
-/// the data set (paper Section 7.4 builds the data set; Fig. 9 and the
+/// the data set (paper Section 7.4 builds the data set; Fig.\ 9 and the
 /// planarity claim only need per-knot results). Per knot type it keeps the
 /// runs (sample, status, stored row, iterations, seconds), every stored
 /// equilibrium's attributes and its state, the complete-linkage dendrogram,
@@ -57,20 +58,23 @@ struct LedgerState {
 
 /// The smallest, median and largest value of one attribute over a state's members.
 struct AttributeSpread {
+  ///@{
+  /// The smallest, the median and the largest value.
   double min = 0.0, median = 0.0, max = 0.0;
+  ///@}
 };
 
 /// One knot type (or link) of a ledger: the data set's header fields
 /// (KnotHeader), then its results.
 struct LedgerEntry : KnotHeader {
-  std::vector<LedgerRun> runs;
+  std::vector<LedgerRun> runs;              ///< every relaxation run of the knot, failures included
   std::vector<std::string> attribute_names;  ///< k names (KnotEntry::attribute_names)
   Eigen::MatrixXd attributes;               ///< m by k: every stored equilibrium's attributes
   std::vector<int> state;                   ///< m: each equilibrium's state (index into `states`)
   Eigen::MatrixXd linkage;                  ///< (m−1) by 4: complete-linkage merges (a, b, height, size)
   std::vector<LedgerState> states;          ///< by increasing lowest energy
 
-  int equilibria() const { return static_cast<int>(attributes.rows()); }
+  int equilibria() const { return static_cast<int>(attributes.rows()); }  ///< m, the stored equilibria
   /// Column of an attribute by name; InputError naming the known ones otherwise.
   int attribute_column(const std::string& attribute) const;
   /// Runs that ended converged-stable.
@@ -110,9 +114,11 @@ struct LedgerProvenance {
   std::optional<double> cpu_seconds;   ///< [s] the run's process CPU time (user + system)
 };
 
+/// A ledger: the data set's parameters, where and how it was made, and one
+/// entry per knot (see the file's description).
 struct Ledger {
   DatasetMetadata parameters;          ///< the data set's parameters (metadata.hpp)
-  LedgerProvenance provenance;
+  LedgerProvenance provenance;         ///< where and how it was made
   std::vector<LedgerEntry> entries;    ///< in the data set's order
 };
 

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// The parameters of a data set (the root attributes of its HDF5 file) as one
 /// table, metadata_fields(): every field's attribute name, unit, how it is
 /// compared, what a file written before the attribute existed reads as, and
@@ -57,7 +58,7 @@ struct DatasetMetadata {
   /// [1] contact-stiffness continuation factors in (0, 1), in order; empty: off.
   std::optional<std::vector<double>> contact_continuation;
   // Provenance: describes the file, never compared.
-  std::optional<std::string> project_version;
+  std::optional<std::string> project_version;  ///< version of the program that wrote the file (project_version())
   std::optional<std::string> knot_table;   ///< path of the knot table used
   std::optional<std::string> created;      ///< ISO 8601 time of the first write
 
@@ -107,16 +108,16 @@ enum class FieldKind {
 struct MetadataField {
   std::string name;          ///< HDF5 attribute, JSON key and the name in difference()
   std::string unit;          ///< "length", "1" (dimensionless), "" (text, flag or seed)
-  FieldMatch match = FieldMatch::Exact;
-  WhenAbsent absent = WhenAbsent::Required;
+  FieldMatch match = FieldMatch::Exact;  ///< how the field is compared (difference())
+  WhenAbsent absent = WhenAbsent::Required;  ///< what a file without the attribute reads as
   FieldValue absent_value;   ///< for WhenAbsent::Default
   std::string key;           ///< name in the journal key; empty: not in the key
   /// Left out of the journal key when the value equals this (the value that
   /// keys written before the field was added imply); monostate: always in it.
   FieldValue key_omitted;
-  FieldKind kind = FieldKind::Real;
-  std::function<FieldValue(const DatasetMetadata&)> get;
-  std::function<void(DatasetMetadata&, const FieldValue&)> set;
+  FieldKind kind = FieldKind::Real;                              ///< the value's type and its HDF5 attribute
+  std::function<FieldValue(const DatasetMetadata&)> get;         ///< reads the field of a DatasetMetadata
+  std::function<void(DatasetMetadata&, const FieldValue&)> set;  ///< writes the field of a DatasetMetadata
 };
 
 /// The table, in the order of difference(), text(), json() and the journal key.

@@ -1,5 +1,6 @@
 #pragma once
-/// The data-set pipeline (paper Section 7.4, Fig. 3): for a knot type, random
+/// \file
+/// The data-set pipeline (paper Section 7.4, Fig.\ 3): for a knot type, random
 /// cubic-lattice samples (lattice module) are relaxed to stable equilibria
 /// (solver), compared with the curvature-torsion similarity, clustered
 /// (analysis), and stored with their attributes and the report of every run.
@@ -8,9 +9,11 @@
 /// score, is not available, so the definition is ours): 50 initial samples,
 /// then batches of 10; after each batch the importance score
 ///
+/// ~~~{.unparsed}
 ///   S = max_{j in batch, stable} ν_j · w_j  ∈ [0, 1],
 ///   ν_j = min(1, (1 - max_{i earlier or earlier in the batch} sim(j, i)) / δ)   (geometric novelty)
 ///   w_j = E_min / E_j                                                         (energy weight)
+/// ~~~
 ///
 /// where sim is the similarity of Section 7.1 (with orientation reversal),
 /// δ = novelty_distance, the distance at which two states count as different,
@@ -63,6 +66,8 @@ std::string to_string(StoppingRule rule);  ///< "score", "unseen"
 /// "score" or "unseen"; InputError otherwise.
 StoppingRule parse_stopping_rule(const std::string& name);
 
+/// How a knot type's entry is computed: the relaxation, the lattice samples,
+/// the sample count or adaptive rule, the similarity, the seed and the jobs.
 struct ExploreOptions {
   RelaxOptions relax;              ///< material, tolerance, iterations (stiffness: see `stiffness`)
   SampleOptions sampling;          ///< n, fugacities, decorrelation (count and seed are set per batch)
@@ -75,9 +80,9 @@ struct ExploreOptions {
   /// samples (docs/models.md, "Lattice sampling"); 0 keeps every sample.
   int burn_in = 0;
   bool adaptive = false;           ///< adaptive sampling (see the file comment)
-  int initial_samples = 50;        ///< [1]
-  int batch_samples = 10;          ///< [1]
-  int max_samples = 500;           ///< [1]
+  int initial_samples = 50;        ///< [1] adaptive: samples before the first score
+  int batch_samples = 10;          ///< [1] adaptive: samples per batch after the initial ones
+  int max_samples = 500;           ///< [1] adaptive: the most samples per knot
   StoppingRule stopping = StoppingRule::Score;  ///< adaptive sampling's rule
   double score_threshold = 0.1;    ///< [1] Score: continue while S > this
   double new_state_threshold = 0.1;  ///< [1] Unseen: continue while P > this
@@ -93,7 +98,7 @@ struct ExploreOptions {
   bool stiffness = true;           ///< compute the stiffness attribute (smallest non-rigid Hessian eigenvalue)
   std::uint64_t seed = 1;          ///< run seed; each knot's walk seed is derived from it and the name
   int jobs = 1;                    ///< [1] relaxations in parallel
-  ExploreOptions();
+  ExploreOptions();                ///< The defaults; the similarity with orientation reversal on.
   void validate() const;           ///< InputError for impossible values
   /// "fixed:50", "adaptive:50+10,max=500,S>0.1,delta=0.1" (Score) or
   /// "adaptive:50+10,max=500,unseen<0.1,low=1.1,delta=0.1" (Unseen): recorded in the file.
@@ -139,6 +144,8 @@ struct StateCounts {
   std::vector<int> counts;     ///< [samples] per state
   std::vector<double> lowest;  ///< [energy] per state
 };
+/// The states of equilibria with `similarity` [m, m] and `energies` [m] at
+/// `cut` (see StateCounts).
 StateCounts state_counts(const Eigen::MatrixXd& similarity, const std::vector<double>& energies, double cut);
 
 /// The stopping rule's score of successive batches (see the file comment),
@@ -146,7 +153,7 @@ StateCounts state_counts(const Eigen::MatrixXd& similarity, const std::vector<do
 /// among every stable equilibrium seen so far (Unseen) and their energies.
 class StoppingScore {
  public:
-  explicit StoppingScore(const ExploreOptions& options);
+  explicit StoppingScore(const ExploreOptions& options);  ///< The rule, δ, the low-energy factor and b of `options`.
   /// Adds a batch: `similarity` of its stable equilibria (rows) against
   /// [earlier..., batch...] (columns; entries of later batch members are
   /// ignored), `energies` theirs. Returns the batch's score.
@@ -166,6 +173,7 @@ class StoppingScore {
 /// equilibrium seen so far give the similarities of a new batch.
 class AdaptiveScorer {
  public:
+  /// An engine for the options' similarity; no equilibrium seen yet.
   explicit AdaptiveScorer(const ExploreOptions& options);
   /// Adds a batch of stable equilibria (curve, energy) and returns its score.
   double add_batch(const std::vector<std::pair<const Points*, double>>& stable);
@@ -183,10 +191,12 @@ class AdaptiveScorer {
 /// explore_knot computes from the same curves and options), so a replay
 /// costs no signature.
 struct AdaptiveReplay {
-  int samples_used = 0;
-  std::vector<double> score_history;
-  bool truncated = false;
+  int samples_used = 0;               ///< [1] samples at which the rule stops
+  std::vector<double> score_history;  ///< [1] the score after each batch
+  bool truncated = false;             ///< the entry's runs ended before the rule stopped
 };
+/// The replay of the adaptive rule of `options` on the runs of `fixed`
+/// (runs in sample order, similarities stored); see AdaptiveReplay.
 AdaptiveReplay replay_adaptive(const KnotEntry& fixed, const ExploreOptions& options);
 
 /// Called after every finished run (under a lock, from a worker thread).

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Filtering and sorting the equilibria of a data set by their attributes,
 /// as `knots query` does (and the Python module's Dataset.query()), on a
 /// data set or on a ledger.
@@ -13,14 +14,16 @@ namespace ek {
 
 /// One filter, "ATTR<VALUE": the operators <, <=, >, >=, = (or ==) and !=.
 struct QueryCondition {
-  std::string attribute;
+  std::string attribute;  ///< the attribute's name (ATTR)
   std::string op;      ///< "<", "<=", ">", ">=", "=", "==" or "!="
-  double value = 0.0;
-  bool holds(double x) const;
+  double value = 0.0;  ///< VALUE
+  bool holds(double x) const;  ///< Whether `x` op `value` holds.
 };
 /// Parses "ATTR<VALUE" (InputError naming the text when malformed).
 QueryCondition parse_query_condition(const std::string& text);
 
+/// Which equilibria query_dataset() and query_ledger() return, and in which
+/// order.
 struct QueryOptions {
   std::optional<std::string> knot;   ///< only this knot type; none: every knot of the file
   /// "ATTR", "ATTR:asc" or "ATTR:desc"; empty: file order. The sort is stable.
@@ -29,15 +32,17 @@ struct QueryOptions {
   std::optional<int> limit;          ///< [rows] at most this many rows, >= 0; none: all
 };
 
+/// One equilibrium of a query's result.
 struct QueryRow {
-  std::string knot;
+  std::string knot;                  ///< the knot type's name
   int index = 0;                     ///< equilibrium index within the knot (0-based)
   std::vector<double> values;        ///< one per QueryResult::columns
 };
 
+/// The rows of a query and the names of their columns.
 struct QueryResult {
   std::vector<std::string> columns;  ///< the attribute names (of the first knot read)
-  std::vector<QueryRow> rows;
+  std::vector<QueryRow> rows;        ///< the equilibria that pass, sorted and limited
 };
 
 /// The rows of the data set that pass every condition, sorted and limited.

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Many knot types into one data-set file: resumable, shardable, with
 /// progress reports (`knots explore` and `knots dataset`).
 ///
@@ -19,8 +20,10 @@
 
 namespace ek {
 
+/// What run_dataset() computes and where: the options of each entry, the
+/// knots and links, the output file and the shard.
 struct DatasetRunOptions {
-  ExploreOptions explore;
+  ExploreOptions explore;                ///< the options of every entry (explore_knot(), explore_link())
   std::vector<const KnotRecord*> knots;  ///< knot types in table order
   std::vector<const LinkRecord*> links;  ///< links (explore_link), after the knots in link-table order
   std::string output;                    ///< data-set file
@@ -29,6 +32,7 @@ struct DatasetRunOptions {
   bool progress = true;                  ///< progress on stderr (a bar on a terminal, lines otherwise)
 };
 
+/// What one run_dataset() call did.
 struct DatasetRunSummary {
   int knots = 0;          ///< knots of this shard
   int knots_skipped = 0;  ///< already in the output

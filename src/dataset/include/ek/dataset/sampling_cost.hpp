@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// What sampling a data set cost, and what sampling more knots the same way
 /// would cost: the samples per knot of the adaptive rule (paper Section 7.4:
 /// 50 samples, then batches of 10 while new low-energy states appear, at
@@ -14,8 +15,8 @@ namespace ek {
 
 /// One knot of a data set.
 struct KnotCost {
-  std::string name;
-  int crossing_number = 0;
+  std::string name;          ///< the knot's name
+  int crossing_number = 0;   ///< [1] of the table
   int samples = 0;           ///< [1] relaxation runs stored (every sample, also failures)
   double run_seconds = 0.0;  ///< [s] sum of the runs' wall times (one thread each)
 };
@@ -25,7 +26,7 @@ KnotCost knot_cost(const KnotEntry& entry);
 
 /// The knots of one crossing number.
 struct CrossingCost {
-  int crossing_number = 0;
+  int crossing_number = 0;        ///< [1] the crossing number of these knots
   int knots = 0;                  ///< [1]
   double median_samples = 0.0;    ///< [1] per knot
   double mean_samples = 0.0;      ///< [1] per knot

@@ -1,9 +1,10 @@
 #pragma once
+/// \file
 /// Analyses of a knot's stored states (a KnotEntry of a data set) used by the
-/// paper experiments: how many distinct states are distinctly 3D (Figs. 2, 6,
+/// paper experiments: how many distinct states are distinctly 3D (Figs.\ 2, 6,
 /// 8), which low-energy states a prefix of the samples finds (adaptive
-/// sampling, Section 7.4), knot puzzles (Section 8.3, Fig. 14), and the
-/// Hausdorff distance against the similarity measure (Section 7.1, Fig. 5).
+/// sampling, Section 7.4), knot puzzles (Section 8.3, Fig.\ 14), and the
+/// Hausdorff distance against the similarity measure (Section 7.1, Fig.\ 5).
 ///
 /// Distinct states are the clusters of clusters_at_cut(): complete linkage on
 /// 1 - similarity cut at a distance, sorted by increasing lowest energy, each
@@ -38,6 +39,7 @@ KnotEntry shuffled_runs(const KnotEntry& entry, std::uint64_t& state);
 /// cluster whose lowest energy is at most `energy_factor` times the knot's
 /// lowest (clusters.front().energy_min; energies are positive).
 struct LowEnergyCoverage {
+  /// A low-energy cluster that the prefix did not find.
   struct Missed {
     int rank = -1;    ///< cluster rank of a low-energy cluster not seen
     int samples = 0;  ///< [samples] stored runs whose equilibrium lies in it
@@ -60,8 +62,14 @@ LowEnergyCoverage low_energy_coverage(const KnotEntry& entry, const std::vector<
 /// lowest energy is at most `energy_factor` times the prefix's lowest
 /// (`low_energy`, their samples only, as ledger_unseen).
 struct PrefixUnseen {
+  ///@{
+  /// The estimates over every state (`all`) and over the low-energy states
+  /// (`low_energy`).
   UnseenEstimate all, low_energy;
+  ///@}
 };
+/// The estimates of a run stopped after the first `samples` samples (see
+/// PrefixUnseen).
 PrefixUnseen prefix_unseen(const KnotEntry& entry, int samples, double cut, double energy_factor);
 
 /// A knot puzzle (Section 8.3): two distinct stable states of one knot with
@@ -69,8 +77,14 @@ PrefixUnseen prefix_unseen(const KnotEntry& entry, int samples, double cut, doub
 /// and the data set's states are twist-free (Lk = Wr), so the puzzle's link
 /// is the mean writhe.
 struct Puzzle {
-  int state_a = -1, state_b = -1;  ///< equilibrium indices (cluster representatives, a lower in energy)
-  double writhe_a = 0.0, writhe_b = 0.0;  ///< [1]
+  ///@{
+  /// Equilibrium indices (cluster representatives, a lower in energy).
+  int state_a = -1, state_b = -1;
+  ///@}
+  ///@{
+  /// [1] the writhes of the two states.
+  double writhe_a = 0.0, writhe_b = 0.0;
+  ///@}
   double link = 0.0;                      ///< [1] (writhe_a + writhe_b) / 2
   double similarity = 0.0;                ///< [1] of the two states
 };
@@ -82,17 +96,23 @@ struct Puzzle {
 std::vector<Puzzle> find_puzzles(const KnotEntry& entry, double cut, double writhe_tolerance);
 
 /// Two equilibria of one knot compared by the similarity measure and by
-/// geometric distances after rigid alignment (Fig. 5).
+/// geometric distances after rigid alignment (Fig.\ 5).
 struct StatePair {
-  int a = -1, b = -1;                  ///< equilibrium indices, a < b
-  int cluster_a = -1, cluster_b = -1;  ///< their cluster ranks at the cut (clusters_at_cut)
+  ///@{
+  /// Equilibrium indices, a < b.
+  int a = -1, b = -1;
+  ///@}
+  ///@{
+  /// Their cluster ranks at the cut (clusters_at_cut).
+  int cluster_a = -1, cluster_b = -1;
+  ///@}
   double similarity_distance = 0.0;    ///< [1] 1 - similarity (the entry's stored matrix)
   /// [length] Hausdorff distance d_H(E_a, E_b') between the polygons
   /// (ek::hausdorff_distance, tolerance 1e-6), E_b' = E_b moved onto E_a by
   /// ek::align_curves (the alignment of the cross-topology search)
   double hausdorff = 0.0;
   double icp_distance = 0.0;           ///< [length] the alignment's own RMS distance
-  bool same_cluster() const { return cluster_a == cluster_b; }
+  bool same_cluster() const { return cluster_a == cluster_b; }  ///< Whether a and b lie in one cluster at the cut.
 };
 
 /// Every pair a < b of the entry's equilibria (m(m-1)/2, in order (0,1),
@@ -120,11 +140,13 @@ struct HausdorffSeparation {
   int distinct_pairs = 0;           ///< [1] pairs separated by the similarity (stricter definition above)
   int separated_pairs = 0;          ///< [1] of them, those with hausdorff < the median
 };
+/// The separation of `pairs` (pairwise_shape_distances() at `cut`); see
+/// HausdorffSeparation.
 HausdorffSeparation hausdorff_separation(const std::vector<StatePair>& pairs, double cut);
 
 /// Pairs separated by the similarity (as above) by increasing Hausdorff
 /// distance, at most one per pair of clusters, the first `count` (the pairs
-/// of Fig. 5: close in Hausdorff distance, apart in similarity).
+/// of Fig.\ 5: close in Hausdorff distance, apart in similarity).
 std::vector<StatePair> closest_distinct_pairs(const std::vector<StatePair>& pairs, double cut, int count);
 
 }  // namespace ek

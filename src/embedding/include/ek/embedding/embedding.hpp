@@ -1,5 +1,6 @@
 #pragma once
-/// Initial 3D embeddings of a knot type (paper Sections 5 and 8.3, Fig. 13):
+/// \file
+/// Initial 3D embeddings of a knot type (paper Sections 5 and 8.3, Fig.\ 13):
 /// simple closed polygons with a requested number of vertices and equal edge
 /// lengths, built from a braid word or a PD code of the table.
 #include <optional>
@@ -81,7 +82,7 @@ struct Embedding {
   std::optional<AlexanderPolynomial> alexander;
 };
 
-/// Closed braid as a coil around the z axis (Scharein 1998; paper Fig. 13):
+/// Closed braid as a coil around the z axis (Scharein 1998; paper Fig.\ 13):
 /// strand position k (1..s) runs on the circle of radius R + (k - (s+1)/2)·δ
 /// in the plane z = 0; letter j occupies the angular slot [2πj/L, 2π(j+1)/L],
 /// where strands at positions i and i+1 exchange radii (smoothstep) while the
@@ -151,7 +152,8 @@ Embedding embed_pd(const PDCode& pd, const EmbeddingOptions& options = {});
 /// and when no drawing keeps the link type (use more vertices).
 LinkEmbedding embed_pd_link(const PDLinkCode& pd, const EmbeddingOptions& options = {});
 
-/// Which code an embedding of a table knot is built from.
+/// Which code an embedding of a table knot is built from: Braid, the table's
+/// braid word (embed_braid()), or PD, its PD code (embed_pd()).
 enum class EmbeddingSource { Braid, PD };
 EmbeddingSource parse_embedding_source(const std::string& text);  ///< "braid" | "pd"; InputError otherwise
 

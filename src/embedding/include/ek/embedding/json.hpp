@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// JSON description of an embedding: the object of `knots embed --json`
 /// (docs/cli.md).
 #include <optional>

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Reading and writing closed curves.
 ///
 /// Formats (chosen by the file extension):

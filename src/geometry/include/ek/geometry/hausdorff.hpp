@@ -1,9 +1,12 @@
 #pragma once
+/// \file
 /// Hausdorff distance between two polylines (as point sets, not their
 /// vertices), the "direct measure of geometric similarity" the paper compares
-/// its curvature-torsion similarity with (Section 7.1, Fig. 5).
+/// its curvature-torsion similarity with (Section 7.1, Fig.\ 5).
 ///
+/// ~~~{.unparsed}
 ///   h(A → B) = sup_{a ∈ A} dist(a, B),   d_H(A, B) = max(h(A → B), h(B → A))   [length]
+/// ~~~
 ///
 /// where A and B are the unions of their segments. The supremum need not lie
 /// at a vertex of A (the distance to B along a segment of A is a minimum of

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Links: several closed polygons (components) at once (paper Section 8.5:
 /// "intertwined combinations of several knots").
 ///
@@ -22,7 +23,7 @@
 
 namespace ek {
 
-using Link = std::vector<Points>;
+using Link = std::vector<Points>;  ///< One closed polygon (n_c by 3) per component.
 
 /// Parses link text ("obj" or "txt"); `source` names the input in messages.
 /// Every component is validated (validate_closed_curve) and the link too

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Elementary geometry of closed polygons (n by 3 arrays, see types.hpp).
 #include <vector>
 

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Resampling closed polygons.
 #include "ek/geometry/types.hpp"
 

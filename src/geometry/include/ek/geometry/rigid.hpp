@@ -1,10 +1,13 @@
 #pragma once
+/// \file
 /// The best rigid motion between two point sets in correspondence (Kabsch,
 /// Acta Cryst. A32, 1976; proper rotations only, as in Umeyama, IEEE PAMI
 /// 13, 1991): with centred points y_c = y − ȳ, x_c = x − x̄ and the
 /// cross-covariance H = Σ_k y_c,k x_c,kᵀ = U Σ Vᵀ (SVD),
 ///
+/// ~~~{.unparsed}
 ///   R = V diag(1, 1, sign det(V Uᵀ)) Uᵀ,   t = x̄ − R ȳ,
+/// ~~~
 ///
 /// minimise Σ_k |R y_k + t − x_k|² over rotations (det R = +1) and
 /// translations, and the minimum is |Y_c|² + |X_c|² − 2(σ1 + σ2 + sign(det H) σ3).

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Closest points between two segments in 3D (value only; the contact module
 /// has the differentiable kernels).
 #include "ek/geometry/types.hpp"

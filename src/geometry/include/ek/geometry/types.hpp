@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Basic array types.
 ///
 /// A closed curve (polygon) with n vertices is a `Points` array, n by 3, one
@@ -11,15 +12,16 @@
 
 namespace ek {
 
-using Vec3 = Eigen::Vector3d;
-using Mat3 = Eigen::Matrix3d;
-using Vec2 = Eigen::Vector2d;
-using VecX = Eigen::VectorXd;
+using Vec3 = Eigen::Vector3d;  ///< A point or vector in space (3).
+using Mat3 = Eigen::Matrix3d;  ///< A 3 by 3 matrix (rotations, frames, local Hessians).
+using Vec2 = Eigen::Vector2d;  ///< A point in the plane (2).
+using VecX = Eigen::VectorXd;  ///< A vector of any length (flat coordinates 3n, per-vertex or per-edge values).
 /// n by 3, one point per row, row-major.
 using Points = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;
 
 /// View of the n by 3 array as a flat vector of length 3n (no copy).
 inline Eigen::Map<VecX> as_vector(Points& P) { return {P.data(), P.size()}; }
+/// Read-only view of P as a flat vector of length 3n (no copy).
 inline Eigen::Map<const VecX> as_vector(const Points& P) { return {P.data(), P.size()}; }
 
 /// Copy of a flat vector of length 3n as an n by 3 array.

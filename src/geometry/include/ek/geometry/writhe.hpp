@@ -1,5 +1,6 @@
 #pragma once
-/// Writhe of a closed polygon (paper Appendix C, eq. 5).
+/// \file
+/// Writhe of a closed polygon (paper Appendix C, eq.\ 5).
 #include "ek/geometry/types.hpp"
 
 namespace ek {
@@ -14,7 +15,7 @@ namespace ek {
 double segment_pair_writhe(const Vec3& p1, const Vec3& p2, const Vec3& p3, const Vec3& p4);
 
 /// Writhe Wr = Σ_{i≠j} Ω_ij/(4π) of the closed polygon P (n by 3), the exact
-/// double sum over edge pairs (Swigon et al. 1998; Klenin & Langowski 2000).
+/// double sum over edge pairs (Swigon et al.\ 1998; Klenin & Langowski 2000).
 /// O(n²). Changes sign under mirroring; 0 for planar curves.
 double writhe(const Points& P);
 

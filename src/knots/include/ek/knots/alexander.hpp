@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Alexander polynomial and determinant of knots (exact integer arithmetic).
 ///
 /// Every computed curve is checked against its input's polynomial (a result

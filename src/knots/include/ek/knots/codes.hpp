@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Knot notations as they appear in the KnotInfo table (paper Section 3 and
 /// Appendix A): Dowker-Thistlethwaite (DT), planar diagram (PD) and braid words.
 ///
@@ -16,15 +17,15 @@ namespace ek {
 /// label paired with the odd label 2k + 1; negative means the strand with the
 /// even label passes over.
 struct DTCode {
-  std::vector<int> labels;
-  int crossings() const { return static_cast<int>(labels.size()); }
+  std::vector<int> labels;  ///< c signed even labels; entry k pairs with the odd label 2k + 1.
+  int crossings() const { return static_cast<int>(labels.size()); }  ///< c, the number of crossings.
 };
 
 /// One PD crossing X[a, b, c, d]: the four edge labels counterclockwise,
 /// starting at the incoming under-edge a (c is the outgoing under-edge; b and
 /// d are the over-strand's edges). KnotInfo convention.
 struct PDCrossing {
-  std::array<int, 4> e{};
+  std::array<int, 4> e{};  ///< Edge labels a, b, c, d (1..2c), counterclockwise from the incoming under-edge.
   /// +1 for a positive (right-handed) crossing, -1 for a negative one: the
   /// over strand runs d -> b (b = d + 1 mod 2c) for a positive crossing.
   /// `edges` is the number of edge labels 2c. Requires a non-degenerate code.
@@ -34,16 +35,17 @@ struct PDCrossing {
 /// PD code of a knot diagram with c crossings and 2c edges labelled 1..2c
 /// along the orientation.
 struct PDCode {
-  std::vector<PDCrossing> crossings;
-  int size() const { return static_cast<int>(crossings.size()); }
+  std::vector<PDCrossing> crossings;                               ///< The c crossings, in the code's order.
+  int size() const { return static_cast<int>(crossings.size()); }  ///< c, the number of crossings.
 };
 
 /// Braid word on `strands` strands: letters ±i for σ_i^{±1}, 1 <= i < strands.
 /// σ_i is a positive crossing of strands i and i+1 (the closure's diagram
 /// has writhe = Σ sign(letters)).
 struct BraidWord {
-  int strands = 0;
-  std::vector<int> letters;
+  int strands = 0;           ///< Number of strands (≥ 1 + max |letter|).
+  std::vector<int> letters;  ///< ±i for σ_i^{±1}, in the order of the word.
+  /// Number of letters (crossings of the closure's diagram).
   int length() const { return static_cast<int>(letters.size()); }
 };
 
@@ -62,7 +64,7 @@ PDCode parse_pd(const std::string& text);
 /// a range of consecutive integers in the order of its orientation (its
 /// last label followed by its first). A knot's code is one range [1, 2c].
 struct PDLinkCode {
-  PDCode code;
+  PDCode code;                                 ///< The crossings, labels 1..2c over all components.
   std::vector<std::array<int, 2>> components;  ///< [first, last] label of each component, by first label
   std::vector<int> over_in;                    ///< per crossing: the over strand's incoming label, b or d
   /// +1 when the over strand runs d -> b (a right-handed crossing, as PDCrossing::sign), -1 otherwise.
@@ -96,8 +98,8 @@ std::vector<BraidWord> parse_braid_list(const std::string& text);
 
 /// Table spellings: "[4; 6; 8; 2]", "[[4;2;5;1];[8;6;1;5]]", "{1;-2;1;-2}".
 std::string to_string(const DTCode& code);
-std::string to_string(const PDCode& code);
-std::string to_string(const BraidWord& word);
+std::string to_string(const PDCode& code);     ///< The table's spelling, "[[4;2;5;1];[8;6;1;5]]".
+std::string to_string(const BraidWord& word);  ///< The table's spelling, "{1;-2;1;-2}".
 
 /// Number of components of the braid's closure (cycles of its permutation).
 int closure_components(const BraidWord& word);

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// The Conway polynomial of knots and links, and Milnor's triple linking
 /// number of three-component links with vanishing linking numbers: the
 /// invariants that tell a link from the unlink when the components and the
@@ -35,13 +36,14 @@ namespace ek {
 /// Examples: 3_1 [1, 0, 1]; the Hopf link [0, 1]; the Whitehead link
 /// [0, 0, 0, 1]; the Borromean rings [0, 0, 0, 0, 1]; a split link [].
 struct ConwayPolynomial {
-  std::vector<std::int64_t> coefficients;
+  std::vector<std::int64_t> coefficients;  ///< c_0, c_1, ... (lowest degree first); empty for the zero polynomial.
 
-  bool zero() const { return coefficients.empty(); }
+  bool zero() const { return coefficients.empty(); }  ///< Whether ∇ = 0 (a split link).
   /// "[0, 1]", "[]" for zero.
   std::string to_string() const;
+  /// Equal coefficient lists.
   bool operator==(const ConwayPolynomial& o) const { return coefficients == o.coefficients; }
-  bool operator!=(const ConwayPolynomial& o) const { return !(*this == o); }
+  bool operator!=(const ConwayPolynomial& o) const { return !(*this == o); }  ///< Different coefficient lists.
 };
 
 /// ∇ from a one-variable Alexander polynomial given up to ±t^k (Laurent

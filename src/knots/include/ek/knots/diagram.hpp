@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Knot diagrams as signed Gauss codes, and their simplification.
 #include <cstdint>
 #include <vector>
@@ -13,6 +14,7 @@ namespace ek {
 /// along the oriented knot. Each crossing is visited twice, once on the over
 /// strand and once on the under strand.
 struct GaussDiagram {
+  /// One passage of the knot through a crossing.
   struct Visit {
     int crossing;  ///< index into `signs`
     bool over;     ///< true on the over strand
@@ -20,7 +22,7 @@ struct GaussDiagram {
   std::vector<Visit> visits;  ///< 2c visits in traversal order
   std::vector<int> signs;     ///< crossing signs ±1 (right-handed = +1), size c
 
-  int crossings() const { return static_cast<int>(signs.size()); }
+  int crossings() const { return static_cast<int>(signs.size()); }  ///< c, the number of crossings.
   /// Sum of the crossing signs (the diagram's writhe).
   int writhe() const;
 };
@@ -32,7 +34,7 @@ struct LinkDiagram {
   std::vector<std::vector<GaussDiagram::Visit>> components;  ///< m lists of visits
   std::vector<int> signs;                                    ///< crossing signs ±1, size c
 
-  int crossings() const { return static_cast<int>(signs.size()); }
+  int crossings() const { return static_cast<int>(signs.size()); }  ///< c, the number of crossings.
 };
 
 /// The Gauss code of a PD code: edges are traversed in label order 1..2c.
@@ -99,7 +101,10 @@ int projection_crossing_count(const Points& P, const Vec3& direction);
 struct ProjectedCrossing {
   Vec3 over;        ///< point of the over strand (nearer the viewer)
   Vec3 under;       ///< point of the under strand
-  int over_edge = -1, under_edge = -1;  ///< edges (edge i joins vertex i to i + 1)
+  ///@{
+  /// Edges of the over and the under strand (edge i joins vertex i to i + 1).
+  int over_edge = -1, under_edge = -1;
+  ///@}
   int sign = 0;     ///< +1 right-handed, -1 left-handed
 };
 

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Invariants of a table knot and of a curve, as `knots info` and `knots
 /// invariants` report them (and the Python module's knot() and invariants()).
 #include <cstdint>
@@ -49,12 +50,13 @@ struct LinkInvariants {
 struct LinkType {
   std::vector<AlexanderPolynomial> alexander;  ///< per component
   Eigen::MatrixXi linking_numbers;             ///< [1] m by m
-  ConwayPolynomial conway;
+  ConwayPolynomial conway;                     ///< ∇ of the whole link (conway.hpp): zero for a split link.
 
+  /// Same component types, linking numbers and ∇.
   bool operator==(const LinkType& o) const {
     return alexander == o.alexander && linking_numbers == o.linking_numbers && conway == o.conway;
   }
-  bool operator!=(const LinkType& o) const { return !(*this == o); }
+  bool operator!=(const LinkType& o) const { return !(*this == o); }  ///< Not the same link type by these invariants.
   /// "components [..], [..]; linking numbers ..; Conway [..]"
   std::string to_string() const;
 };

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// JSON descriptions of the knots module's results (docs/cli.md): the
 /// objects of `knots info --json` and `knots invariants --json`, without the
 /// keys that name files (the command adds those).

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// A small table of links (several components), the counterpart of the
 /// knot table for links: each entry a braid word whose closure is the link
 /// (one component per cycle of its permutation, closure_cycles() order) and
@@ -29,7 +30,7 @@ struct LinkRecord {
   std::vector<int> linking_numbers;          ///< [1] m by m, row by row, zero diagonal (with the braid's orientation)
   ConwayPolynomial conway;                   ///< published ∇, sign as ConwayPolynomial fixes it
 
-  int components() const { return static_cast<int>(component_types.size()); }
+  int components() const { return static_cast<int>(component_types.size()); }  ///< m, the number of components.
   /// `linking_numbers` as the m by m matrix.
   Eigen::MatrixXi linking_matrix() const;
   /// |μ̄(123)| when defined (three components, vanishing linking numbers).

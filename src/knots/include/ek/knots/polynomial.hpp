@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Exact integer polynomials for knot invariants.
 #include <cstdint>
 #include <string>
@@ -11,17 +12,18 @@ namespace ek {
 /// t^k is removed), palindromic for a knot, and Δ(1) = +1.
 /// Examples: unknot [1], 3_1 [1, -1, 1], 4_1 [-1, 3, -1].
 struct AlexanderPolynomial {
-  std::vector<std::int64_t> coefficients{1};
+  std::vector<std::int64_t> coefficients{1};  ///< Lowest degree first; [1] (the unknot) by default.
 
   /// |Δ(-1)|, the knot determinant (odd for a knot).
   std::int64_t determinant() const;
   /// Degree span (highest minus lowest degree) = 2·genus lower bound.
   int span() const { return static_cast<int>(coefficients.size()) - 1; }
-  bool palindromic() const;
+  bool palindromic() const;  ///< Whether the coefficients read the same backwards (Δ(t) = Δ(1/t) up to t^k).
   /// "[1, -1, 1]"
   std::string to_string() const;
+  /// Equal coefficient lists (both in normal form: the same polynomial).
   bool operator==(const AlexanderPolynomial& o) const { return coefficients == o.coefficients; }
-  bool operator!=(const AlexanderPolynomial& o) const { return !(*this == o); }
+  bool operator!=(const AlexanderPolynomial& o) const { return !(*this == o); }  ///< Different coefficient lists.
 };
 
 /// Removes the zero coefficients at both ends (the factor t^k and the unused
@@ -38,9 +40,12 @@ AlexanderPolynomial normalize_alexander(std::vector<std::int64_t> coefficients);
 
 /// A matrix entry that is a Laurent polynomial Σ_k coeffs[k] t^(low + k).
 struct PolyEntry {
+  ///@{
+  /// Position in the matrix (0-based).
   int row = 0, col = 0;
-  int low = 0;
-  std::vector<std::int64_t> coeffs;
+  ///@}
+  int low = 0;                       ///< Degree of coeffs[0] (may be negative).
+  std::vector<std::int64_t> coeffs;  ///< Coefficients of t^low, t^(low+1), ...
 };
 
 /// Exact determinant of the m by m matrix whose nonzero entries are listed

@@ -1,5 +1,6 @@
 #pragma once
-/// PD codes of pretzel knots P(p_1, ..., p_k) (paper Section 8.4, Fig. 15:
+/// \file
+/// PD codes of pretzel knots P(p_1, ..., p_k) (paper Section 8.4, Fig.\ 15:
 /// 9_35 = P(3,3,3) is "three circular parts joined through crossings at their
 /// touching regions"; varying the crossings of each region gives knots beyond
 /// the table).

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Choosing knots of the table for a run smaller than the whole table: a
 /// deterministic stratified sample, so that a run on a small machine speaks
 /// for every kind of knot of the crossing numbers it samples.
@@ -15,7 +16,7 @@ struct StratifiedSampleOptions {
   /// [1] share of each stratum taken, in (0, 1]: ⌈fraction · size⌉ knots of
   /// every stratum, so at least this share of every crossing number
   double fraction = 0.1;
-  /// Also take every BB knot (bridge index = braid index, paper Fig. 9) of
+  /// Also take every BB knot (bridge index = braid index, paper Fig.\ 9) of
   /// the sampled crossing numbers.
   bool all_bb_knots = true;
   void validate() const;  ///< InputError for impossible values

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// The KnotInfo knot table (C. Livingston and A. H. Moore, KnotInfo: Table of
 /// Knot Invariants), as a CSV file: the unknot and the 2,977 prime knots with
 /// up to 12 crossings (the table the paper's data set was computed on, paper
@@ -20,11 +21,12 @@ namespace ek {
 struct KnotRecord {
   std::string name;              ///< "3_1", "10_123", "12a_1019", "0_1" (unknot)
   int row = 0;                   ///< 1-based data row in the file (header is row 0)
-  int crossing_number = 0;
+  int crossing_number = 0;       ///< Column Crossing Number.
   std::optional<int> bridge_index;  ///< absent when the table says '?'
-  std::optional<int> braid_index;
+  std::optional<int> braid_index;  ///< Column Braid Index; absent when the table says '?'.
+  /// Column Unknotting Number when present and a single integer (absent for '?' and ranges such as "[1;2]").
   std::optional<int> unknotting_number;
-  std::optional<bool> alternating;
+  std::optional<bool> alternating;  ///< Column Alternating ("Y"/"N") when present.
   std::string symmetry_type;        ///< "reversible", "chiral", ... ('' when unknown)
   std::optional<DTCode> dt;         ///< absent for the unknot
   std::optional<PDCode> pd;         ///< absent for the unknot
@@ -33,6 +35,8 @@ struct KnotRecord {
   std::map<std::string, std::string> fields;  ///< every column, verbatim
 };
 
+/// The knot table read from the KnotInfo CSV file: the records in file order
+/// and a look-up by name.
 class KnotTable {
  public:
   /// Loads and validates the table. Every problem (missing file, missing
@@ -57,8 +61,9 @@ class KnotTable {
   /// Records with crossing number <= c, in table order (the unknot excluded
   /// unless include_unknot).
   std::vector<const KnotRecord*> up_to_crossings(int c, bool include_unknot = false) const;
+  /// The file the table was read from (`path` of load() or parse()).
   const std::string& path() const { return path_; }
-  size_t size() const { return records_.size(); }
+  size_t size() const { return records_.size(); }  ///< Number of records (rows).
 
  private:
   std::string path_;

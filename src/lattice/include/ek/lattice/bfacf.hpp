@@ -1,7 +1,8 @@
 #pragma once
+/// \file
 /// The BFACF random walk on self-avoiding lattice polygons (Berg and Foerster
 /// 1981; Aragão de Carvalho, Caracciolo and Fröhlich 1983; paper Section 5 and
-/// Fig. 4), with the fugacity parametrisation of Madras and Slade (The
+/// Fig.\ 4), with the fugacity parametrisation of Madras and Slade (The
 /// Self-Avoiding Walk, 1993, Chapter 9) and Janse van Rensburg and Whittington
 /// (J. Phys. A 24:5553, 1991).
 ///
@@ -48,7 +49,8 @@ namespace ek {
 /// Critical fugacity β_c = 1/μ of self-avoiding polygons on Z³.
 constexpr double kCriticalFugacity = 0.21349092124;
 
-/// The three move types of Fig. 4 and "no change" (rejected or impossible).
+/// The three move types of Fig.\ 4 and "no change" (rejected or impossible):
+/// I (length −2), II (length +2), III (length ±0) as above, None.
 enum class BfacfMove { None, I, II, III };
 
 /// Counts of one run of attempted moves.
@@ -87,11 +89,13 @@ class BfacfWalk {
   /// above. Throws InputError unless every polygon is a self-avoiding lattice
   /// polygon and no two share a site.
   BfacfWalk(const std::vector<LatticePoints>& components, std::uint64_t seed);
-  ~BfacfWalk();
+  ~BfacfWalk();  ///< Releases the walk's state.
+  /// Moves the walk (its polygons, occupied sites and generator); the walk moved
+  /// from may only be destroyed or assigned to.
   BfacfWalk(BfacfWalk&&) noexcept;
-  BfacfWalk& operator=(BfacfWalk&&) noexcept;
-  BfacfWalk(const BfacfWalk&) = delete;
-  BfacfWalk& operator=(const BfacfWalk&) = delete;
+  BfacfWalk& operator=(BfacfWalk&&) noexcept;       ///< Moves the walk, as the move constructor.
+  BfacfWalk(const BfacfWalk&) = delete;             ///< Not copyable.
+  BfacfWalk& operator=(const BfacfWalk&) = delete;  ///< Not copyable.
 
   /// Current number of vertices (= edges), of all components.
   int length() const;

@@ -1,5 +1,6 @@
 #pragma once
-/// Polygons on the simple cubic lattice Z³ (paper Section 5, Fig. 4).
+/// \file
+/// Polygons on the simple cubic lattice Z³ (paper Section 5, Fig.\ 4).
 ///
 /// A lattice polygon with n vertices is an n by 3 array of integers, one site
 /// per row; edge i joins site i to site (i + 1) mod n and has length 1 (the
@@ -23,7 +24,7 @@ Points to_points(const LatticePoints& L);
 
 /// Result of check_lattice_polygon().
 struct LatticePolygonCheck {
-  bool ok = false;
+  bool ok = false;      ///< Whether L is a closed self-avoiding lattice polygon.
   std::string problem;  ///< empty when ok, otherwise one line naming the first defect
 };
 
@@ -55,11 +56,12 @@ constexpr int kMaxLatticeLength = 1 << 21;
 /// contains are O(1) expected at the load factor <= 1/2 kept by rehashing.
 class SiteSet {
  public:
-  explicit SiteSet(std::size_t expected_size = 64);
+  explicit SiteSet(std::size_t expected_size = 64);  ///< Empty set with room for `expected_size` keys before a rehash.
   /// Inserts `key`; returns false if it was already present.
   bool insert(std::uint64_t key);
   /// Removes `key`; returns false if it was absent.
   bool erase(std::uint64_t key);
+  /// Whether `key` is in the set.
   bool contains(std::uint64_t key) const {
     for (std::size_t i = slot(key);; i = (i + 1) & mask_) {
       const std::uint64_t k = table_[i];
@@ -67,9 +69,10 @@ class SiteSet {
       if (k == kEmpty) return false;
     }
   }
-  std::size_t size() const { return size_; }
+  std::size_t size() const { return size_; }  ///< Number of keys in the set.
+  /// Number of slots of the table (a power of two, at least twice size()).
   std::size_t capacity() const { return table_.size(); }
-  void clear();
+  void clear();  ///< Removes every key (the capacity is kept).
 
  private:
   static constexpr std::uint64_t kEmpty = ~std::uint64_t{0};  // never a site key (keys use 63 bits)

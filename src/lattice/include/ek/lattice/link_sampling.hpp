@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Random embeddings of a link on the cubic lattice: the knot schedule of
 /// sampling.hpp run on every component of one BFACF walk whose polygons share
 /// their occupied sites (bfacf.hpp), so no component passes through another.
@@ -47,10 +48,14 @@ LinkSampleBatch sample_lattice_link(const std::vector<LatticePoints>& start, con
 /// certified scale (round_link_to_lattice), checked against the table's link
 /// type (components' types, linking numbers, ∇).
 struct LatticeLinkStart {
-  std::vector<LatticePoints> components;
-  LinkType type;
-  double scale = 0.0;  ///< [lattice units / length] of the rounding
+  std::vector<LatticePoints> components;  ///< One self-avoiding lattice polygon per component; no two share a site.
+  LinkType type;                          ///< The link type the start was checked against (the table's or the curves').
+  double scale = 0.0;                     ///< [lattice units / length] of the rounding; 0 when no rounding was needed
 };
+/// The lattice start of the table link `link` (see LatticeLinkStart). Throws
+/// TopologyError when the rounded link's type (the components' Alexander
+/// polynomials, the linking numbers, ∇) differs from the embedding's, or its ∇
+/// from the table's.
 LatticeLinkStart lattice_link_start(const LinkRecord& link, const RoundingOptions& rounding = {});
 
 /// A lattice start of a link given as curves: the curves themselves when

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Topology-safe rounding of a closed polygon onto the cubic lattice Z³
 /// (paper Section 5: "we scale the polygonal curve so that ... rounding
 /// [cannot] alter the knot topology").

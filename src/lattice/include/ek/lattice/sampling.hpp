@@ -1,6 +1,7 @@
 #pragma once
+/// \file
 /// Random embeddings of a knot type on the cubic lattice (paper Section 5,
-/// Fig. 4): an initial polygon from the knot table is rounded onto Z³
+/// Fig.\ 4): an initial polygon from the knot table is rounded onto Z³
 /// (rounding.hpp), then a biased BFACF walk (bfacf.hpp) produces samples with
 /// exactly n vertices.
 ///
@@ -90,7 +91,7 @@ struct LatticeStartOptions {
   /// EmbeddingOptions::pd_crossing_height of the PD drawings (the embedding's
   /// default 0.3 gives a smaller clearance relative to the length).
   double pd_crossing_height = 1.0;  ///< [shortest piece]
-  RoundingOptions rounding;
+  RoundingOptions rounding;         ///< How each embedding is rounded onto Z³ (rounding.hpp).
 };
 
 /// A table knot's initial lattice polygon and how it was obtained.

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Equilibria of a knot along a load path, by pseudo-arclength continuation
 /// (Keller 1977), so that the path passes limit points (folds) where the
 /// load parameter turns back, with the stability of every point.
@@ -10,7 +11,9 @@
 ///   G(x, μ) = 0,   w² t_xᵀ(x − x_p) + t_μ(μ − μ_p) = 0,
 /// by two solves with the exact Hessian H (indefinite in general; a sparse
 /// LU of H + κ QQᵀ, Q the rigid modes that keep the load):
+/// ~~~{.unparsed}
 ///   H a = −G,  H b = −∂G/∂μ,  Δμ = −(N + w² t_xᵀa) / (w² t_xᵀb + t_μ),  Δx = a + Δμ b.
+/// ~~~
 /// Every corrector step is cut to the collision-free fraction (the CCD of the
 /// contact term, the plates' barrier), so the knot type is kept, and halved
 /// until ||G|| decreases; a corrector that does not converge in
@@ -39,16 +42,17 @@ namespace ek {
 /// continuation needs.
 class ParameterizedObjective : public Objective {
  public:
-  virtual double parameter() const = 0;
-  virtual void set_parameter(double mu) = 0;
+  virtual double parameter() const = 0;       ///< μ, the load parameter.
+  virtual void set_parameter(double mu) = 0;  ///< Sets μ (the dofs are unchanged).
   /// ∂(∇ₓE)/∂μ at the current dofs (num_dofs()).
   virtual VecX parameter_gradient() = 0;
   /// ∂E/∂μ at the current dofs.
   virtual double parameter_derivative() = 0;
   /// What a device measures and applies (loads.hpp); by default μ and ∂E/∂μ.
+  /// This one: the displacement the device measures (μ by default).
   virtual double displacement() { return parameter(); }
-  virtual double reaction() { return parameter_derivative(); }
-  virtual double load_energy() { return 0.0; }
+  virtual double reaction() { return parameter_derivative(); }  ///< The force the device applies; ∂E/∂μ by default.
+  virtual double load_energy() { return 0.0; }                  ///< [energy] E_load at the current dofs; 0 by default.
   /// Vertices whose positions lead the dofs (x0 y0 z0 x1 ...): the stable
   /// path measures a minimiser's jump after the best rigid motion of them
   /// (a knot pushed or turned whole by a load has not snapped); 0: the
@@ -56,6 +60,7 @@ class ParameterizedObjective : public Objective {
   virtual Eigen::Index rigid_vertices() const { return 0; }
 };
 
+/// The end, steps, corrector and stability settings of follow_path().
 struct ContinuationOptions {
   double target = 0.0;               ///< [parameter] the path ends where μ reaches it
   /// [parameter] first arclength step; unset: |target − μ₀| / 40
@@ -84,13 +89,14 @@ struct ContinuationOptions {
   /// return: the branch only moved fast along a soft mode) or, if it
   /// released no energy, a branch jump (PathEvent::BranchJump).
   std::optional<NewtonOptions> minimizer;
-  double max_jump = 1.0;             ///< [length] the RMS vertex distance from the predictor after the best rigid motion (rigid_vertices(); minimizer only)
+  /// [length] the RMS vertex distance from the predictor after the best rigid motion (rigid_vertices(); minimizer only)
+  double max_jump = 1.0;
   void validate() const;             ///< InputError for impossible values
 };
 
 /// Where a path point sits.
 enum class PathEvent {
-  Regular,
+  Regular,       ///< an ordinary point of the path
   LimitPoint,    ///< the parameter turned back between the previous point and this one
   Bifurcation,   ///< the index changed without a turn (an eigenvalue crossed zero)
   /// (stable path) the branch ended at the smallest step: its last state,
@@ -106,6 +112,8 @@ enum class PathEvent {
 /// "regular", "limit-point", "bifurcation", "snap", "branch-jump"
 std::string to_string(PathEvent event);
 
+/// One equilibrium of a load path: the load, the energy, the stability and
+/// what happened there.
 struct PathPoint {
   double parameter = 0.0;      ///< [parameter] μ
   double displacement = 0.0;   ///< [length] what the device measures
@@ -119,8 +127,8 @@ struct PathPoint {
   double lowest_eigenvalue = 0.0;  ///< [energy/length²]
   VecX lowest_mode;            ///< its unit eigenvector (num_dofs); empty when not computed
   bool stable = false;         ///< index == 0
-  PathEvent event = PathEvent::Regular;
-  int corrector_iterations = 0;
+  PathEvent event = PathEvent::Regular;  ///< where the point sits (a limit point, a snap, ...)
+  int corrector_iterations = 0;  ///< [1] Newton iterations of the corrector (or minimiser) that reached it
   /// [energy] Snap: E(x_{k−1}; μ_k) − E(x_k; μ_k), the energy the branch's
   /// last state releases falling into this one at the same control; else 0
   double energy_drop = 0.0;
@@ -136,8 +144,9 @@ enum class PathStatus {
 };
 std::string to_string(PathStatus status);  ///< "reached", "max-points", "stalled", "stopped"
 
+/// What follow_path() returns: the points of the path and how it ended.
 struct LoadPath {
-  PathStatus status = PathStatus::MaxPoints;
+  PathStatus status = PathStatus::MaxPoints;  ///< how the path ended
   std::vector<PathPoint> points;  ///< the start (relaxed at μ₀) first
   double seconds = 0.0;           ///< [s]
 };
@@ -155,7 +164,7 @@ LoadPath follow_path(ParameterizedObjective& f, const ContinuationOptions& optio
 /// those the load keeps. The system and the load must outlive it.
 class LoadedKnot : public ParameterizedObjective {
  public:
-  LoadedKnot(Objective& knot, ControlledLoad& load);
+  LoadedKnot(Objective& knot, ControlledLoad& load);  ///< At the knot's current dofs (the load is moved there).
   int num_dofs() const override { return knot_.num_dofs(); }
   VecX dofs() const override { return knot_.dofs(); }
   void set_dofs(const VecX& x) override;
@@ -175,7 +184,7 @@ class LoadedKnot : public ParameterizedObjective {
   double reaction() override { return load_.reaction(); }
   double load_energy() override { return load_.energy(); }
   Eigen::Index rigid_vertices() const override { return num_dofs() / 3; }  // twist-free: the dofs are positions
-  ControlledLoad& load() { return load_; }
+  ControlledLoad& load() { return load_; }  ///< The load (not owned).
 
  private:
   Objective& knot_;

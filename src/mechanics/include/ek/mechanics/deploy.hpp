@@ -1,7 +1,8 @@
 #pragma once
+/// \file
 /// Deploying a flat multi-covered coil at a prescribed link: the jumping-knot
-/// pipeline of paper Section 8.3 (Figs. 12, 13), used for the periodic braids
-/// of Section 8.4 (Fig. 16: "initialized ... from multi-covered circle
+/// pipeline of paper Section 8.3 (Figs.\ 12, 13), used for the periodic braids
+/// of Section 8.4 (Fig.\ 16: "initialized ... from multi-covered circle
 /// embeddings obtained from the generalized braid word representations, as
 /// illustrated in Figure 13").
 ///
@@ -30,6 +31,7 @@
 
 namespace ek {
 
+/// The model and the thresholds of deploy_at_link() and scan_links().
 struct DeployOptions {
   /// Material, rest lengths, tolerances, ... of every solve; its link, slab
   /// and release_slab are set per run (the full model with Θ fixed).
@@ -68,10 +70,11 @@ struct DeployRun {
 /// Throws InputError when the coil does not lie strictly inside the slab.
 DeployRun deploy_at_link(const Points& coil, double link, const DeployOptions& options = {});
 
+/// The links scan_links() relaxes the coil at, and the bisection of the onsets.
 struct LinkScanOptions {
   /// [turns] links of the coarse scan, ascending, at least one.
   std::vector<double> grid;
-  /// [turns] a link inside the coil's stable interval, e.g. its twist-free
+  /// [turns] a link inside the coil's stable interval, e.g.\ its twist-free
   /// link (the flat coil's writhe): the interval is the run of consecutive
   /// grid links at which the coil stays flat and stable that contains the
   /// grid link nearest to it.
@@ -86,18 +89,24 @@ struct LinkScanOptions {
 /// The links at which the flat coil stays stable and where it stops.
 struct LinkScan {
   std::vector<DeployRun> runs;  ///< every run, by ascending link
+  ///@{
   /// [turns] the ends of the stable interval: the smallest and largest
   /// scanned links of the run of consecutive flat and stable links around
   /// the centre (null when the coil is not flat and stable there).
   std::optional<double> flat_low, flat_high;
+  ///@}
+  ///@{
   /// [turns] the next scanned links outside it at which the coil buckles
   /// (null: the neighbour did not buckle, or the interval reaches the
   /// grid's end): the flat coil loses stability in (buckled_below, flat_low)
   /// and in (flat_high, buckled_above).
   std::optional<double> buckled_below, buckled_above;
+  ///@}
+  ///@{
   /// [turns] the scanned links nearest to the stable interval, below and
   /// above it, whose released states are stable and 3D (null: none).
   std::optional<double> three_d_below, three_d_above;
+  ///@}
 };
 
 /// Runs deploy_at_link() at every grid link, then bisects each bracket

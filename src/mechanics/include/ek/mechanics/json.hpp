@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// JSON descriptions of the mechanics' results (docs/cli.md). A knot under
 /// load (`knots load`): the
 /// summary's keys without those that name files (the command adds `input`

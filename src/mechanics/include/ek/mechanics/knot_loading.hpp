@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// A knot under load: the path of its equilibria as a device pulls two of
 /// its points apart, presses it between two plates, or applies a pair of
 /// forces (loads.hpp), followed by pseudo-arclength continuation
@@ -25,11 +26,12 @@ enum class LoadKind {
 std::string to_string(LoadKind kind);           ///< "pull", "plates", "force"
 LoadKind parse_load_kind(const std::string& text);  ///< InputError for another text
 
+/// The model, the device and the path of load_knot().
 struct KnotLoadOptions {
   /// The model (twist-free: no link, no full model, no slab): material, d̂,
   /// ω, the tolerance (the correctors' gradient tolerance) as for relax().
   RelaxOptions relax;
-  LoadKind kind = LoadKind::Pull;
+  LoadKind kind = LoadKind::Pull;  ///< the device: pull, plates or force
   /// pull, force: the two vertices (0-based, distinct); unset: the pair
   /// farthest apart in the relaxed start (its diameter)
   std::optional<std::array<int, 2>> vertices;
@@ -47,12 +49,12 @@ struct KnotLoadOptions {
   /// [1] the plates' barrier: its reach in wire radii and its stiffness in
   /// units of the contact stiffness ω
   double plates_reach = 1.0;
-  double plates_stiffness = 1.0;
+  double plates_stiffness = 1.0;       ///< [ω] the plates' barrier stiffness κ in units of ω
   int steps = 40;                      ///< [1] the first arclength step is |to − from| / steps
   int max_points = 400;                ///< [1] points of the path at most
   bool stop_at_snap = true;            ///< end the path at its first snap (else go on from the state it snapped into)
   /// relax the start without the load first (false: the start is taken as
-  /// it is, e.g. a point of an earlier path, already an equilibrium under the
+  /// it is, e.g.\ a point of an earlier path, already an equilibrium under the
   /// load at `from`; the path's first point brings it to the tolerance there)
   bool relax_start = true;
   int eigen_count = 4;                 ///< [1] lowest eigenpairs at each point (the index)
@@ -80,9 +82,12 @@ struct Snap {
   Points released;                ///< n by 3: that state relaxed without the load
   std::string released_status;    ///< RelaxResult::status()
   double released_energy = 0.0;   ///< [energy]
+  /// the state it falls into and its released state have the start's Alexander polynomial
   bool alexander_preserved = true;
 };
 
+/// What load_knot() returns: the stable load path, its work and the snaps
+/// along it.
 struct KnotLoadResult {
   /// The stable path; no points (status stalled) when no equilibrium under
   /// the load was found at its start `from`.
@@ -99,7 +104,7 @@ struct KnotLoadResult {
   /// (PathEvent::BranchJump: no energy released at the same control)
   int branch_jumps = 0;
   bool alexander_preserved = true;  ///< at every path point
-  std::vector<Snap> snaps;
+  std::vector<Snap> snaps;        ///< every snap of the path, in order
   Vec3 normal = Vec3::UnitZ();    ///< plates: the normal used
   std::array<int, 2> vertices{-1, -1};  ///< pull, force: the vertices used
   double pull_stiffness = 0.0;    ///< [energy/length²] the pull's k

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Loads on a knot as potential terms of the position dofs (beside the rod,
 /// contact and slab terms of knot_terms.hpp), each controlled by one scalar
 /// parameter μ: a pull between two material points under displacement
@@ -40,16 +41,20 @@ class ControlledLoad : public Potential {
   virtual double displacement() const = 0;
   /// What the parameter is: "distance", "gap" or "force".
   virtual std::string parameter_name() const = 0;
-  /// Whether a rigid motion of the curve leaves the load unchanged: all six
-  /// for a pull or forces between two points; for plates, the translations
-  /// in their plane and the rotation about their normal.
+  /// Whether the load is a pair of plates. The rigid motions of the curve
+  /// that leave a load unchanged are all six for a pull or forces between
+  /// two points, and for plates only the translations in their plane and the
+  /// rotation about their normal (LoadedKnot::rigid_modes()).
   virtual bool plates() const { return false; }
+  /// The plates' unit normal a (plates()); +z for the other loads.
   virtual Vec3 normal() const { return Vec3::UnitZ(); }
 };
 
 /// Pull between vertices i and j under displacement control, by a stiff
 /// spring of rest length D (the parameter):
+/// ~~~{.unparsed}
 ///   E = (k/2)(δ − D)²,  δ = |x_i − x_j|,  F = ∂E/∂D·(−1) = k(D − δ)
+/// ~~~
 /// (F > 0: the device pulls the points apart; F = ∂E/∂D). With k much stiffer than
 /// the knot along the pull, δ follows D (a hard device in the limit).
 class PullLoad : public ControlledLoad {
@@ -79,9 +84,13 @@ class PullLoad : public ControlledLoad {
 
 /// Opposite point forces of magnitude F (the parameter) on vertices i and j
 /// along the line joining them (F > 0 pulls them apart):
+/// ~~~{.unparsed}
 ///   E = −F δ,  δ = |x_i − x_j|.
+/// ~~~
 class ForceLoad : public ControlledLoad {
  public:
+  /// Forces of magnitude `force` [force] on vertices i != j (>= 0); InputError
+  /// otherwise or for a non-finite force.
   ForceLoad(int i, int j, double force);
   void set_dofs(const VecX& x) override;
   double energy() const override { return -F_ * distance(); }
@@ -107,12 +116,17 @@ class ForceLoad : public ControlledLoad {
 /// Two parallel plates with unit normal a, through the planes
 /// a·(x − c) = ±g/2 (the gap g is the parameter), as a barrier on every
 /// vertex's distance to each plate, as the planarity slab (slab.hpp):
+/// ~~~{.unparsed}
 ///   E = κ Σ_i [ b(g/2 − s_i) + b(g/2 + s_i) ],  s_i = a·(x_i − c),
+/// ~~~
 /// b the IPC barrier with activation distance `reach` (the wire radius: the
 /// plates touch the wire's surface). F = −∂E/∂g is the force the plates
 /// press with (> 0). max_step keeps every vertex strictly between them.
 class PlatesLoad : public ControlledLoad {
  public:
+  /// Plates through `center` [length] with normal `normal` (nonzero, normalised
+  /// here), gap g = `gap` [length] > 0, barrier reach [length] > 0 and stiffness
+  /// κ [energy/length²] > 0; InputError otherwise.
   PlatesLoad(const Vec3& center, const Vec3& normal, double gap, double reach, double stiffness);
   void set_dofs(const VecX& x) override;
   double energy() const override;

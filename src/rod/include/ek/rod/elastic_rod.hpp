@@ -1,7 +1,8 @@
 #pragma once
+/// \file
 /// Discrete elastic rod for closed curves: stretching, bending and twisting
 /// with exact gradient and sparse Hessian, and the link Lk = Tw + Wr of the
-/// framed curve (paper Section 6 and Appendix C; Bergou et al. 2008 and 2010).
+/// framed curve (paper Section 6 and Appendix C; Bergou et al.\ 2008 and 2010).
 ///
 /// Discretisation. Vertices x_0 .. x_{n-1} (n >= 3); edge j is
 /// e_j = x_{j+1} - x_j (indices mod n), with rest length l̄_j (the input's edge
@@ -9,9 +10,11 @@
 /// its rest Voronoi length is l̄_i^V = (l̄_{i-1} + l̄_i)/2. Vertex 0 is the
 /// closing vertex (edge n-1 to edge 0).
 ///
+/// ~~~{.unparsed}
 ///   E_stretch = Σ_j EA/2 (|e_j|/l̄_j - 1)² l̄_j
 ///   E_bend    = Σ_i EI/2 |(κb)_i|² / l̄_i^V,   (κb)_i = 2 e_{i-1}×e_i / (|e_{i-1}||e_i| + e_{i-1}·e_i)
 ///   E_twist   = Σ_i GJ/2 τ_i² / l̄_i^V,        τ_i = θ_i - θ_{i-1} + m_i + [i = 0] Θ
+/// ~~~
 ///
 /// Bending is the material-frame energy of Bergou et al. 2008 (eq. 5, per-edge
 /// material curvatures ω_i^j, j ∈ {i-1, i}, averaged over the two edges):
@@ -77,7 +80,8 @@ enum class TwistModel {
 };
 std::string to_string(TwistModel model);  ///< "twist-free", "free-theta", "fixed-link"
 
-/// Energy terms, each evaluable on its own.
+/// Energy terms, each evaluable on its own: Stretch, Bend, Twist (0 in
+/// TwistFree) or All, their sum.
 enum class EnergyTerm { Stretch, Bend, Twist, All };
 
 /// A closed discrete elastic rod (see the file comment for the formulas).
@@ -90,10 +94,10 @@ class ElasticRod {
   /// belongs to edge j from vertex j to vertex j+1).
   ElasticRod(const Points& positions, const VecX& rest_edge_lengths, RodMaterial material, TwistModel model);
 
-  int num_vertices() const { return n_; }
-  int num_dofs() const;
-  TwistModel model() const { return model_; }
-  const RodMaterial& material() const { return material_; }
+  int num_vertices() const { return n_; }                    ///< n, the number of vertices (= edges).
+  int num_dofs() const;                                      ///< 3n (TwistFree), 4n + 1 (FreeTheta) or 4n (FixedLink).
+  TwistModel model() const { return model_; }                ///< The unknowns of the rod (TwistModel).
+  const RodMaterial& material() const { return material_; }  ///< E, ν and r of the wire.
 
   /// [x (3n) | θ (n) | Θ (FreeTheta only)].
   VecX dofs() const;
@@ -101,7 +105,7 @@ class ElasticRod {
   /// changed: reference directors and twists follow by time-parallel transport
   /// from the source (see update_reference_frames()).
   void set_dofs(const VecX& x);
-  const Points& positions() const { return x_; }
+  const Points& positions() const { return x_; }  ///< Current vertices x_i (n by 3).
   /// Material angles θ_j (n; zero in TwistFree).
   const VecX& thetas() const { return theta_; }
 
@@ -134,13 +138,18 @@ class ElasticRod {
   /// Complete state (positions, angles, source frames), for a line search:
   /// save() before trial points, restore() to go back (conventions 8).
   struct State {
-    Points x;
-    VecX theta;
-    double Theta = 0.0;
-    Eigen::Matrix3Xd source_tangents, source_directors;  ///< 3 by n, column j for edge j
+    Points x;            ///< Vertices (n by 3).
+    VecX theta;          ///< Material angles θ_j (n) [rad].
+    double Theta = 0.0;  ///< Injected twist Θ [rad].
+    ///@{
+    /// Source tangents s_j and source directors u_j of the parallel transport
+    /// (3 by n, column j for edge j).
+    Eigen::Matrix3Xd source_tangents, source_directors;
+    ///@}
     VecX source_twist;                                   ///< n, m_i at the source
   };
-  State save() const;
+  State save() const;                ///< The complete state, to return to with restore().
+  /// Returns to a state that save() took; std::invalid_argument for a state of another size.
   void restore(const State& state);
 
   /// Sets θ (and Θ in FreeTheta) to the minimiser of the twisting energy for
@@ -155,9 +164,9 @@ class ElasticRod {
   double total_reference_twist() const;
   /// Twist angle τ_i = θ_i - θ_{i-1} + m_i (+ Θ at i = 0) [rad]; 0 in TwistFree.
   double twist_angle(int i) const;
-  /// Tw = (Θ + Σ_i m_i) / (2π) (Appendix C, eq. 6); 0 in TwistFree.
+  /// Tw = (Θ + Σ_i m_i) / (2π) (Appendix C, eq.\ 6); 0 in TwistFree.
   double twist() const;
-  /// Wr = ek::writhe(positions) (Appendix C, eq. 5). O(n²).
+  /// Wr = ek::writhe(positions) (Appendix C, eq.\ 5). O(n²).
   double writhe() const;
   /// Lk = Tw + Wr.
   double link() const;

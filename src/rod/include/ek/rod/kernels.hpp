@@ -1,6 +1,7 @@
 #pragma once
-/// Local kernels of the discrete elastic rod (Bergou et al. 2008, "Discrete
-/// Elastic Rods"; Bergou et al. 2010, "Discrete Viscous Threads"; paper
+/// \file
+/// Local kernels of the discrete elastic rod (Bergou et al.\ 2008, "Discrete
+/// Elastic Rods"; Bergou et al.\ 2010, "Discrete Viscous Threads"; paper
 /// Section 6). Each kernel is a trio value / gradient / Hessian of free
 /// functions on fixed-size Eigen types; ElasticRod assembles them over the
 /// closed curve.
@@ -15,19 +16,21 @@
 
 #include "ek/geometry/types.hpp"
 
+/// The rod's local kernels (value, gradient, Hessian of one stencil), which
+/// ElasticRod assembles.
 namespace ek::rod {
 
-using Vec6 = Eigen::Matrix<double, 6, 1>;
-using Mat6 = Eigen::Matrix<double, 6, 6>;
-using Vec9 = Eigen::Matrix<double, 9, 1>;
-using Mat9 = Eigen::Matrix<double, 9, 9>;
+using Vec6 = Eigen::Matrix<double, 6, 1>;  ///< Gradient of a vertex kernel: (∂/∂a, ∂/∂b).
+using Mat6 = Eigen::Matrix<double, 6, 6>;  ///< Hessian of a vertex kernel in the edge vectors (a, b).
+using Vec9 = Eigen::Matrix<double, 9, 1>;  ///< Gradient in the coordinates of three vertices (x_{i-1}, x_i, x_{i+1}).
+using Mat9 = Eigen::Matrix<double, 9, 9>;  ///< Hessian in the coordinates of three vertices (x_{i-1}, x_i, x_{i+1}).
 
 // ---------------------------------------------------------------------------
 // Stretching of one edge
 // ---------------------------------------------------------------------------
 
 /// E = EA/2 (|e|/l̄ - 1)² l̄ = EA (|e| - l̄)² / (2 l̄) for the edge vector e
-/// with rest length l̄ > 0 and stretching stiffness EA (Bergou et al. 2010).
+/// with rest length l̄ > 0 and stretching stiffness EA (Bergou et al.\ 2010).
 double stretch_energy(const Vec3& e, double rest_length, double EA);
 /// ∂E/∂e = EA/l̄ (|e| - l̄) ê.
 Vec3 stretch_gradient(const Vec3& e, double rest_length, double EA);
@@ -45,7 +48,7 @@ Mat3 stretch_hessian_projected(const Vec3& e, double rest_length, double EA);
 // ---------------------------------------------------------------------------
 
 /// Discrete curvature binormal (κb) = 2 a × b / (|a||b| + a·b) at the vertex
-/// joining edges a and b (Bergou et al. 2008, eq. 1). |κb| = 2 tan(φ/2) for
+/// joining edges a and b (Bergou et al.\ 2008, eq.\ 1). |κb| = 2 tan(φ/2) for
 /// the turning angle φ; dimensionless (an integrated curvature: the pointwise
 /// curvature is |κb| / l̄ with the Voronoi length l̄).
 Vec3 curvature_binormal(const Vec3& a, const Vec3& b);
@@ -93,7 +96,7 @@ Mat6 solid_angle_hessian(const Vec3& a, const Vec3& b, const Vec3& c);
 
 /// Change of the reference twist at a vertex when its edges move from the
 /// source unit tangents (s_a, s_b) to the edge vectors (a, b) and the
-/// reference directors follow by time-parallel transport (Bergou et al. 2010,
+/// reference directors follow by time-parallel transport (Bergou et al.\ 2010,
 /// Section 4.2): m = m_source + Δm with
 ///   Δm = -[Ω(s_a, t_a, t_b) + Ω(s_a, t_b, s_b)],   t = e/|e|,
 /// minus the signed area of the geodesic quadrilateral s_a → t_a → t_b → s_b:

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Material of the elastic wire: a homogeneous isotropic rod with a circular
 /// cross-section (paper Section 6; data set defaults of Section 7.4).
 namespace ek {

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// A static file server for a site held in memory (`knots serve`): HTTP/1.1
 /// on the loopback interface (127.0.0.1) only, GET and HEAD only, one
 /// request per connection. It answers only the site's own files: a target
@@ -18,6 +19,7 @@
 
 namespace ek {
 
+/// The port, the workers and the limits of SiteServer.
 struct ServeOptions {
   int port = 8000;            ///< [1] TCP port on 127.0.0.1; 0: any free port
   int workers = 8;            ///< [1] connections served at once
@@ -27,9 +29,9 @@ struct ServeOptions {
 
 /// The answer to one request.
 struct HttpResponse {
-  int status = 200;
+  int status = 200;          ///< HTTP status code: 200, 403, 404, 405, ...
   std::string reason;        ///< "OK", "Not Found", ...
-  std::string content_type;
+  std::string content_type;  ///< Content-Type of the body (content_type())
   std::string body;          ///< the file, or a one-line text for errors
 };
 
@@ -39,14 +41,17 @@ HttpResponse respond(const SiteFiles& files, const std::string& method, const st
 /// The response head and body as sent (the body omitted for HEAD).
 std::string http_message(const HttpResponse& response, bool head_only);
 
+/// Serves a site's files (held in memory) on 127.0.0.1 with a few worker
+/// threads (see the file's description).
 class SiteServer {
  public:
   /// Binds 127.0.0.1:port and listens; InputError when the port is taken or
   /// not allowed.
   SiteServer(SiteFiles files, const ServeOptions& options);
-  ~SiteServer();
+  ~SiteServer();  ///< Stops the workers and closes the sockets.
+  /// Not copyable: one server owns its socket and threads.
   SiteServer(const SiteServer&) = delete;
-  SiteServer& operator=(const SiteServer&) = delete;
+  SiteServer& operator=(const SiteServer&) = delete;  ///< Not copyable.
 
   /// The bound port (the chosen one for port 0).
   int port() const { return port_; }

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// The data-set explorer (paper Section 7: similarity, clustering, MDS,
 /// filters, cross-knot queries): a static web site written from a data-set
 /// file or from ledgers (ledger.hpp: a ledger file, or a folder of them
@@ -17,6 +18,7 @@
 ///
 /// Site layout (docs/explorer.md documents it for users):
 ///
+/// ~~~{.unparsed}
 ///   index.html, style.css, js/*.js      the pages (embedded in the program at build time)
 ///   three/build/three.module.js         three.js and its OrbitControls, copied from
 ///   three/examples/jsm/controls/...     Debian's libjs-three at run time
@@ -42,6 +44,7 @@
 ///                                       similarity float32 [m, m], contact uint8 [m, n]
 ///                                       (edge i = vertex i to i+1 closer than d̂ to an
 ///                                       edge sharing no vertex with it)
+/// ~~~
 ///
 /// Numbers in JSON are written with 17 significant digits (exact round trip),
 /// so a cut compared with the linkage heights in the page gives the same
@@ -60,8 +63,9 @@ namespace ek {
 
 /// Format of data/site.json and data/knots/*.json (conventions: data files carry a schema version).
 inline constexpr const char* kSiteFormat = "elastic-knots-site";
-inline constexpr int kSiteFormatVersion = 2;
+inline constexpr int kSiteFormatVersion = 2;  ///< format_version of data/site.json
 
+/// The cuts, the three.js folder and the title of build_site().
 struct SiteOptions {
   /// [1] distance cut (1 - similarity) for the knot table's "distinct states"
   /// column and the initial position of each knot's cut slider (the paper
@@ -76,7 +80,7 @@ struct SiteOptions {
   /// name shown as the data set's title (default: the data-set file's name)
   std::string title;
 
-  SiteOptions();
+  SiteOptions();  ///< The defaults; three_dir as found when the program was configured.
   /// Throws InputError for a cut or link cut outside [0, 1].
   void validate() const;
 };
@@ -84,10 +88,10 @@ struct SiteOptions {
 /// The site's files: path relative to the site's folder -> contents.
 using SiteFiles = std::map<std::string, std::string>;
 
-/// The data files of one knot (data/knots/<file>.json and .bin).
+/// The data files of one knot (`data/knots/<file>.json` and `.bin`).
 struct KnotSiteData {
-  std::string json;    ///< data/knots/<file>.json
-  std::string binary;  ///< data/knots/<file>.bin
+  std::string json;    ///< `data/knots/<file>.json`
+  std::string binary;  ///< `data/knots/<file>.bin`
   int distinct = 0;    ///< [1] clusters at the cut
 };
 

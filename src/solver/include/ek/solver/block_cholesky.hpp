@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Sparse Cholesky factorisation H + s·I = L Lᵀ in 3 × 3 blocks, for the
 /// Hessians of discrete rods: the three coordinates of a vertex form one
 /// block, so the symbolic work runs on the graph of the n vertices (not of
@@ -39,8 +40,12 @@
 
 namespace ek {
 
+/// Sparse Cholesky factorisation of H + s·I in 3 × 3 blocks with symbolic
+/// reuse (see the file's description): analyse() once per pattern,
+/// factorize() per shift, solve() with the last good factor.
 class BlockCholesky {
  public:
+  /// Upper triangle of H, compressed, column-major (SparseAssembler::matrix()).
   using Matrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 
   /// Symbolic analysis of the pattern of H (upper triangle, compressed,
@@ -59,7 +64,7 @@ class BlockCholesky {
   int size() const { return n_; }                 ///< [dofs]
   int blocks() const { return nb_; }              ///< 3 × 3 block rows
   long long factor_blocks() const;                ///< blocks of L (diagonal included)
-  bool has_factor() const { return good_; }
+  bool has_factor() const { return good_; }       ///< Whether a factorisation has succeeded (solve() may be called).
   size_t pattern_nonzeros() const { return dst_.size(); }  ///< stored values of the analysed H
   int symbolic_count() const { return symbolic_count_; }  ///< symbolic analyses so far
   int ordering_count() const { return ordering_count_; }  ///< AMD orderings so far

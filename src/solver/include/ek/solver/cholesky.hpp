@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Sparse Cholesky factorisation of H + shift·I with CHOLMOD (SuiteSparse),
 /// keeping the symbolic analysis between factorisations (paper Section 6,
 /// "Numerical Solver": the pattern of the contact Hessian changes only when
@@ -37,6 +38,7 @@
 
 namespace ek {
 
+/// Which sparse Cholesky factorisation CholeskySolver uses.
 enum class CholeskyMode {
   Simplicial,  ///< CHOLMOD's simplicial LL'
   Supernodal,  ///< CHOLMOD's supernodal LL' (BLAS-3; better for large, dense fill)
@@ -45,6 +47,8 @@ enum class CholeskyMode {
   Block,
 };
 
+/// How CholeskySolver factorises: the method and the reuse of the fill-reducing
+/// ordering.
 struct CholeskyOptions {
   CholeskyMode mode = CholeskyMode::Block;  ///< the factorisation (Block: 3-5x faster than Simplicial on rod Hessians)
   /// Keep the fill-reducing ordering across pattern changes (see the file comment).
@@ -53,15 +57,21 @@ struct CholeskyOptions {
   double reorder_fill_growth = 0.2;
 };
 
+/// Sparse Cholesky factorisation of H + shift·I with the symbolic analysis
+/// kept while the pattern is unchanged (see the file's description); the
+/// CHOLMOD context is owned (RAII) and released by the destructor.
 class CholeskySolver {
  public:
+  /// Upper triangle of H, compressed, column-major (SparseAssembler::matrix()).
   using Matrix = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 
+  /// A solver of `mode` with the default ordering options.
   explicit CholeskySolver(CholeskyMode mode = CholeskyMode::Block);
-  explicit CholeskySolver(const CholeskyOptions& options);
-  ~CholeskySolver();
+  explicit CholeskySolver(const CholeskyOptions& options);  ///< A solver with these options.
+  ~CholeskySolver();                                        ///< Releases the CHOLMOD context and factors.
+  /// Not copyable: one solver owns its CHOLMOD context.
   CholeskySolver(const CholeskySolver&) = delete;
-  CholeskySolver& operator=(const CholeskySolver&) = delete;
+  CholeskySolver& operator=(const CholeskySolver&) = delete;  ///< Not copyable.
 
   /// Factorises H + shift·I, where H is given by its upper triangle (compressed,
   /// column-major, sorted row indices, as SparseAssembler::matrix()). The

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Smallest eigenpairs of a sparse symmetric Hessian (stability, stiffness,
 /// negative-curvature directions) with Spectra's Lanczos solver on the
 /// shift-inverted operator P (H + sI)⁻¹ P, using a CHOLMOD factor of H + sI:
@@ -15,6 +16,7 @@
 
 namespace ek {
 
+/// How many eigenpairs smallest_eigenpairs() computes, and the Lanczos settings.
 struct EigenOptions {
   int count = 1;               ///< [1] number of smallest eigenpairs wanted
   bool exclude_rigid = true;   ///< project out rigid-motion modes
@@ -23,7 +25,11 @@ struct EigenOptions {
   double tolerance = 1e-10;    ///< [1] relative tolerance of the Ritz values
 };
 
+/// The smallest eigenpairs of H with rigid motions excluded.
 struct EigenResult {
+  /// Whether the pairs were computed: false when no shift up to 60 tries made
+  /// H + sI factorise, the subspace left too few dofs, or Lanczos did not
+  /// converge (values and vectors are then empty).
   bool converged = false;
   VecX values;                 ///< ascending eigenvalues of H
   Eigen::MatrixXd vectors;     ///< dofs by count, unit columns

@@ -1,6 +1,7 @@
 #pragma once
+/// \file
 /// The energy of a closed curve as the elastic rod with self-contact (paper
-/// Section 6, eq. 1), as `knots energy` reports it (and the Python module's
+/// Section 6, eq.\ 1), as `knots energy` reports it (and the Python module's
 /// energy()): the rod's parts, the contact barrier with d̂ = 2r and ω scaled
 /// with E and r exactly as relax() does, the gradient norm, twist, writhe and
 /// link.
@@ -18,6 +19,8 @@
 
 namespace ek {
 
+/// The model of curve_energy(): the material, and the link and rest length when
+/// prescribed.
 struct CurveEnergyOptions {
   RodMaterial material;              ///< E, ν, r (paper defaults)
   std::optional<double> link;        ///< [1] prescribed link Lk (full model, Θ fixed); none: twist-free
@@ -28,6 +31,8 @@ struct CurveEnergyOptions {
   void validate() const;
 };
 
+/// What curve_energy() reports: the energy's parts, the gradient norm, the
+/// contacts, and twist, writhe and link.
 struct CurveEnergy {
   int vertices = 0;                  ///< [1] n
   std::string model;                 ///< "twist-free" or "fixed-link"

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// JSON descriptions of the solver's results (docs/cli.md): the objects of
 /// `knots energy --json` and `knots relax --json` without the keys that name
 /// files (the command adds `file` first, and `output` and `trace` last).

@@ -1,10 +1,13 @@
 #pragma once
-/// The terms of the knot relaxation (paper Section 6, eq. 1) as Potentials
+/// \file
+/// The terms of the knot relaxation (paper Section 6, eq.\ 1) as Potentials
 /// (objective.hpp) over the rod's dofs [x (3n) | θ (n) | Θ]:
 ///
+/// ~~~{.unparsed}
 ///   RodTerm      E_stretch + E_bend + E_twist        (elastic_rod.hpp)
 ///   ContactTerm  ω Σ b(d_ij) over close edge pairs   (contact_potential.hpp)
 ///   SlabTerm     κ Σ b(h ∓ z_i), the planarity slab  (slab.hpp)
+/// ~~~
 ///
 /// Each wraps an object it does not own; the contact and slab terms act on
 /// the position dofs only. knot_objective() sums them.
@@ -26,6 +29,7 @@ namespace ek {
 /// reference twists then describe its starting frames).
 class RodTerm : public Potential {
  public:
+  /// The term of `rod` (not owned); `max_rotation` [rad] bounds the tangents' rotation per step.
   RodTerm(ElasticRod& rod, double max_rotation) : rod_(rod), max_rotation_(max_rotation) {}
   void set_dofs(const VecX& x) override { rod_.set_dofs(x); }
   double energy() const override;
@@ -70,6 +74,7 @@ class ContactTerm : public Potential {
 /// The planarity slab |z| < h. Part "slab".
 class SlabTerm : public Potential {
  public:
+  /// The term of `slab` (not owned), starting at the positions `x` (n by 3).
   SlabTerm(const PlanaritySlab& slab, const Points& x) : slab_(slab), x_(x) {}
   void set_dofs(const VecX& x) override { x_ = as_points(x.head(x_.size())); }
   double energy() const override { return slab_.energy(x_); }
@@ -90,6 +95,9 @@ class SlabTerm : public Potential {
 /// and slab must outlive it.
 class KnotObjective : public CompositeObjective {
  public:
+  /// The objective of `rod` and `contact` (not owned), with the slab when
+  /// `slab` is not null; `max_rotation` [rad] as for RodTerm. Starts at the
+  /// rod's current positions.
   KnotObjective(ElasticRod& rod, ContactPotential& contact, const PlanaritySlab* slab, double max_rotation);
 
  private:

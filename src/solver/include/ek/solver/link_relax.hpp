@@ -1,6 +1,7 @@
 #pragma once
+/// \file
 /// Relaxation of a link (paper Section 8.5: "We can easily extend our
-/// simulation algorithm to handle links, i.e. intertwined combinations of
+/// simulation algorithm to handle links, i.e.\ intertwined combinations of
 /// several knots").
 ///
 /// Model: one twist-free elastic rod per component (elastic_rod.hpp, eq. 1 of
@@ -8,7 +9,9 @@
 /// edge lengths), and the contact barrier with its certified collision
 /// detection between every pair of edges of the link that do not share a
 /// vertex, across components too (contact_potential.hpp, CurveTopology):
+/// ~~~{.unparsed}
 ///   E(x) = Σ_c E_rod(x_c) + ω Σ_{pairs} b(d_ij).
+/// ~~~
 /// The dofs are the components' positions back to back, [x_0 (3n_0) | x_1
 /// (3n_1) | ...]. Since no accepted step lets two edges touch, no component
 /// changes its knot type and no two components pass through each other: the
@@ -31,13 +34,16 @@
 
 namespace ek {
 
+/// What relax_link() returns: the equilibrium of the link, the solver's
+/// reports and the link type checked on the result.
 struct LinkRelaxResult {
   Link positions;                               ///< the equilibrium, one n_c by 3 array per component
   NewtonReport report;                          ///< of the solve at ω
   std::vector<NewtonReport> continuation_reports;  ///< of the continuation solves, in order
   double energy = 0.0;                          ///< [energy] E at the result
   std::vector<EnergyPart> parts;                ///< E's parts at the result: "stretch", "bend", "contact"
-  double min_distance = 0.0;                    ///< [length] smallest distance of edges sharing no vertex, components included
+  /// [length] smallest distance of edges sharing no vertex, components included
+  double min_distance = 0.0;
   std::vector<AlexanderPolynomial> alexander;   ///< of the input's components
   Eigen::MatrixXi linking_numbers;              ///< [1] of the input (m by m)
   bool alexander_preserved = true;              ///< every component's polynomial equal on the result
@@ -45,7 +51,7 @@ struct LinkRelaxResult {
   ConwayPolynomial conway;                      ///< the input link's ∇ (conway.hpp)
   bool conway_preserved = true;                 ///< ∇ equal on the result (tells the Borromean rings from the unlink)
 
-  bool converged() const;
+  bool converged() const;  ///< Whether the solve at ω converged (stable or, with stop_at_critical_point, unstable).
   /// Every component's Alexander polynomial, every linking number and ∇ kept.
   bool topology_preserved() const { return alexander_preserved && linking_preserved && conway_preserved; }
   /// The solver's status, or "topology-changed" when a component's
@@ -63,16 +69,16 @@ class LinkModel {
  public:
   /// Throws InputError as relax_link() does.
   LinkModel(const Link& link, const RelaxOptions& options);
-  ~LinkModel();
-  LinkModel(const LinkModel&) = delete;
-  LinkModel& operator=(const LinkModel&) = delete;
+  ~LinkModel();                                     ///< Releases the rods, the contact and the objective.
+  LinkModel(const LinkModel&) = delete;             ///< Not copyable.
+  LinkModel& operator=(const LinkModel&) = delete;  ///< Not copyable.
   /// The objective with contact stiffness factor·ω (factor > 0; 1: the
   /// model's), at the current positions. A call with another factor
   /// invalidates the previous reference.
   Objective& objective(double factor = 1.0);
   Link components() const;  ///< the current positions, one array per component
   double min_distance();    ///< [length] smallest distance of edges sharing no vertex
-  const ResolvedModel& model() const;
+  const ResolvedModel& model() const;  ///< d̂, ω and the tolerance resolved from the options.
   /// The Newton options of the relaxation (newton_options() of relax.hpp),
   /// λ_min that of the straight rod with the link's total vertex count.
   NewtonOptions newton_options() const;

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Coarse and fine versions of one closed curve for the multilevel
 /// relaxation (RelaxMethod::Multilevel, relax.hpp; docs/models.md, "Solver").
 ///
@@ -20,6 +21,8 @@
 
 namespace ek {
 
+/// The result of coarsen(): the collapsed fine curve, the coarse curve and the
+/// certified fraction of the motion between them.
 struct CoarseCurve {
   Points collapsed;   ///< n by 3: the fine curve with every odd vertex moved onto its neighbours' segment
   Points coarse;      ///< n/2 by 3: the even vertices of `collapsed`

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Newton's method with a Hessian shift, CHOLMOD factorisation with symbolic
 /// reuse, a collision-free step bound and Armijo backtracking (paper Section 6,
 /// "Numerical Solver"), on an abstract objective (objective.hpp).
@@ -120,7 +121,7 @@ struct NewtonOptions : NewtonMethodOptions {
   /// Report converged-unstable at a saddle instead of leaving it along a
   /// direction of negative curvature.
   bool stop_at_critical_point = false;
-  NewtonOptions() = default;
+  NewtonOptions() = default;  ///< The default method and goal.
   /// `method` with the default goal.
   explicit NewtonOptions(const NewtonMethodOptions& method) : NewtonMethodOptions(method) {}
   void validate() const;  ///< std::invalid_argument for impossible values
@@ -130,27 +131,27 @@ struct NewtonOptions : NewtonMethodOptions {
 
 /// Timings and counters of a minimisation.
 struct NewtonReport {
-  SolverStatus status = SolverStatus::MaxIterations;
-  int iterations = 0;
+  SolverStatus status = SolverStatus::MaxIterations;  ///< How the minimisation ended.
+  int iterations = 0;                   ///< [1] Newton steps and saddle escapes taken.
   double seconds = 0.0;                 ///< [s] wall time
-  double energy = 0.0;
+  double energy = 0.0;                  ///< [energy] E at the result
   double gradient_norm = 0.0;           ///< ||g||₂ at the result
   double final_shift = 0.0;             ///< shift used in the last factorisation
   bool hessian_psd = false;             ///< H + ε λ_min I factorised at the end
-  int saddle_escapes = 0;
+  int saddle_escapes = 0;               ///< [1] steps along a direction of negative curvature at a saddle
   /// Converged where H + ε λ_min I is not positive definite but no step along
   /// the direction of negative curvature lowers the energy beyond round-off
   /// (a neutral mode): reported as converged-stable with this flag.
   bool marginal = false;
   /// [energy/length²] most negative eigenvalue found at the last saddle test (0 if none).
   double smallest_eigenvalue = 0.0;
-  int symbolic_factorizations = 0;
+  int symbolic_factorizations = 0;      ///< [1] symbolic analyses (pattern changes)
   int orderings = 0;                    ///< fill-reducing orderings (AMD), <= symbolic_factorizations
-  int numeric_factorizations = 0;
+  int numeric_factorizations = 0;       ///< [1] numeric factorisations, failed ones included
   /// Numeric factorisations that failed (H + shift·I not positive definite:
   /// a rung of the shift ladder; part of numeric_factorizations).
   int failed_factorizations = 0;
-  int line_search_trials = 0;
+  int line_search_trials = 0;           ///< [1] energy evaluations of trial points (line search and expansion)
   double time_assembly = 0.0;           ///< [s] gradient and Hessian
   double time_factorization = 0.0;      ///< [s] symbolic + numeric + solves
   double time_collision = 0.0;          ///< [s] collision-free step bounds
@@ -174,7 +175,7 @@ std::string to_string(IterationKind kind);  ///< "step", "saddle-escape", "final
 struct IterationRecord {
   int phase = 0;                  ///< which minimize() call of the solver (0, 1, ...)
   int iteration = 0;              ///< iterations taken before this one, in the phase
-  IterationKind kind = IterationKind::Step;
+  IterationKind kind = IterationKind::Step;  ///< a step, a saddle escape or the final test
   double energy = 0.0;            ///< [energy] E
   std::vector<EnergyPart> parts;  ///< Objective::energy_parts()
   double gradient_norm = 0.0;     ///< [energy/length] ||g||₂
@@ -185,7 +186,7 @@ struct IterationRecord {
   bool pattern_changed = false;   ///< the Hessian's sparsity pattern changed
   double max_step = 1.0;          ///< [1] collision-free bound of the step
   double step = 0.0;              ///< [1] accepted step fraction t (0: none; > 1 expanded)
-  int line_search_trials = 0;
+  int line_search_trials = 0;     ///< [1] energy evaluations of trial points in this iteration
   int active_pairs = 0;           ///< Objective::active_pairs() at the iterate
   double seconds = 0.0;           ///< [s] wall time of the iteration
 };
@@ -198,12 +199,13 @@ struct IterationRecord {
 /// up to the round-off of another elimination order.
 class NewtonSolver {
  public:
+  /// A solver with these options; std::invalid_argument for impossible ones.
   explicit NewtonSolver(const NewtonOptions& options = {});
-  ~NewtonSolver();
-  NewtonSolver(const NewtonSolver&) = delete;
-  NewtonSolver& operator=(const NewtonSolver&) = delete;
+  ~NewtonSolver();                                        ///< Releases the assembler and the factorisation.
+  NewtonSolver(const NewtonSolver&) = delete;             ///< Not copyable.
+  NewtonSolver& operator=(const NewtonSolver&) = delete;  ///< Not copyable.
 
-  const NewtonOptions& options() const { return options_; }
+  const NewtonOptions& options() const { return options_; }  ///< The options of the next minimize().
   /// Validates and sets the options of the following minimisations.
   void set_options(const NewtonOptions& options);
   /// Minimises from the objective's current dofs; leaves it at the result.

@@ -1,7 +1,10 @@
 #pragma once
-/// What the Newton solver minimises (paper Section 6, eq. 1):
+/// \file
+/// What the Newton solver minimises (paper Section 6, eq.\ 1):
 ///
+/// ~~~{.unparsed}
 ///   E(x) = Σ_k E_k(x)
+/// ~~~
 ///
 /// over one vector of degrees of freedom x, as a sum of potentials E_k (the
 /// elastic rod, ω times the contact barrier, the planarity slab, ...). The
@@ -35,13 +38,13 @@ struct EnergyPart {
 /// parallel-transport reference frames or refresh contact sets).
 class Objective {
  public:
-  virtual ~Objective() = default;
-  virtual int num_dofs() const = 0;
-  virtual VecX dofs() const = 0;
-  virtual void set_dofs(const VecX& x) = 0;
+  virtual ~Objective() = default;            ///< Objectives are used through references to this interface.
+  virtual int num_dofs() const = 0;          ///< Length of the dof vector x.
+  virtual VecX dofs() const = 0;             ///< The current dofs x (num_dofs()).
+  virtual void set_dofs(const VecX& x) = 0;  ///< Moves to x (num_dofs()): a trial point or the next iterate.
   /// E at the current dofs; +infinity when the point is infeasible.
   virtual double energy() = 0;
-  virtual VecX gradient() = 0;
+  virtual VecX gradient() = 0;  ///< ∇E at the current dofs (num_dofs()).
   /// Fills A with the Hessian's upper triangle (A.begin() ... A.end()).
   /// HessianKind::Projected lets an objective return a modified Hessian that
   /// is closer to positive semidefinite (for example with per-element
@@ -55,6 +58,8 @@ class Objective {
     (void)dx;
     return 1.0;
   }
+  /// Called once the current dofs are accepted as the new iterate (for example
+  /// to parallel-transport reference frames). Default: nothing.
   virtual void accept() {}
   /// Orthonormal basis (num_dofs by k, k >= 0) of the motions that leave E
   /// invariant at the current dofs to first order (rigid motions). With
@@ -73,7 +78,7 @@ class Objective {
 /// over positions reads its first 3n entries).
 class Potential {
  public:
-  virtual ~Potential() = default;
+  virtual ~Potential() = default;  ///< Terms are used through pointers to this interface.
   /// Moves the term to x (the objective's dofs, every trial point).
   virtual void set_dofs(const VecX& x) = 0;
   /// E_k at the current point [energy]; +infinity when infeasible.
@@ -109,27 +114,30 @@ class Potential {
 /// unchanged replays its pattern. The terms are not owned.
 class CompositeObjective : public Objective {
  public:
+  /// Where the dofs live: callbacks into the state object that owns them.
   struct Dofs {
     std::function<int()> count;                      ///< number of dofs
     std::function<VecX()> get;                       ///< current dofs
     std::function<Eigen::MatrixXd()> rigid_modes;    ///< may be empty: none
   };
+  /// The sum of `terms` (not owned, none null) over the dofs of `dofs` (count and
+  /// get set); std::invalid_argument otherwise.
   CompositeObjective(Dofs dofs, std::vector<Potential*> terms);
 
   int num_dofs() const override { return dofs_.count(); }
   VecX dofs() const override { return dofs_.get(); }
-  void set_dofs(const VecX& x) override;
+  void set_dofs(const VecX& x) override;  ///< Moves every term to x (num_dofs()).
   /// The sum in the order of the terms.
   double energy() override;
-  VecX gradient() override;
-  void assemble_hessian(SparseAssembler& A, HessianKind kind) override;
+  VecX gradient() override;                                              ///< The sum of the terms' gradients.
+  void assemble_hessian(SparseAssembler& A, HessianKind kind) override;  ///< One assembler segment per term, in order.
   /// The smallest of the terms' bounds.
   double max_step(const VecX& x, const VecX& dx) override;
-  void accept() override;
-  Eigen::MatrixXd rigid_modes() override;
-  std::vector<EnergyPart> energy_parts() override;
-  int active_pairs() const override;
-  const std::vector<Potential*>& terms() const { return terms_; }
+  void accept() override;                                          ///< Every term's accept(), in order.
+  Eigen::MatrixXd rigid_modes() override;                          ///< Dofs::rigid_modes(), or none when it is empty.
+  std::vector<EnergyPart> energy_parts() override;                 ///< Every term's parts, in the order of the terms.
+  int active_pairs() const override;                               ///< The sum over the terms.
+  const std::vector<Potential*>& terms() const { return terms_; }  ///< The terms, in order (not owned).
 
  private:
   Dofs dofs_;

@@ -1,8 +1,11 @@
 #pragma once
+/// \file
 /// Relaxing a closed curve to a stable equilibrium of the elastic rod with
-/// self-contact (paper Section 6, eq. 1):
+/// self-contact (paper Section 6, eq.\ 1):
 ///
+/// ~~~{.unparsed}
 ///   min_{x, θ} E_rod(x, θ) + ω E_contact(x) [+ E_slab(x)]
+/// ~~~
 ///
 /// by Newton's method (newton.hpp) with the Hessian shift ε·λ_min, λ_min the
 /// smallest nonzero eigenvalue of the straight rod's Hessian (computed once per
@@ -40,12 +43,17 @@ enum class RelaxMethod {
 };
 std::string to_string(RelaxMethod method);  ///< "multilevel", "direct"
 
-/// Defaults of the multilevel method.
+/// Defaults of the multilevel method: one coarse level
+/// (RelaxOptions::coarse_levels).
 inline constexpr int kDefaultCoarseLevels = 1;
-inline constexpr double kDefaultCoarseContinuation = 1e-3;
+inline constexpr double kDefaultCoarseContinuation = 1e-3;  ///< [1] contact-stiffness factor of the coarsest level
 /// Fewest vertices of a coarse level.
 inline constexpr int kMinCoarseVertices = 24;
 
+/// The model and the method of relax(): the material, the contact, the
+/// tolerance and iteration cap, the twist model (link, full model), the
+/// planarity slab, and the Newton settings. Unset optional fields are resolved
+/// by resolve_model().
 struct RelaxOptions {
   RodMaterial material;             ///< E, ν, r (paper defaults)
   /// [length] rest edge lengths (n); default: the input curve's edge lengths.
@@ -98,7 +106,7 @@ struct RelaxOptions {
   /// Planarity slab |z| < h (slab.hpp). With release_slab the slab is dropped
   /// after the first phase and the solve continues from the flat state.
   std::optional<SlabOptions> slab;
-  bool release_slab = false;
+  bool release_slab = false;          ///< drop the slab after the first phase and continue from the flat state
   /// Tangent rotation allowed per Newton step when material frames are
   /// transported (full model), so that time-parallel transport stays well defined.
   double max_tangent_rotation = 0.5;  ///< [rad]
@@ -144,9 +152,17 @@ double default_contact_stiffness(const RodMaterial& material);
 
 /// Energy breakdown at a configuration.
 struct EnergyParts {
+  ///@{
+  /// [energy] The total and its parts: stretching, bending, twisting (0 in the
+  /// twist-free model), ω times the contact barrier, the planarity slab (0
+  /// without one); total = stretch + bend + twist + contact + slab.
   double total = 0.0, stretch = 0.0, bend = 0.0, twist = 0.0, contact = 0.0, slab = 0.0;
+  ///@}
 };
 
+/// What relax() returns: the equilibrium, the solver's reports of every
+/// phase, the energy's parts, the contacts, twist, writhe and link, and the
+/// check of the knot type.
 struct RelaxResult {
   Points positions;                 ///< n by 3 equilibrium
   VecX theta;                       ///< material angles (n; zeros for the fast path)
@@ -165,13 +181,17 @@ struct RelaxResult {
   /// Multilevel: the coarse levels solved, coarsest first: their vertex
   /// counts and each level's phases summed (RelaxResult::all_phases()).
   std::vector<int> coarse_vertices;
-  std::vector<NewtonReport> coarse_reports;
+  std::vector<NewtonReport> coarse_reports;  ///< Multilevel: each coarse level's phases summed, coarsest first
   EnergyParts energy;               ///< at the result
   std::optional<EnergyParts> slab_energy;   ///< at the end of the slab phase
   int contacts = 0;                 ///< active contact pairs at the result
   double min_distance = 0.0;        ///< [length] smallest non-adjacent edge distance at the result
+  ///@{
+  /// [1] Lk, Tw and Wr of the result (Lk = Tw + Wr; Tw = 0 in the twist-free
+  /// model).
   double link = 0.0, twist = 0.0, writhe = 0.0;
-  bool alexander_preserved = true;
+  ///@}
+  bool alexander_preserved = true;        ///< the result's Alexander polynomial equals the input's
   AlexanderPolynomial alexander;          ///< of the input
   AlexanderPolynomial result_alexander;   ///< of the result
   std::optional<double> smallest_eigenvalue;  ///< of H without rigid modes, when asked
@@ -184,8 +204,8 @@ struct RelaxResult {
   /// final phase (`report`).
   NewtonReport all_phases() const;
 
-  bool converged() const;
-  bool stable() const;
+  bool converged() const;  ///< The last phase converged, stable or (stop_at_critical_point) unstable.
+  bool stable() const;     ///< The last phase converged to a stable equilibrium.
   /// The status as reported: the solver status, or "topology-changed" when the
   /// Alexander polynomial differs (an error, never a silent result).
   std::string status() const;

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// The options of `knots relax` as a user gives them (docs/cli.md): the
 /// command-line options, which are also the Python module's relax() keyword
 /// arguments (snake_case of the option names), turned into RelaxOptions in
@@ -12,6 +13,8 @@
 
 namespace ek {
 
+/// The options of `knots relax` (and the Python module's relax()) as given,
+/// before options() turns them into RelaxOptions.
 struct RelaxRequest {
   std::optional<double> link;          ///< [1] --link: prescribed Lk = Tw + Wr (full model, Θ fixed); none: Θ free
   std::optional<double> planar;        ///< [length] --planar H: keep every vertex in the slab |z| < H

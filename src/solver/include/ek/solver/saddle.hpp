@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Index-1 saddle points and minimum energy paths between stable states
 /// (paper Section 8.5, "transitions between stable states": the paper names
 /// minimum energy paths as the next step; this is ours).
@@ -64,6 +65,7 @@ enum class SaddleStatus {
 };
 std::string to_string(SaddleStatus status);  ///< "converged", "max-iterations", "stalled", "left-basin", "degenerate"
 
+/// The tolerance, trust region, eigen-solves and trace of search_saddle().
 struct SaddleSearchOptions {
   double gradient_tolerance = 1e-8;  ///< [energy/length] converged when ||g||₂ <= this
   int max_iterations = 400;          ///< [1] iterations (each one eigen-solve and one LDLᵀ)
@@ -95,17 +97,19 @@ struct SaddleIteration {
   bool accepted = false;       ///< the step was taken
 };
 
+/// What search_saddle() returns: the last iterate, its energy, gradient and
+/// followed mode, and how the search ended.
 struct SaddleSearchResult {
-  SaddleStatus status = SaddleStatus::MaxIterations;
+  SaddleStatus status = SaddleStatus::MaxIterations;  ///< How the search ended.
   VecX x;                      ///< the last iterate (the saddle when converged)
   double energy = 0.0;         ///< [energy] at x
   double gradient_norm = 0.0;  ///< [energy/length] ||g||₂ at x
   double eigenvalue = 0.0;     ///< [energy/length²] λ of the followed mode at x
   VecX mode;                   ///< the followed mode at x (unit; dofs)
-  int iterations = 0;
+  int iterations = 0;          ///< [1] iterations taken
   int rejected = 0;            ///< steps rejected by the trust-region test
   double seconds = 0.0;        ///< [s]
-  std::vector<SaddleIteration> trace;
+  std::vector<SaddleIteration> trace;  ///< One record per iteration (SaddleSearchOptions::record_trace).
 };
 
 /// Searches an index-1 saddle from the objective's current dofs x₀ (a stable
@@ -138,26 +142,31 @@ inline constexpr int kDenseModes = 64;
 /// The most eigenpairs lowest_modes() computes for `dofs` and `rigid` modes.
 int max_modes(int dofs, int rigid);
 
+/// The lowest eigenpairs of P H P that lowest_modes() computes.
+struct LowestModes {
+  bool converged = false;      ///< the pairs were computed (else values and vectors are empty)
+  VecX values;                 ///< [energy/length²] ascending, `count` of them
+  Eigen::MatrixXd vectors;     ///< dofs by count, unit columns
+  double tau = 0.0;            ///< the shift τ used
+};
 /// The `count` lowest eigenpairs of P H P for the upper triangle `upper` and
 /// rigid modes Q (dofs by k, orthonormal; may be empty), with a shift-invert
 /// around τ <= `guess` (lowered by `scale`, 4·scale, ... until H − τI
-/// factorises; `scale` > 0). Ascending.
-struct LowestModes {
-  bool converged = false;
-  VecX values;
-  Eigen::MatrixXd vectors;
-  double tau = 0.0;            ///< the shift τ used
-};
+/// factorises; `scale` > 0). Ascending. Up to kDenseModes dofs computed
+/// densely. std::invalid_argument unless 1 <= count <= max_modes() and
+/// scale > 0.
 LowestModes lowest_modes(const Eigen::SparseMatrix<double, Eigen::ColMajor, int>& upper, const Eigen::MatrixXd& Q,
                          int count, double guess, double scale, double tolerance = 1e-10);
 
-/// Newton's method from the objective's current dofs with every accepted
-/// iterate recorded (the images of a descent path).
+/// The images of a descent path, as descend() records them.
 struct Descent {
-  NewtonReport report;
+  NewtonReport report;           ///< of the Newton solve
   std::vector<VecX> images;      ///< the start, then every accepted iterate (the last: the result)
   std::vector<double> energies;  ///< [energy] of each image
 };
+/// Newton's method from the objective's current dofs with every accepted
+/// iterate recorded (the images of a descent path). Leaves the objective at
+/// the result.
 Descent descend(Objective& objective, const NewtonOptions& options);
 
 /// The knot model of relax() for the direct method at one resolution: the
@@ -171,12 +180,12 @@ class KnotSystem {
   /// full_model, max_iterations, newton); the slab is not allowed.
   /// InputError for a curve or options that relax() refuses.
   KnotSystem(const Points& x, const VecX& rest, const RelaxOptions& options);
-  ~KnotSystem();
-  KnotSystem(const KnotSystem&) = delete;
-  KnotSystem& operator=(const KnotSystem&) = delete;
+  ~KnotSystem();                                      ///< Releases the rod, the contact and the objective.
+  KnotSystem(const KnotSystem&) = delete;             ///< Not copyable.
+  KnotSystem& operator=(const KnotSystem&) = delete;  ///< Not copyable.
 
-  Objective& objective();
-  ElasticRod& rod();
+  Objective& objective();  ///< E_rod + ω E_contact over the rod's dofs (owned by the system).
+  ElasticRod& rod();       ///< The rod (owned by the system); its dofs are the objective's.
   /// The Newton options of relax() for this model (tolerance, λ_min, cap).
   const NewtonOptions& newton() const { return newton_; }
   double tolerance() const { return newton_.gradient_tolerance; }  ///< [energy/length]

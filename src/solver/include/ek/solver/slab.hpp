@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Planarity slab: a barrier that keeps every vertex between the planes
 /// z = -h and z = +h (used to flatten multi-covered circles for jumping knots,
 /// paper Section 8.3, "relax under the planarity slab").
@@ -14,18 +15,21 @@
 
 namespace ek {
 
+/// The slab's thickness and barrier (E_slab above).
 struct SlabOptions {
   double half_thickness = 0.5;  ///< [length] h: vertices stay in |z| < h
   double activation = 0.5;      ///< [1] the barrier acts within activation·h of a plane
   double stiffness = 1.0;       ///< [energy] κ
   double separation = 0.1;      ///< [1] max_step keeps at least this fraction of the current distance to a plane
-  void validate() const;
+  void validate() const;        ///< std::invalid_argument unless h > 0, activation ∈ (0, 1], κ > 0, separation ∈ (0, 1)
 };
 
+/// The barrier E_slab that keeps every vertex in |z| < h, with its gradient,
+/// Hessian and step bound.
 class PlanaritySlab {
  public:
-  explicit PlanaritySlab(SlabOptions options);
-  const SlabOptions& options() const { return o_; }
+  explicit PlanaritySlab(SlabOptions options);       ///< Validates `options` (SlabOptions::validate()).
+  const SlabOptions& options() const { return o_; }  ///< The options as given.
   /// +infinity when a vertex is on or outside a plane.
   double energy(const Points& x) const;
   /// Gradient with respect to the positions (3n).

@@ -1,17 +1,22 @@
 #pragma once
+/// \file
 /// Newton restricted to the curves with a p-fold rotational symmetry (paper
-/// Section 8.4, Fig. 16: the periodic braids' states "with p-fold symmetry").
+/// Section 8.4, Fig.\ 16: the periodic braids' states "with p-fold symmetry").
 ///
 /// A closed curve of n = p·m vertices is cyclically symmetric when a rotation
 /// R by `angle` about an axis through c carries every vertex m places along
 /// the curve:
 ///
+/// ~~~{.unparsed}
 ///   x_{i+m} = c + R (x_i − c)   (indices mod n),   angle = 2πk/p, gcd(k, p) = 1.
+/// ~~~
 ///
 /// The symmetric curves form a linear subspace, parameterised by the
 /// fundamental vertices y = (x_0 … x_{m−1}) (3m dofs):
 ///
+/// ~~~{.unparsed}
 ///   x = S y + b,   x_{i+tm} = R^t y_i + (I − R^t) c   (t = 0 … p−1).
+/// ~~~
 ///
 /// E is invariant under the symmetry, so by the principle of symmetric
 /// criticality (Palais 1979) a critical point of E(S y + b) over y is a
@@ -89,7 +94,7 @@ class SymmetricObjective : public Objective {
 
   /// The full dofs S y + b of reduced dofs y.
   VecX full_dofs(const VecX& y) const { return S_ * y + b_; }
-  const CyclicSymmetry& symmetry() const { return symmetry_; }
+  const CyclicSymmetry& symmetry() const { return symmetry_; }  ///< The symmetry of the subspace.
 
  private:
   Objective& full_;
@@ -123,8 +128,8 @@ struct CriticalPointOptions {
 /// "converged" whatever the index (solve_critical_point() does not test it),
 /// MaxIterations or Stalled.
 struct CriticalPointReport {
-  SolverStatus status = SolverStatus::MaxIterations;
-  int iterations = 0;
+  SolverStatus status = SolverStatus::MaxIterations;  ///< ConvergedUnstable (converged), MaxIterations or Stalled
+  int iterations = 0;          ///< [1] Newton–Raphson iterations taken
   double energy = 0.0;         ///< [energy]
   double gradient_norm = 0.0;  ///< [energy/length] ||g||₂ of the objective's dofs
   double seconds = 0.0;        ///< [s]
@@ -144,6 +149,8 @@ enum class SymmetricSolve {
 };
 std::string to_string(SymmetricSolve solve);          ///< "minimize", "root"
 
+/// The model and the solve of find_symmetric_critical_point() and
+/// descend_symmetric().
 struct SymmetricSearchOptions {
   /// The model (twist-free only: no link, no full model, no slab): material,
   /// d̂, ω, tolerance, iteration cap and Newton options as for relax().
@@ -193,13 +200,12 @@ struct SymmetricCriticalPoint {
   /// rigid modes projected out. Complete when `index_complete`; otherwise a
   /// lower bound (every computed eigenvalue was negative).
   int index = 0;
-  bool index_complete = false;
+  bool index_complete = false;        ///< some computed eigenvalue was non-negative: `index` is the whole index
   int near_zero = 0;                  ///< [1] eigenvalues within ±threshold
   double threshold = 0.0;             ///< [energy/length²]
   /// The lowest eigenpairs, ascending: every negative one and the lowest
   /// non-negative ones computed with them.
   std::vector<SymmetricMode> modes;
-  /// The lowest eigenvalue restricted to the symmetric subspace's directions
   /// The index within the subspace: the negative eigenvalues of the
   /// restricted Hessian Sᵀ H S (symmetric rigid modes projected out), below
   /// −p·threshold. 0: the point is a minimum within the subspace, so every

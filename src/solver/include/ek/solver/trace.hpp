@@ -1,8 +1,10 @@
 #pragma once
+/// \file
 /// The Newton solver's iteration trace (NewtonOptions::record_trace) as CSV,
 /// one row per IterationRecord (newton.hpp), for `knots relax --trace` and
 /// the solver benchmarks. Columns, in this order:
 ///
+/// ~~~{.unparsed}
 ///   phase         index of the phase (minimize() call)
 ///   phase_name    its name (RelaxResult::phases), "" when not given
 ///   iteration     iterations taken before this one, in the phase
@@ -20,6 +22,7 @@
 ///   step          [1] accepted step fraction (0: none)
 ///   line_search_trials, active_pairs
 ///   seconds       [s] wall time of the iteration
+/// ~~~
 #include <array>
 #include <ostream>
 #include <string>
@@ -47,10 +50,14 @@ struct TraceSummary {
   int short_steps = 0;            ///< accepted step t < 1/64 (cut by the line search or the collision bound)
   int collision_limited = 0;      ///< collision-free bound < 1
   int exact_iterations = 0;       ///< the exact Hessian's
+  ///@{
+  /// Sums over the records: numeric factorisations (failed included), failed
+  /// factorisations, and iterations whose Hessian pattern changed.
   int factorizations = 0, failed_factorizations = 0, pattern_changes = 0;
+  ///@}
   double seconds = 0.0;           ///< [s] summed iteration time
   double seconds_exact = 0.0;     ///< [s] of it in iterations with the exact Hessian
-  void add(const TraceSummary& other);
+  void add(const TraceSummary& other);  ///< Adds `other`'s counts and times (summaries of several runs).
 };
 
 /// Summarises a trace (every phase; excess energies per phase).

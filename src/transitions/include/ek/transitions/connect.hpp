@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Joining two states of a transition graph by a chain of verified saddles
 /// (paper Section 8.5: the transitions between stable states and the
 /// barriers separating them are left open there).
@@ -17,6 +18,7 @@
 /// more often, so the route prefers several short hops through
 /// intermediate minima to one long jump. Here:
 ///
+/// ~~~{.unparsed}
 ///   while minimax_path(g, a, b) is nullopt and attempts < max_searches:
 ///     weights on the complete graph of g's states: 0 for u, v joined by an
 ///       inter-state edge (either direction; an edge from == to joins two
@@ -35,6 +37,7 @@
 ///     add_pair(g, u, v, ...): its verified saddle joins u and v, and its
 ///     other saddles join the states their minima match (at `threshold`),
 ///     new minima become new states of g (and candidates for later links).
+/// ~~~
 ///
 /// The loop also ends when no path with an untried link is left
 /// (Exhausted). When a and b are joined, the chain is minimax_path(g, a, b)
@@ -65,6 +68,8 @@
 
 namespace ek {
 
+/// The search budget and the double-ended searches' options of
+/// connect_states().
 struct ConnectOptions {
   int max_searches = 6;             ///< [1] double-ended searches at most (>= 1)
   /// The double-ended searches' options (the model is its saddle.relax).
@@ -74,7 +79,10 @@ struct ConnectOptions {
 
 /// One double-ended search of connect_states().
 struct ConnectAttempt {
-  int u = -1, v = -1;               ///< states searched from and towards
+  ///@{
+  /// States searched from (u) and towards (v).
+  int u = -1, v = -1;
+  ///@}
   double distance = 0.0;            ///< [length] aligned RMS vertex distance of u and v
   SearchStatus status;              ///< transition_search()'s, or Refused (search_pair())
   bool reached = false;             ///< the steered chain reached v
@@ -84,6 +92,8 @@ struct ConnectAttempt {
   double seconds = 0.0;             ///< [s]
 };
 
+/// What connect_states() returns: whether a chain of verified saddles joins the
+/// two states, its barriers, and every search it ran.
 struct ConnectResult {
   bool connected = false;           ///< a chain of verified saddles joins a and b
   /// Connected, Budget (max_searches spent), Exhausted (no untried pair)

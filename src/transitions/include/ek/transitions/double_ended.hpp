@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Double-ended search for a transition between two known, distinct stable
 /// states A and B of an elastic knot (paper Section 8.5: "we currently do not
 /// have the means to find the transition between such states, nor quantify
@@ -88,6 +89,8 @@
 
 namespace ek {
 
+/// The model, the steering stages, the chain and the seeds of
+/// transition_search() (see the file's description).
 struct TransitionSearchOptions {
   /// The model and the checks of the saddle (relax, search, displacement,
   /// max_images, link_tolerance, start_gradient_factor, max_rise_factor:
@@ -108,7 +111,8 @@ struct TransitionSearchOptions {
   /// [1] iterations of each seed's saddle search (replaces saddle.search.max_iterations:
   /// a seed is no equilibrium, and the searches from it take longer than from a state)
   int search_iterations = 1500;
-  int bisections = 30;              ///< [1] halvings of the chain step that crosses A's basin boundary (0: no boundary seed)
+  /// [1] halvings of the chain step that crosses A's basin boundary (0: no boundary seed)
+  int bisections = 30;
   int tracking_rounds = 6;          ///< [1] edge-tracking rounds along the boundary (0: none)
   int tracking_steps = 2;           ///< [1] Newton iterations of both points per round
   int tracking_bisections = 12;     ///< [1] halvings per round
@@ -129,7 +133,10 @@ struct TransitionSearch {
   int stages = 0;                    ///< [1] steering stages run
   double final_stiffness = 0.0;      ///< [energy/length²] k of the last stage
   double reached_similarity = 0.0;   ///< [1] of the chain's last image to B
-  Points a, b;                       ///< n by 3: A, and B aligned to A (both polished)
+  ///@{
+  /// n by 3: A, and B aligned to A (both polished).
+  Points a, b;
+  ///@}
   std::vector<Points> chain;         ///< images from A (first) to the chain's end (B when reached)
   std::vector<double> chain_energies;  ///< [energy] E of the images
   bool alexander_preserved = true;   ///< on every chain image

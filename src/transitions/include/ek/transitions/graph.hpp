@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// The transition graph of a knot's stable states (paper Section 8.5):
 /// nodes are states with their energies (the data set's clusters at a cut,
 /// represented by their lowest-energy member, and minima that the descents
@@ -22,6 +23,8 @@
 
 namespace ek {
 
+/// A node of the transition graph: a stable state of the knot (see the file's
+/// description).
 struct TransitionState {
   int cluster = -1;        ///< cluster rank at the cut (-1: a state the data set does not have)
   int equilibrium = -1;    ///< the representative's row in the data set (-1: new)
@@ -40,12 +43,15 @@ struct StateSearches {
 
 /// One double-ended search between two states (its summary).
 struct PairSearch {
-  int a = -1, b = -1;                  ///< states
+  ///@{
+  /// The two states (indices in TransitionGraph::states), A and B.
+  int a = -1, b = -1;
+  ///@}
   SearchStatus status;                 ///< transition_search()'s, or Refused (search_pair())
   std::vector<SearchStatus> seed_statuses;  ///< each seed search's status, in order
   bool reached = false;                ///< the steered chain reached B
-  bool verified = false;
-  int stages = 0;                      ///< [1]
+  bool verified = false;               ///< status is Verified
+  int stages = 0;                      ///< [1] steering stages run
   double path_barrier = 0.0;           ///< [energy] highest chain image − E_A (when reached)
   double reached_similarity = 0.0;     ///< [1] chain end to B
   double saddle_energy = 0.0;          ///< [energy] the seed's search result (0 when none ran)
@@ -53,14 +59,19 @@ struct PairSearch {
   double seconds = 0.0;                ///< [s]
 };
 
+/// A verified saddle of the graph, with the minimum energy path through it.
 struct TransitionSaddle {
   double energy = 0.0;               ///< [energy]
   double negative_eigenvalue = 0.0;  ///< [energy/length²]
   double second_eigenvalue = 0.0;    ///< [energy/length²]
   int index = 1;                     ///< [1]
   double gradient_norm = 0.0;        ///< [energy/length]
-  int from = -1, to = -1;            ///< states (from: searched, or A; to: the other minimum's, or B)
-  double energy_from = 0.0;          ///< [energy] the minimum the descent on the `from` side reached (single-ended: the state)
+  ///@{
+  /// States (from: searched, or A; to: the other minimum's, or B).
+  int from = -1, to = -1;
+  ///@}
+  /// [energy] the minimum the descent on the `from` side reached (single-ended: the state)
+  double energy_from = 0.0;
   double energy_to = 0.0;            ///< [energy] the minimum the descent on the `to` side reached
   bool double_ended = false;         ///< found by a double-ended search
   Points positions;                  ///< n by 3
@@ -69,8 +80,14 @@ struct TransitionSaddle {
   int saddle_image = 0;              ///< the saddle's position in `path`
 };
 
+/// An edge of the graph: two states joined through a verified saddle (equal
+/// when both descents reach the same state).
 struct TransitionEdge {
+  ///@{
+  /// The states joined (indices in TransitionGraph::states) and the saddle
+  /// (index in TransitionGraph::saddles).
   int from = -1, to = -1, saddle = -1;
+  ///@}
   double energy = 0.0;                 ///< [energy] of the saddle
   double barrier_forward = 0.0;        ///< [energy] E_saddle − the energy of the minimum reached on the `from` side
   double barrier_backward = 0.0;       ///< [energy] E_saddle − the energy of the minimum reached on the `to` side
@@ -79,15 +96,18 @@ struct TransitionEdge {
 /// An edge between two different states.
 inline bool inter_state(const TransitionEdge& e) { return e.from != e.to; }
 
+/// The transition graph of one knot: its states, the verified saddles and the
+/// edges through them, and the searches that found them.
 struct TransitionGraph {
-  std::string knot;
+  std::string knot;                    ///< the knot's name
   double cut = 0.0;                    ///< [1] clustering cut
   double energy_scale = 1.0;           ///< [energy] EI / L
-  std::vector<TransitionState> states;
-  std::vector<TransitionSaddle> saddles;
-  std::vector<TransitionEdge> edges;
+  std::vector<TransitionState> states;   ///< the nodes: the data set's states, then states the descents found
+  std::vector<TransitionSaddle> saddles;  ///< every distinct verified saddle
+  std::vector<TransitionEdge> edges;   ///< one per saddle
+  /// the single-ended searches, one entry per searched state, in the order added
   std::vector<StateSearches> searches;
-  std::vector<PairSearch> pairs;
+  std::vector<PairSearch> pairs;       ///< the double-ended searches, in order
 };
 
 /// Assigns a curve to a state: the index of the most similar state when its

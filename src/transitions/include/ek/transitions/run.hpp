@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// The transition graph of one knot of a data set (`knots transitions`, the
 /// transitions experiment; paper Section 8.5). The representative of every
 /// cluster at the cut (clusters_at_cut(), by increasing energy) is a state;
@@ -22,6 +23,9 @@
 
 namespace ek {
 
+/// What knot_transitions() searches: the cut, the single-ended and
+/// double-ended searches' options and limits, and the progress and checkpoint
+/// callbacks.
 struct TransitionRunOptions {
   double cut = 0.05;              ///< [1] clustering cut of the states (the experiments' cut)
   KnotSaddleOptions saddles;      ///< modes, search options (the model comes from the data set)
@@ -56,7 +60,7 @@ std::vector<std::pair<int, int>> transition_pairs(int states, const TransitionRu
 /// A run's checkpoint: the graph after `states_searched` states' searches and
 /// graph.pairs.size() double-ended searches.
 struct TransitionResume {
-  TransitionGraph graph;
+  TransitionGraph graph;    ///< the graph so far
   int states_searched = 0;  ///< [1]
 };
 

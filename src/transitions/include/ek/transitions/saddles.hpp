@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Verified index-1 saddles of an elastic knot next to one of its stable
 /// states, and the minimum energy paths through them (paper Section 8.5:
 /// "we currently do not have the means to find the transition between such
@@ -40,6 +41,8 @@
 
 namespace ek {
 
+/// The model, the searches and the checks of the single-ended saddle searches
+/// from a knot's stable state (see the file's description).
 struct KnotSaddleOptions {
   /// The model (material, contact, tolerance, link); relaxations use its
   /// direct method (with_method(relax, "hybrid")). No slab.
@@ -76,7 +79,7 @@ struct SaddleMinimum {
   double energy = 0.0;           ///< [energy]
   double gradient_norm = 0.0;    ///< [energy/length]
   double start_similarity = 0.0; ///< [1] to the start x₀
-  int iterations = 0;
+  int iterations = 0;            ///< [1] Newton iterations of the descent
   std::vector<Points> images;    ///< from the saddle (first) down to the minimum (last)
   std::vector<double> energies;  ///< [energy] of the images
   bool alexander_preserved = true;  ///< on every image
@@ -123,7 +126,7 @@ struct SaddleStart {
   double lambda_min = 0.0;       ///< [energy/length²] straight rod's, for the shift ε·λ_min
   VecX mode_eigenvalues;         ///< [energy/length²] of the `modes` softest non-rigid modes (ascending, > 0)
   Eigen::MatrixXd modes;         ///< dofs by `modes`: those modes (unit columns)
-  AlexanderPolynomial alexander;
+  AlexanderPolynomial alexander;  ///< of the start
   double energy_scale = 0.0;     ///< [energy] EI / L, L the total rest length
 };
 
@@ -137,6 +140,8 @@ struct PointCheck {
   double energy = 0.0;           ///< [energy]
   HessianIndex index;            ///< hessian_index(objective, count, threshold)
 };
+/// The check of the curve `x` (n by 3, rest lengths `rest`) in the model
+/// `model`, with the `count` lowest eigenvalues (see PointCheck).
 PointCheck check_point(const Points& x, const VecX& rest, const RelaxOptions& model, int count = 2);
 
 /// Similarity of two curves (for the start check): the caller provides it

@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// The outcomes of the searches of this module as types. Their texts
 /// (to_string(), from_string()) appear only in files, JSON and CSV: the
 /// transitions file's searches/ and pairs/ columns (transitions_file.hpp),
@@ -46,14 +47,16 @@ struct SearchStatus {
   int index = 0;        ///< [1] K, the negative eigenvalues (outcome Index; else 0)
   std::string reason;   ///< why the input was refused (outcome Refused; else empty)
 
-  SearchStatus() = default;
+  SearchStatus() = default;  ///< NoSeed: no search ran.
   /// An outcome without a parameter (std::invalid_argument for Index and Refused).
   SearchStatus(SearchOutcome outcome);  // NOLINT(google-explicit-constructor): statuses read as their outcome
   static SearchStatus with_index(int negative);   ///< "index-K", K >= 0 (K ≠ 1 for a search)
   static SearchStatus refused(std::string reason);  ///< "refused: <reason>"
-  bool verified() const { return outcome == SearchOutcome::Verified; }
+  bool verified() const { return outcome == SearchOutcome::Verified; }  ///< Whether the outcome is Verified.
 };
+/// Same outcome, index and reason.
 bool operator==(const SearchStatus& a, const SearchStatus& b);
+/// Not the same status.
 inline bool operator!=(const SearchStatus& a, const SearchStatus& b) { return !(a == b); }
 
 /// How one descent from a saddle ended (SaddleMinimum::status): Newton's
@@ -74,9 +77,10 @@ enum class ConnectStatus {
   Exhausted,  ///< "exhausted": no untried pair on a path from a to b
 };
 
+/// The outcome's text ("verified", "index-K", "refused: <reason>", ...).
 std::string to_string(const SearchStatus& status);
-std::string to_string(DescentStatus status);
-std::string to_string(ConnectStatus status);
+std::string to_string(DescentStatus status);  ///< The status's text ("converged-stable", ...).
+std::string to_string(ConnectStatus status);  ///< "connected", "budget" or "exhausted".
 /// A list of statuses as one text, ";" between them ("" for none): the
 /// pairs' seed_statuses column (a seed's status is never "refused").
 std::string to_string(const std::vector<SearchStatus>& list);
@@ -85,12 +89,17 @@ std::string to_string(const std::vector<SearchStatus>& list);
 /// for any other text.
 template <class T>
 T from_string(const std::string& text);
+/// The SearchStatus of a text of to_string(const SearchStatus&).
 template <>
 SearchStatus from_string<SearchStatus>(const std::string& text);
+/// The DescentStatus of a text of to_string(DescentStatus).
 template <>
 DescentStatus from_string<DescentStatus>(const std::string& text);
+/// The ConnectStatus of a text of to_string(ConnectStatus).
 template <>
 ConnectStatus from_string<ConnectStatus>(const std::string& text);
+/// The list of statuses of a text of to_string(const std::vector<SearchStatus>&)
+/// ("" for none).
 template <>
 std::vector<SearchStatus> from_string<std::vector<SearchStatus>>(const std::string& text);
 

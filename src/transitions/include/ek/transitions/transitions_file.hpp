@@ -1,6 +1,8 @@
 #pragma once
+/// \file
 /// The transitions file (HDF5; docs/dataset-format.md, "Transitions file"):
 ///
+/// ~~~{.unparsed}
 ///   /   attributes: format = "elastic-knots-transitions", format_version = 1,
 ///       knot, dataset (the source file), cut, energy_scale [energy] (EI/L),
 ///       options (the search options' text), complete (0/1),
@@ -21,6 +23,7 @@
 ///                status, seed_statuses string [q] (to_string() of the status and of
 ///                the seeds' list), path_barrier, reached_similarity,
 ///                saddle_energy, seconds float64 [q] (double-ended searches)
+/// ~~~
 ///
 /// Every attribute and column is described once, in the tables of
 /// transitions_file.cpp, which the writer and the reader both walk. Written
