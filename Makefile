@@ -17,7 +17,7 @@ CTEST     = cd $(BUILD) && KNOT_TABLE=$(KNOT_TABLE) ctest --output-on-failure -j
         explorer explorer-screenshots serve browser
 
 help:
-	@echo "make test      build, run all tests (unit, parsers, short stress, paper claims at ci scale, Python module, Slurm, sanitizers, fuzz corpus + 20 s per fuzz target)"
+	@echo "make test      build, run all tests (unit, parsers, short stress, paper claims at ci scale, Python module, Slurm, sanitizers, fuzz corpus + 20 s per fuzz target) and the API reference (make docs, no warning)"
 	@echo "make figures   build, run every experiment at SCALE=$(SCALE), write figures/out/*.png|pdf"
 	@echo "make experiment-NAME   run one experiment (NAME: $(PAPER_EXPERIMENTS) $(STUDY_EXPERIMENTS) $(BENCH_EXPERIMENTS))"
 	@echo "make help-experiments  each experiment's inputs and run time per scale (experiments/manifest.json)"
@@ -78,7 +78,7 @@ build: configure
 python: configure
 	cmake --build $(BUILD) -j$(JOBS) --target elastic_knots
 
-test: build fuzz-build
+test: build fuzz-build docs
 	cd $(BUILD)-fuzz && KNOT_TABLE=$(KNOT_TABLE) ctest --output-on-failure -j$(JOBS) -L 'parsers|fuzz'
 	$(CTEST) -LE 'stress-long|sanitize|paper-open'
 

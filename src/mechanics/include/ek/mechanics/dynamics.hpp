@@ -1,4 +1,5 @@
 #pragma once
+/// \file
 /// Knots in time: the same model as relax() (elastic rod, self-contact
 /// barrier, certified collision detection) with inertia, damping, gravity
 /// and friction, integrated by implicit (backward) Euler. Beyond the paper,
@@ -121,6 +122,7 @@ class FrictionTerm : public Potential {
   void add_gradient(Eigen::Ref<VecX> g) const override;
   std::uint64_t hessian_structure() const override;
   void add_hessian(SparseAssembler& A, HessianKind kind) const override;
+  /// The step's frictional contacts.
   const std::vector<FrictionContact>& contacts() const { return contacts_; }
 
  private:
@@ -130,6 +132,8 @@ class FrictionTerm : public Potential {
   std::vector<FrictionContact> contacts_;
 };
 
+/// How simulate() integrates: the model, the wire's density, the step, the
+/// forces, the envelope, the frames and when the run counts as at rest.
 struct DynamicsOptions {
   /// The model as for relax(): material, d̂, ω, the Newton tolerance and
   /// iteration cap of each step, the link (full model with Θ fixed); its
@@ -166,6 +170,7 @@ struct DynamicsFrame {
   int newton_iterations = 0;         ///< [1] of the step that ended here (0 at t = 0)
 };
 
+/// What simulate() did: its status, frames and end state.
 struct DynamicsResult {
   /// "rest" (came to rest), "duration" (the time ran out), "step-failed"
   /// (a step's Newton solve did not converge: the run ends at the last
@@ -184,7 +189,7 @@ struct DynamicsResult {
   int steps = 0;                     ///< [1]
   int newton_iterations = 0;         ///< [1] over all steps
   std::string failed_status;         ///< the solver status of a failed step
-  bool alexander_preserved = true;
+  bool alexander_preserved = true;   ///< the end's Alexander polynomial is the start's
   std::string model;                 ///< "twist-free", "free-theta" or "fixed-link"
 };
 
