@@ -12,7 +12,7 @@
 //   ci:      12a_1019 (Fig. 13), 4 samples for the target
 //   default: every knot with 3..10 crossings and 12a_1019, 6 samples each
 //   paper:   every knot with up to 12 crossings, 10 samples each
-// Writes jumping.csv, curves/<knot>_{flat,final,target}.obj, summary.json
+// Writes jumping.csv, curves/<knot>_{coil,flat,final,target}.obj, summary.json
 // (docs/results.md).
 #include <algorithm>
 #include <cmath>
@@ -104,6 +104,7 @@ Outcome jump(const Args& a, const KnotRecord& k, int samples) {
   out.tested = true;
   out.jumps = flat.stable() && r.stable() && r.alexander_preserved && flat.alexander_preserved &&
               final_td >= kJumpThreedim && r.energy.total < flat.energy.total;
+  write_curve(a.out + "/curves/" + k.name + "_coil.obj", coil);  // its edges are the rest lengths
   write_curve(a.out + "/curves/" + k.name + "_flat.obj", flat.positions);
   write_curve(a.out + "/curves/" + k.name + "_final.obj", r.positions);
   write_curve(a.out + "/curves/" + k.name + "_target.obj", target->positions);

@@ -10,6 +10,7 @@
 #include "filters_summary.hpp"
 #include "generalization_summary.hpp"
 #include "hausdorff_summary.hpp"
+#include "jumping_dynamics_summary.hpp"
 #include "jumping_knots_summary.hpp"
 #include "loads_summary.hpp"
 #include "milnor_summary.hpp"
@@ -170,6 +171,14 @@ TEST(Summaries, OtherSummariesRoundTrip) {
   k.radius = 0.2;
   EXPECT_EQ(round_trip(k).jumping.at(1), "12a_1019");
   EXPECT_EQ(round_trip(k).radius, 0.2);
+  JumpingDynamicsSummary jd;
+  jd.mu_grid = {0.0, 4.0};
+  jd.brackets = {{"12a_1019", 0.0, 4.0}, {"4_1", std::nullopt, 0.5}};
+  EXPECT_EQ(round_trip(jd).brackets.at(1).mu_jumps, std::nullopt);
+  EXPECT_DOUBLE_EQ(*round_trip(jd).brackets.at(1).mu_flat, 0.5);
+  EXPECT_FALSE(round_trip(jd).step_check.has_value());
+  jd.step_check = StepCheck{"12a_1019", 0.5, 0.99, 2600.0, 2625.0};
+  EXPECT_DOUBLE_EQ(round_trip(jd).step_check->similarity, 0.99);
   PuzzlesSummary z;
   z.links = {{"7_7", -3.0}};
   z.radius = 0.2;
