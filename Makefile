@@ -13,7 +13,7 @@ CONFIGURE = cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DEK_KNOT_TABLE=$(
             -DPython3_EXECUTABLE=$(PYTHON) $(CMAKE_ARGS)
 CTEST     = cd $(BUILD) && KNOT_TABLE=$(KNOT_TABLE) ctest --output-on-failure -j$(JOBS)
 
-.PHONY: ledger-results ledger-shards stopping-truth help help-experiments deps docs configure build python test unit sanitize fuzz fuzz-build fuzz-test fuzz-seeds stress slurm-test bench figures experiments studies claims paper-open manifest compare-methods clean \
+.PHONY: animation ledger-results ledger-shards stopping-truth help help-experiments deps docs configure build python test unit sanitize fuzz fuzz-build fuzz-test fuzz-seeds stress slurm-test bench figures experiments studies claims paper-open manifest compare-methods clean \
         explorer explorer-screenshots serve browser
 
 help:
@@ -28,6 +28,7 @@ help:
 	@echo "make stopping-truth  both adaptive stopping rules replayed on 30 knots of 500 samples each (docs/results/truth/)"
 	@echo "make ledger-results  Fig. 9, planarity and the sampling summary of the committed ledgers (docs/results/), and their checks"
 	@echo "make compare-methods  the default relaxation method against the direct one (hybrid) on the SCALE data sets"
+	@echo "make animation the jumping knot's release in time as figures/out/anim_jumping_dynamics.gif and .mp4 (runs exp_jumping_dynamics at SCALE if needed)"
 	@echo "make explorer  the data-set explorer of SCALE's data set in results/<scale>/explorer/ (docs/explorer.md)"
 	@echo "make serve     serve that data set's explorer on 127.0.0.1:8000"
 	@echo "make explorer-screenshots  screenshots of its views and its load time in headless Chromium"
@@ -217,6 +218,12 @@ paper-open: build
 # (each figure's experiment summary is a prerequisite: experiments/manifest.mk)
 figures/out/%.png: figures/%.py figures/common.py figures/render.py
 	MPLBACKEND=Agg $(PYTHON) $< --results $(RESULTS) --out figures/out
+
+# The jumping knot's frictionless release as an animation (tubes rendered by
+# POV-Ray, assembled by ffmpeg) from SCALE's jumping_dynamics results.
+animation: deps $(RESULTS)/jumping_dynamics/summary.json
+	@mkdir -p figures/out
+	$(PYTHON) figures/anim_jumping_dynamics.py --results $(RESULTS) --out figures/out
 
 # ---- the data-set explorer (docs/explorer.md) ------------------------------------
 EXPLORER_DATASET ?= $(RESULTS)/dataset/dataset.h5

@@ -16,6 +16,7 @@ packages=(
   chromium chromium-driver python3-selenium       # the explorer's browser tests
   python3-dev python3-pybind11 python3-pytest     # the Python module (make python) and its tests
   doxygen                                         # the API reference (make docs)
+  ffmpeg                                          # the animation of a jumping knot (make animation)
 )
 optional=(slurmctld slurmd slurm-client munge)
 
