@@ -38,6 +38,23 @@ TEST(CurveIO, RoundTripIsExact) {
   }
 }
 
+// Vectors (velocities) in a curve file: every row in file order, equal rows
+// and a last row equal to the first kept; bad numbers are one-line errors.
+TEST(CurveIO, VectorsKeepEveryRowInFileOrder) {
+  Points V(4, 3);
+  V << 1, 0, 0, 1, 0, 0, 0, 2, 0, 1, 0, 0;
+  for (const char* ext : {".obj", ".txt"}) {
+    const std::string path = ::testing::TempDir() + "vectors" + ext;
+    write_curve(path, V);
+    EXPECT_EQ(read_vectors(path), V) << ext;
+    std::remove(path.c_str());
+  }
+  const std::string bad = ::testing::TempDir() + "vectors_bad.txt";
+  std::ofstream(bad) << "1 2 3\n4 nan 6\n";
+  fixtures::expect_input_error([&] { read_vectors(bad); }, "vectors_bad.txt:2");
+  std::remove(bad.c_str());
+}
+
 TEST(CurveIO, ObjLineOrderDefinesVertexOrder) {
   const std::string text = "v 0 0 0\nv 1 1 0\nv 1 0 0\nv 0 1 0\nl 1 3\nl 3 2\nl 2 4\nl 4 1\n";
   const Points P = parse_curve(text, "obj", "test");

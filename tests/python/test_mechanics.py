@@ -1,7 +1,8 @@
 """The mechanics binding: load() on the relaxed trefoil pressed between plates
 (one snap, back to its state when released) and pulled apart at two touching
 strands (the work is the energy gained plus the energy the snaps dissipated),
-against the knots command's JSON, files and messages, and in a thread pool."""
+against the knots command's JSON, files and messages, and in a thread pool;
+dynamics() on the trefoil thrown through itself against `knots dynamics`."""
 from concurrent.futures import ThreadPoolExecutor
 import math
 import os
@@ -219,3 +220,55 @@ def test_load_in_a_thread_pool_equals_sequential_loads(state, pressed):
     for s, p in zip(sequential, parallel):
         assert without_times(json_of(s)) == without_times(json_of(p))
         assert np.array_equal(s.path.points, p.path.points)
+
+
+def thrown_velocity(x):
+    """Every vertex towards the centroid and spinning about z (the CLI test's throw)."""
+    c = x.mean(axis=0)
+    v = -0.5 * (x - c)
+    v[:, 0] += -0.5 * (x[:, 1] - c[1])
+    v[:, 1] += 0.5 * (x[:, 0] - c[0])
+    return v
+
+
+def test_dynamics_equals_the_cli(knots, tmp_path, state):
+    """A trefoil thrown through itself with friction: the same run as `knots dynamics`
+    (keys, values, the trajectory's columns and frames), its type kept."""
+    src, vel = str(tmp_path / "state.obj"), str(tmp_path / "velocity.obj")
+    ek.write_curve(src, state)
+    v = thrown_velocity(state)
+    ek.write_curve(vel, v)
+    r = ek.dynamics(state, velocity=v, time_step=0.05, duration=2.0, friction=0.3, frame_every=5)
+    out = tmp_path / "thrown"
+    cli = knots.json("dynamics", src, "--velocity", vel, "--time-step", "0.05", "--duration", "2", "--friction",
+                     "0.3", "--frame-every", "5", "-o", out)
+    expected = {k: v for k, v in cli.items() if k not in ("input", "output")}
+    mine = {k: v for k, v in r.to_dict().items() if k not in ("trajectory", "positions", "velocities")}
+    assert without_times(mine) == without_times(expected)
+    assert list(mine) == list(expected)  # the command's key order
+    assert r.status == "duration" and r.steps == 40 and r.alexander_preserved
+    t = r.trajectory
+    assert t.frames.shape == (9, len(state), 3) and np.array_equal(t.frames[-1], r.positions)
+    assert np.array_equal(r.positions, ek.read_curve(str(out / "end.obj")))
+    rows = np.genfromtxt(out / "trajectory.csv", delimiter=",", names=True)
+    for name in ("time", "kinetic", "elastic", "gravity", "total", "max_speed", "threedim"):
+        assert np.allclose(t[name], rows[name], rtol=1e-11, atol=1e-300), name
+    assert np.array_equal(t.contacts, rows["contacts"]) and np.array_equal(t.newton_iterations, rows["newton_iterations"])
+    assert ek.alexander(r.positions) == ek.alexander(state)
+
+
+def test_dynamics_bad_input_is_a_value_error_with_the_cli_message(knots, tmp_path, state):
+    src = str(tmp_path / "state.obj")
+    ek.write_curve(src, state)
+    out = str(tmp_path / "never")
+    cases = [({"time_step": 0.0}, ["--time-step", "0"]),
+             ({"friction": -1.0}, ["--friction", "-1"]),
+             ({"envelope": 0.1}, ["--envelope", "0.1"]),
+             ({"rest_length": 1.0, "rest_from": state}, ["--rest-length", "1", "--rest-from", src])]
+    for kwargs, cli in cases:
+        with pytest.raises(ValueError) as e:
+            ek.dynamics(state, **kwargs)
+        assert str(e.value) == knots.error("dynamics", src, *cli, "-o", out), kwargs
+    assert not os.path.exists(out)
+    with pytest.raises(ValueError, match="the start velocities must be n finite rows"):
+        ek.dynamics(state, velocity=np.zeros((5, 3)))

@@ -1,7 +1,7 @@
 // knots dynamics STATE [--link LK] [--time-step H] [--duration T] [--density RHO] [--damping G]
 //                [--gravity X,Y,Z] [--friction MU] [--friction-velocity V] [--envelope H]
 //                [--envelope-speed S] [--velocity FILE] [--frame-every K] [--rest-speed V] [--rest-steps K]
-//                [--rest-length L] [--dataset FILE] -o DIR [--overwrite] [--json]
+//                [--rest-length L | --rest-from CURVE] [--dataset FILE] -o DIR [--overwrite] [--json]
 //
 // A knot in time (ek/mechanics/dynamics.hpp): backward Euler with inertia,
 // damping, gravity and friction on the relaxation's model. DIR is written
@@ -31,7 +31,7 @@ namespace {
 namespace fs = std::filesystem;
 
 struct DynamicsCommand {
-  std::string file, out, dataset, velocity;
+  std::string file, out, dataset, velocity, rest_from;
   std::optional<std::string> gravity;
   std::optional<double> link, envelope, rest_length;
   bool json = false, overwrite = false;
@@ -43,7 +43,7 @@ bool parse_dynamics(int argc, char** argv, DynamicsCommand& c) {
   ArgParser args("dynamics",
                  "STATE [--link LK] [--time-step H] [--duration T] [--density RHO] [--damping G] [--gravity X,Y,Z] "
                  "[--friction MU] [--friction-velocity V] [--envelope H] [--envelope-speed S] [--velocity FILE] "
-                 "[--frame-every K] [--rest-speed V] [--rest-steps K] [--rest-length L] [--dataset FILE] -o DIR "
+                 "[--frame-every K] [--rest-speed V] [--rest-steps K] [--rest-length L | --rest-from CURVE] [--dataset FILE] -o DIR "
                  "[--overwrite] [--json]");
   args.positional("STATE", &c.file, "a curve (.obj or .txt): the start, at rest unless --velocity");
   args.option("--link", &c.link, "prescribed link Lk [turns]: the full model with the twist following quasi-statically "
@@ -60,12 +60,15 @@ bool parse_dynamics(int argc, char** argv, DynamicsCommand& c) {
   args.option("--envelope", &c.envelope, "half-thickness H of the envelope |z| < H (the planarity slab's plates; "
                                          "default: none, a flat start is released at t = 0)");
   args.option("--envelope-speed", &o.envelope_speed, "each plate moves away from z = 0 at this speed (default 0: held)");
-  args.option("--velocity", &c.velocity, "a curve file of the start velocities, one row per vertex (default: at rest)");
+  args.option("--velocity", &c.velocity, "the start velocities: a .obj or .txt file with one row per vertex, in "
+                                         "order (equal rows allowed; default: at rest)");
   args.option("--frame-every", &o.frame_every, "a frame every K steps (default 10)");
   args.option("--rest-speed", &o.rest_speed, "at rest once every vertex is slower than this for --rest-steps steps "
                                              "(default 0: run to the end)");
   args.option("--rest-steps", &o.rest_steps, "steps below --rest-speed that count as rest (default 10)");
   args.option("--rest-length", &c.rest_length, "rest length of every edge (default: the state's own edge lengths)");
+  args.option("--rest-from", &c.rest_from, "a curve with as many vertices whose edge lengths are the rest lengths (e.g. "
+                                           "the coil a flat state was relaxed from)");
   args.option("--dataset", &c.dataset, "match the end state to this data set's equilibria");
   args.option("-o,--output", &c.out, "folder for trajectory.csv, the frames and summary.json (must not exist)");
   args.flag("--overwrite", &c.overwrite, "replace an existing output folder (after the run, when complete)");
@@ -93,6 +96,7 @@ void resolve(DynamicsCommand& c) {
   }
   require_input(!c.rest_length || (*c.rest_length > 0.0 && std::isfinite(*c.rest_length)),
                 "--rest-length must be positive");
+  require_input(!c.rest_length || c.rest_from.empty(), "give --rest-length or --rest-from, not both");
   o.validate();
 }
 
@@ -136,8 +140,10 @@ int cmd_dynamics(int argc, char** argv) {
   resolve(c);
   check_output_folder(c.out, c.overwrite);
   const Points state = read_curve(c.file);
-  const Points velocity = c.velocity.empty() ? Points() : read_curve(c.velocity);
-  const VecX rest = c.rest_length ? VecX::Constant(state.rows(), *c.rest_length) : edge_lengths(state);
+  const Points velocity = c.velocity.empty() ? Points() : read_vectors(c.velocity);
+  const VecX rest = c.rest_length          ? VecX::Constant(state.rows(), *c.rest_length)
+                    : c.rest_from.empty() ? edge_lengths(state)
+                                          : edge_lengths(read_curve(c.rest_from));
   std::optional<DatasetReader> reader;
   if (!c.dataset.empty()) reader.emplace(c.dataset);
   const auto t0 = std::chrono::steady_clock::now();

@@ -349,6 +349,15 @@ Points read_curve(const std::string& path) {
   return parse_curve(text, ext, path);
 }
 
+Points read_vectors(const std::string& path) {
+  const auto [text, ext] = read_text(path);
+  const RawCurve raw = parse_raw(text, ext, path);
+  Points V(static_cast<Eigen::Index>(raw.vertices.size()), 3);
+  for (size_t i = 0; i < raw.vertices.size(); ++i) V.row(static_cast<Eigen::Index>(i)) = raw.vertices[i].transpose();
+  if (!V.allFinite()) throw InputError(path + ": non-finite coordinates");
+  return V;
+}
+
 Link read_link(const std::string& path) {
   const auto [text, ext] = read_text(path);
   return parse_link(text, ext, path);

@@ -48,7 +48,7 @@ Result result_from_json(const Json& j, const std::string& kind) {
   return r;
 }
 
-Points curve_arg(const py::handle& array, const std::string& name) {
+Points rows3_arg(const py::handle& array, const std::string& name) {
   const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(array);
   if (!a) throw InputError(name + ": expected an array of shape (n, 3)");
   if (a.ndim() != 2 || a.shape(1) != 3) {
@@ -57,6 +57,12 @@ Points curve_arg(const py::handle& array, const std::string& name) {
     throw InputError(name + ": expected an array of shape (n, 3), got shape (" + shape + ")");
   }
   Points P = Eigen::Map<const Points>(a.data(), a.shape(0), 3);
+  require_input(P.allFinite(), name + ": the array has non-finite entries");
+  return P;
+}
+
+Points curve_arg(const py::handle& array, const std::string& name) {
+  Points P = rows3_arg(array, name);
   validate_closed_curve(P, name);
   return P;
 }

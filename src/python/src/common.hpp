@@ -36,6 +36,9 @@ Result result_from_json(const Json& j, const std::string& kind);
 /// checked as a closed curve (validate_closed_curve: at least 4 vertices,
 /// finite, no zero-length edge); `name` names the argument in messages.
 Points curve_arg(const py::handle& array, const std::string& name);
+/// A finite float array of shape (n, 3) as Points, not checked as a curve
+/// (vectors such as velocities: equal rows allowed).
+Points rows3_arg(const py::handle& array, const std::string& name);
 /// Points as a new float64 numpy array of shape (n, 3).
 py::array_t<double> to_array(const Points& P);
 /// A dense matrix as a new float64 numpy array (rows, cols).

@@ -1,10 +1,13 @@
-// mechanics: a knot under load, its path of stable equilibria and its snaps.
+// mechanics: a knot under load, its path of stable equilibria and its snaps;
+// a knot in time.
+#include <chrono>
 #include <cmath>
 #include <limits>
 
 #include "common.hpp"
 #include "ek/core/errors.hpp"
 #include "ek/dataset/json.hpp"
+#include "ek/analysis/attributes.hpp"
 #include "ek/geometry/polyline.hpp"
 #include "ek/mechanics/json.hpp"
 #include "ek/mechanics/knot_loading.hpp"
@@ -105,9 +108,122 @@ Result load_state(const py::handle& state, const std::string& kind, double to,
   return result;
 }
 
+/// The trajectory's columns (those of trajectory.csv) as numpy arrays, and its frames.
+Result trajectory_result(const DynamicsResult& r, Eigen::Index n) {
+  const auto m = static_cast<py::ssize_t>(r.frames.size());
+  py::array_t<double> time(m), kinetic(m), elastic(m), gravity(m), total(m), max_speed(m), threedim_(m);
+  py::array_t<int> contacts(m), iterations(m);
+  py::array_t<double> frames({m, static_cast<py::ssize_t>(n), py::ssize_t{3}});
+  for (py::ssize_t k = 0; k < m; ++k) {
+    const DynamicsFrame& f = r.frames[static_cast<size_t>(k)];
+    time.mutable_at(k) = f.time;
+    kinetic.mutable_at(k) = f.kinetic;
+    elastic.mutable_at(k) = f.elastic;
+    gravity.mutable_at(k) = f.gravity;
+    total.mutable_at(k) = f.kinetic + f.elastic + f.gravity;
+    max_speed.mutable_at(k) = f.max_speed;
+    contacts.mutable_at(k) = f.contacts;
+    threedim_.mutable_at(k) = threedim(f.positions);
+    iterations.mutable_at(k) = f.newton_iterations;
+    Eigen::Map<Points>(frames.mutable_data(k), n, 3) = f.positions;
+  }
+  Result t{"trajectory", py::dict()};
+  t.fields["time"] = time;
+  t.fields["kinetic"] = kinetic;
+  t.fields["elastic"] = elastic;
+  t.fields["gravity"] = gravity;
+  t.fields["total"] = total;
+  t.fields["max_speed"] = max_speed;
+  t.fields["contacts"] = contacts;
+  t.fields["threedim"] = threedim_;
+  t.fields["newton_iterations"] = iterations;
+  t.fields["frames"] = frames;
+  return t;
+}
+
+Result dynamics_state(const py::handle& state, std::optional<double> link, double time_step, double duration,
+                      double density, double damping, std::optional<std::array<double, 3>> gravity, double friction,
+                      double friction_velocity, std::optional<double> envelope, double envelope_speed,
+                      const py::handle& velocity, int frame_every, double rest_speed, int rest_steps,
+                      std::optional<double> rest_length, const py::handle& rest_from, std::optional<std::string> dataset) {
+  DynamicsOptions o;
+  o.model.link = link;
+  o.time_step = time_step;
+  o.duration = duration;
+  o.density = density;
+  o.damping = damping;
+  if (gravity) o.gravity = Vec3((*gravity)[0], (*gravity)[1], (*gravity)[2]);
+  o.friction = friction;
+  o.friction_velocity = friction_velocity;
+  if (envelope) {
+    o.envelope = SlabOptions();
+    o.envelope->half_thickness = *envelope;
+  }
+  o.envelope_speed = envelope_speed;
+  o.frame_every = frame_every;
+  o.rest_speed = rest_speed;
+  o.rest_steps = rest_steps;
+  require_input(!rest_length || (*rest_length > 0.0 && std::isfinite(*rest_length)), "--rest-length must be positive");
+  require_input(!rest_length || rest_from.is_none(), "give --rest-length or --rest-from, not both");
+  o.validate();
+  const Points P = curve_arg(state, "state");
+  const Points v = velocity.is_none() ? Points() : rows3_arg(velocity, "velocity");
+  const VecX rest = rest_length          ? VecX::Constant(P.rows(), *rest_length)
+                    : rest_from.is_none() ? edge_lengths(P)
+                                          : edge_lengths(curve_arg(rest_from, "rest_from"));
+  std::optional<DatasetReader> reader;
+  if (dataset) reader.emplace(*dataset);
+  DynamicsResult r;
+  Json end_match;
+  double seconds = 0.0;
+  {
+    py::gil_scoped_release release;
+    const auto t0 = std::chrono::steady_clock::now();
+    r = simulate(P, rest, o, v);
+    seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (r.alexander_preserved) end_match = closest_equilibrium_json(reader ? &*reader : nullptr, r.positions);
+  }
+  if (!r.alexander_preserved) throw TopologyError("dynamics: the knot type changed");
+  Result result = result_from_json(dynamics_json(o, r, end_match, seconds), "dynamics");
+  result.fields["positions"] = to_array(r.positions);
+  result.fields["velocities"] = to_array(r.velocities);
+  result.fields["trajectory"] = py::cast(trajectory_result(r, P.rows()));
+  return result;
+}
+
 }  // namespace
 
 void bind_mechanics(py::module_& m) {
+  const DynamicsOptions d;
+  m.def("dynamics", &dynamics_state, py::arg("state"), py::kw_only(), py::arg("link") = py::none(),
+        py::arg("time_step") = d.time_step, py::arg("duration") = d.duration, py::arg("density") = d.density,
+        py::arg("damping") = d.damping, py::arg("gravity") = py::none(), py::arg("friction") = d.friction,
+        py::arg("friction_velocity") = d.friction_velocity, py::arg("envelope") = py::none(),
+        py::arg("envelope_speed") = d.envelope_speed, py::arg("velocity") = py::none(),
+        py::arg("frame_every") = d.frame_every, py::arg("rest_speed") = d.rest_speed,
+        py::arg("rest_steps") = d.rest_steps, py::arg("rest_length") = py::none(), py::arg("rest_from") = py::none(),
+        py::arg("dataset") = py::none(),
+        R"doc(A knot in time (docs/models.md, "Knots in time"), as `knots dynamics`: backward
+Euler from the closed polygon state, (n, 3), at rest or with velocity, (n, 3), on the
+relaxation's model with the wire's lumped mass (density), viscous damping, gravity (3
+floats) and Coulomb friction between touching wires and against the envelope. link: the
+full model with that link fixed (None: twist-free). envelope: the half-thickness H of
+the plates |z| < H holding the state (None: none), moving apart at envelope_speed.
+time_step, duration; frame_every: a frame every that many steps; rest_speed, rest_steps:
+at rest once every vertex is slower than rest_speed for rest_steps steps (0: never).
+rest_length of every edge, or rest_from, (n, 3): a curve whose edges are the rest lengths
+(None: the state's own edge lengths). dataset: the end is matched to its closest
+equilibrium.
+
+Fields: the JSON keys of `knots dynamics` (model, link, time_step, ..., status,
+failed_status, steps, time, rest_time, frames, newton_iterations, max_speed, max_kinetic,
+start_energy, end_energy, start_threedim, end_threedim, max_threedim, dissipated,
+alexander_preserved, end_match, seconds); positions and velocities, (n, 3), at the end;
+trajectory: a Result of arrays, one entry per frame (the columns of trajectory.csv:
+time, kinetic, elastic, gravity, total, max_speed, contacts, threedim, newton_iterations)
+and frames, (frames, n, 3). A change of knot type raises TopologyError. Releases the GIL
+while it computes.)doc");
+
   m.def("load", &load_state, py::arg("state"), py::arg("kind"), py::arg("to"), py::kw_only(),
         py::arg("vertices") = py::none(), py::arg("from_") = py::none(), py::arg("normal") = py::none(),
         py::arg("steps") = KnotLoadOptions{}.steps, py::arg("max_points") = KnotLoadOptions{}.max_points,

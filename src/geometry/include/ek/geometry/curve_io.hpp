@@ -23,6 +23,12 @@ namespace ek {
 /// Reads a closed curve (.obj or .txt). Throws InputError on any problem.
 Points read_curve(const std::string& path);
 
+/// Reads the rows of a curve file as vectors, one per vertex line in file
+/// order (.obj `v` lines, `l` lines ignored; .txt lines), without a curve's
+/// checks: no closing vertex dropped, equal rows allowed (velocities, for
+/// example). Throws InputError for a malformed or non-finite line or no row.
+Points read_vectors(const std::string& path);
+
 /// Writes a closed curve (.obj or .txt, by extension) atomically: the file is
 /// replaced only when completely written. Coordinates are written with 17
 /// significant digits, so reading gives the same doubles back.
