@@ -93,6 +93,21 @@ def test_embed_equals_the_cli(knots, tmp_path):
     assert np.array_equal(c.points, ek.read_curve(str(tmp_path / "c.obj")))
 
 
+def test_embed_of_a_link_equals_the_cli(knots, tmp_path):
+    """A link of the link table: the command's keys and one array per component, as read_link reads them."""
+    for source in ("braid", "pd"):
+        out = str(tmp_path / f"borromean-{source}.obj")
+        cli = knots.json("embed", "borromean", "--from", source, "-n", "240", "-o", out)
+        e = ek.embed("borromean", from_=source, vertices=240, output=out + ".py.obj")
+        assert {k: v for k, v in e.to_dict().items() if k not in ("points", "output")} == {
+            k: v for k, v in cli.items() if k != "output"}
+        assert list(e.to_dict())[:-1] == list(cli)  # the command's key order, points last
+        assert len(e.points) == 3 and sum(len(P) for P in e.points) == e.vertices
+        for P, Q, R in zip(e.points, ek.read_link(out), ek.read_link(out + ".py.obj")):
+            assert np.array_equal(P, Q) and np.array_equal(P, R)
+        assert e.linking_numbers == ek.knot("borromean").linking_numbers
+
+
 def test_sample_equals_the_cli(knots, tmp_path):
     cli = knots.json("sample", "4_1", "--count", "3", "-n", "60", "--seed", "7", "-o", str(tmp_path))
     samples = ek.sample("4_1", count=3, vertices=60, seed=7)

@@ -34,17 +34,7 @@ int write_embedded_link(const LinkEmbedding& e, const std::string& from, const s
   int vertices = 0;
   for (const Points& P : e.components) vertices += static_cast<int>(P.rows());
   if (json) {
-    Json j;
-    j["name"] = name;
-    j["from"] = from;
-    j["components"] = e.components.size();
-    j["vertices"] = vertices;
-    j["edge_length"] = json_number(e.edge_length);
-    j["max_edge_deviation"] = json_number(e.max_edge_deviation);
-    j["linking_numbers"] = integer_matrix_json(e.linking_numbers);
-    j["conway"] = nabla.coefficients;
-    j["output"] = out;
-    print_json(j);
+    print_json(link_embedding_json(name, from, e, nabla, out));
     return 0;
   }
   std::cout << "wrote " << out << ": " << (record ? record->description + ", " : std::string())

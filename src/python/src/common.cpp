@@ -48,7 +48,10 @@ Result result_from_json(const Json& j, const std::string& kind) {
   return r;
 }
 
-Points rows3_arg(const py::handle& array, const std::string& name) {
+namespace {
+
+/// The array of shape (n, 3) as Points, unchecked otherwise.
+Points shaped_rows3(const py::handle& array, const std::string& name) {
   const auto a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(array);
   if (!a) throw InputError(name + ": expected an array of shape (n, 3)");
   if (a.ndim() != 2 || a.shape(1) != 3) {
@@ -56,13 +59,19 @@ Points rows3_arg(const py::handle& array, const std::string& name) {
     for (py::ssize_t k = 0; k < a.ndim(); ++k) shape += (k ? ", " : "") + std::to_string(a.shape(k));
     throw InputError(name + ": expected an array of shape (n, 3), got shape (" + shape + ")");
   }
-  Points P = Eigen::Map<const Points>(a.data(), a.shape(0), 3);
-  require_input(P.allFinite(), name + ": the array has non-finite entries");
+  return Eigen::Map<const Points>(a.data(), a.shape(0), 3);
+}
+
+}  // namespace
+
+Points rows3_arg(const py::handle& array, const std::string& name) {
+  Points P = shaped_rows3(array, name);
+  require_input(P.allFinite(), name + ": the array has entries that are not finite");
   return P;
 }
 
 Points curve_arg(const py::handle& array, const std::string& name) {
-  Points P = rows3_arg(array, name);
+  Points P = shaped_rows3(array, name);
   validate_closed_curve(P, name);
   return P;
 }

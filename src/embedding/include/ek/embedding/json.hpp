@@ -7,6 +7,7 @@
 
 #include "ek/core/json.hpp"
 #include "ek/embedding/embedding.hpp"
+#include "ek/knots/conway.hpp"
 
 namespace ek {
 
@@ -15,5 +16,12 @@ namespace ek {
 /// embedding was verified).
 Json embedding_json(const std::string& name, const Embedding& embedding,
                     const std::optional<std::string>& output = std::nullopt);
+
+/// A link's embedding (`knots embed --json` of a link): name, from, components,
+/// vertices (all components), edge_length, max_edge_deviation,
+/// linking_numbers (m by m), conway (the Conway polynomial of the polygons,
+/// given), output (when given).
+Json link_embedding_json(const std::string& name, const std::string& from, const LinkEmbedding& embedding,
+                         const ConwayPolynomial& conway, const std::optional<std::string>& output = std::nullopt);
 
 }  // namespace ek
