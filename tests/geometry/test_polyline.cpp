@@ -40,6 +40,20 @@ TEST(Polyline, SquareTurningAngles) {
   EXPECT_NEAR(c.distance, 1.0, 1e-15);
 }
 
+// An ellipse with semi-axes 3 and 1 in a rotated plane: the axes in the order
+// of ascending spread are its normal, its minor and its major axis.
+TEST(Polyline, PrincipalAxesOfARotatedEllipse) {
+  const Mat3 R = fixtures::random_rotation(5);
+  Points P(64, 3);
+  for (int i = 0; i < 64; ++i) {
+    const double t = 2 * M_PI * i / 64;
+    P.row(i) = (R * Vec3(3 * std::cos(t), std::sin(t), 0.0) + Vec3(1, -2, 0.5)).transpose();
+  }
+  const Mat3 A = principal_axes(P);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(std::abs(A.col(k).dot(R.col(k == 0 ? 2 : k == 1 ? 1 : 0))), 1.0, 1e-12) << k;
+  EXPECT_NEAR((A.transpose() * A - Mat3::Identity()).norm(), 0.0, 1e-12);
+}
+
 TEST(SegmentDistance, KnownConfigurations) {
   double s, t;
   // crossing at right angles, 1 apart in z

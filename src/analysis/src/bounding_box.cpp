@@ -1,5 +1,7 @@
 #include "ek/analysis/bounding_box.hpp"
 
+#include "ek/geometry/polyline.hpp"
+
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <array>
@@ -154,15 +156,9 @@ void check_points(const Points& P, const char* who) {
   require(P.allFinite(), std::string(who) + ": non-finite coordinates");
 }
 
-Mat3 principal_axes(const Points& P) {
-  const Vec3 c = P.colwise().mean().transpose();
-  Mat3 C = Mat3::Zero();
-  for (Eigen::Index i = 0; i < P.rows(); ++i) {
-    const Vec3 d = P.row(i).transpose() - c;
-    C += d * d.transpose();
-  }
-  Eigen::SelfAdjointEigenSolver<Mat3> es(C);
-  Mat3 A = es.eigenvectors();
+/// The principal axes (geometry's principal_axes), made a proper rotation.
+Mat3 proper_principal_axes(const Points& P) {
+  Mat3 A = principal_axes(P);
   if (A.determinant() < 0.0) A.col(0) *= -1.0;
   return A;
 }
@@ -171,7 +167,7 @@ Mat3 principal_axes(const Points& P) {
 
 OrientedBox pca_bounding_box(const Points& P) {
   check_points(P, "pca_bounding_box");
-  const Mat3 A = principal_axes(P);
+  const Mat3 A = proper_principal_axes(P);
   Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
   for (Eigen::Index i = 0; i < P.rows(); ++i) {
     const Vec3 y = A.transpose() * P.row(i).transpose();
@@ -193,7 +189,7 @@ OrientedBox pca_bounding_box(const Points& P) {
 
 OrientedBox min_volume_bounding_box(const Points& P) {
   check_points(P, "min_volume_bounding_box");
-  const Mat3 A = principal_axes(P);
+  const Mat3 A = proper_principal_axes(P);
   // 1. global sampling: the PCA axes and kBoxDirections Fibonacci directions on
   //    the upper hemisphere (u and -u give the same box)
   struct Sample {

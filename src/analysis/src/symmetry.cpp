@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "ek/core/errors.hpp"
+#include "ek/geometry/polyline.hpp"
 #include "ek/geometry/segment_distance.hpp"
 #include "ek/knots/diagram.hpp"
 
@@ -20,8 +21,6 @@ double wrap(double a, double period) {  // to [-period/2, period/2)
   if (a >= period / 2) a -= period;
   return a;
 }
-
-Vec3 centroid(const Points& P) { return P.colwise().mean().transpose(); }
 
 }  // namespace
 
@@ -56,16 +55,11 @@ SymmetryAxis find_symmetry_axis(const Points& P, int p, const SymmetryAxisOption
   require(o.step > 0.0 && o.max_tilt >= 0.0, "find_symmetry_axis: step must be > 0 and max_tilt >= 0");
   SymmetryAxis out;
   out.center = centroid(P);
-  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-  for (Eigen::Index i = 0; i < P.rows(); ++i) {
-    const Vec3 d = P.row(i).transpose() - out.center;
-    cov += d * d.transpose();
-  }
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> es(cov);
+  const Mat3 axes = principal_axes(P);
   const int k = static_cast<int>(std::lround(o.max_tilt / o.step));
   out.error = 1e300;
   for (int axis = 0; axis < 3; ++axis) {
-    const Vec3 e0 = es.eigenvectors().col(axis), e1 = e0.unitOrthogonal(), e2 = e0.cross(e1);
+    const Vec3 e0 = axes.col(axis), e1 = e0.unitOrthogonal(), e2 = e0.cross(e1);
     for (int i = -k; i <= k; ++i)
       for (int q = -k; q <= k; ++q) {
         const Vec3 ax = (e0 + o.step * i * e1 + o.step * q * e2).normalized();

@@ -1,5 +1,7 @@
 #include "ek/geometry/polyline.hpp"
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -36,6 +38,17 @@ VecX turning_angles(const Points& P) {
 double total_curvature(const Points& P) { return turning_angles(P).sum(); }
 
 Vec3 centroid(const Points& P) { return P.colwise().mean().transpose(); }
+
+Mat3 principal_axes(const Points& P) {
+  require(P.rows() >= 1 && P.allFinite(), "principal_axes: finite points needed");
+  const Vec3 c = centroid(P);
+  Mat3 S = Mat3::Zero();
+  for (Eigen::Index i = 0; i < P.rows(); ++i) {
+    const Vec3 d = P.row(i).transpose() - c;
+    S += d * d.transpose();
+  }
+  return Eigen::SelfAdjointEigenSolver<Mat3>(S).eigenvectors();
+}
 
 Clearance clearance(const Points& P, int min_index_gap) {
   const int n = static_cast<int>(P.rows());

@@ -54,13 +54,6 @@ void KnotLoadOptions::validate() const {
 
 namespace {
 
-/// The start's axis of least extent: the smallest principal axis of its vertices.
-Vec3 least_extent_axis(const Points& P) {
-  const Points C = P.rowwise() - P.colwise().mean();
-  const Eigen::SelfAdjointEigenSolver<Mat3> eig(C.transpose() * C);
-  return eig.eigenvectors().col(0);
-}
-
 /// The load of `o` on the relaxed start `X` (its parameter set to `from`).
 std::unique_ptr<ControlledLoad> make_load(const Points& X, const VecX& rest, const KnotLoadOptions& o,
                                           KnotLoadResult& out, double& from) {
@@ -81,7 +74,7 @@ std::unique_ptr<ControlledLoad> make_load(const Points& X, const VecX& rest, con
     from = o.from.value_or(0.0);
     return std::make_unique<ForceLoad>(i, j, from);
   }
-  out.normal = o.normal ? o.normal->normalized() : least_extent_axis(X);
+  out.normal = o.normal ? o.normal->normalized() : principal_axes(X).col(0);  // the start's axis of least extent
   // centred on the knot's extent along the normal, so that by default both plates touch it at the start
   const Vec3 centroid = X.colwise().mean().transpose();
   const VecX s = (X.rowwise() - centroid.transpose()) * out.normal;

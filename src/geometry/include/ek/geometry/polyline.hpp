@@ -43,4 +43,10 @@ Clearance clearance(const Points& P, int min_index_gap = 2);
 /// Centroid (mean of the vertices).
 Vec3 centroid(const Points& P);
 
+/// The principal axes of the vertices: the unit eigenvectors of their
+/// scatter matrix Σ (x_i − c)(x_i − c)ᵀ about the centroid c, as columns in
+/// the order of ascending spread (column 0: the axis of least extent, the
+/// normal of the best-fitting plane), signs as the eigen-solver gives them.
+Mat3 principal_axes(const Points& P);
+
 }  // namespace ek
