@@ -6,11 +6,14 @@
 // under the slab (with its link Lk_B = Wr_target and the coil's rest lengths)
 // is released at t = 0 and followed in time (ek/mechanics/dynamics.hpp:
 // backward Euler, the wire's inertia, air drag γ, Coulomb friction μ between
-// touching wires) until it comes to rest. Per knot and μ: whether it left
-// the plane (its end 3D-ness), the time to rest, the largest speed, and how
-// its end compares with the static release and the 3D target; then the
-// friction bracket: the largest μ of the grid at which it jumps and the
-// smallest at which it stays flat, halved `bisection` times.
+// touching wires) until it comes to rest or the duration runs out. Per knot
+// and μ: the outcome (jumped: its end is 3D; flat: at rest and planar;
+// between: at rest, neither; moving: neither 3D nor at rest at the end),
+// the time to rest, the largest speed, and how its end compares with the
+// static release and the 3D target; then the friction bracket: the largest
+// μ at which it jumps below the smallest at which it rests flat, halved
+// `bisection` times. The outcome need not be monotone in μ: friction
+// changes the path, and a coil whose contacts open as it rises is not held.
 //   ci:      12a_1019 (Fig. 13) at μ = 0 and 4
 //   default: 12a_1019 and the first 5 other jumping knots of exp_jumping_knots'
 //            table, μ ∈ {0, 0.5, 1, 2, 4}, 2 halvings; the step check (μ = 0 at h/2)
@@ -45,6 +48,10 @@ constexpr double kTimeStep = 1.0;      ///< [time] h: the coil's slowest modes h
 constexpr double kDuration = 6000.0;   ///< [time] the frictionless 12a_1019 rests after about 2,600
 constexpr double kDamping = 0.005;     ///< [1/time] γ: air drag, a decay time 1/γ of 200
 constexpr double kRestSpeed = 1e-4;    ///< [length/time] at rest below it for 10 steps
+/// [length/time] ε_v: slower contacts feel viscous friction. 1e-3 let held
+/// coils creep about 1e-3 per time unit, 6 edge lengths over a run; speeds
+/// in a jump are 0.01 to 0.2.
+constexpr double kFrictionVelocity = 1e-5;
 constexpr int kTrajectoryEvery = 20;   ///< [steps] frames of the trajectories and of frames/
 constexpr const char* kFigureKnot = "12a_1019";
 
@@ -80,9 +87,14 @@ struct Release {
   double mu = 0.0, h = kTimeStep;
   DynamicsResult r;
   double seconds = 0.0;
-  std::string outcome() const {  // "jumped", "flat" or "between" (e.g. still creeping at the end)
+  /// "jumped" (its end is 3D, at rest or still moving), "flat" (at rest and
+  /// planar), "between" (at rest, neither) or "moving" (not 3D and not yet at
+  /// rest when the duration ran out: undecided).
+  std::string outcome() const {
     const double td = threedim(r.positions);
-    return td >= kJumpThreedim ? "jumped" : td < kPlanarThreedim ? "flat" : "between";
+    if (td >= kJumpThreedim) return "jumped";
+    if (r.status != "rest") return "moving";
+    return td < kPlanarThreedim ? "flat" : "between";
   }
 };
 
@@ -93,6 +105,7 @@ Release release(const Coil& c, double mu, double h) {
   o.duration = kDuration;
   o.damping = kDamping;
   o.friction = mu;
+  o.friction_velocity = kFrictionVelocity;
   o.rest_speed = kRestSpeed;
   o.frame_every = std::max(1, static_cast<int>(kTrajectoryEvery * kTimeStep / h));
   Release out{&c, mu, h, {}, 0.0};
@@ -142,7 +155,7 @@ void write_run(const Args& a, const Release& x, Csv& table) {
 }
 
 /// The bracket from a knot's releases: the largest μ that jumped below the
-/// smallest that stayed flat.
+/// smallest at which it rests flat.
 FrictionBracket bracket_of(const Coil& c, const std::vector<Release>& runs) {
   FrictionBracket b;
   b.knot = c.knot;
@@ -187,7 +200,7 @@ int main(int argc, char** argv) {
       for (int s = 0; s < halvings && b.mu_jumps && b.mu_flat; ++s) {
         extra[k].push_back(release(coils[k], 0.5 * (*b.mu_jumps + *b.mu_flat), kTimeStep));
         const std::string o = extra[k].back().outcome();
-        if (o == "between") break;
+        if (o != "jumped" && o != "flat") break;
         (o == "jumped" ? b.mu_jumps : b.mu_flat) = extra[k].back().mu;
       }
     });
@@ -208,7 +221,7 @@ int main(int argc, char** argv) {
     sum.duration = kDuration;
     sum.damping = kDamping;
     sum.density = DynamicsOptions().density;
-    sum.friction_velocity = DynamicsOptions().friction_velocity;
+    sum.friction_velocity = kFrictionVelocity;
     sum.rest_speed = kRestSpeed;
     sum.mu_grid = grid;
     sum.bisection_steps = halvings;

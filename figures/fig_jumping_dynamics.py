@@ -2,8 +2,8 @@
 frictionless release of the figure knot (12a_1019) at six times, from the
 flat coil to rest, as shaded tubes; bottom left, its 3D-ness and kinetic
 energy over time at every friction coefficient of the grid; bottom right,
-each knot's outcome against the friction coefficient μ (jumped, stayed flat,
-between) with its bracket. Reads exp_jumping_dynamics' results only."""
+each knot's outcome against the friction coefficient μ (jumped, rests flat,
+between, still moving at the end) with its bracket. Reads exp_jumping_dynamics' results only."""
 import os
 
 from common import draw_curve, parse_args, plt, read_csv, read_obj, read_summary, save, shared_vmax
@@ -53,7 +53,8 @@ ax.set_title(f"{knot}: 3D-ness over time (dashed: jumped ≥ {s['threedim_thresh
              f"flat < {s['planar_threshold']:g})", fontsize=8)
 
 ax = fig.add_subplot(grid[1, SNAPSHOTS // 2 + 1:])
-marks = {"jumped": ("^", "tab:red"), "flat": ("o", "tab:blue"), "between": ("s", "tab:orange")}
+marks = {"jumped": ("^", "tab:red"), "flat": ("o", "tab:blue"), "between": ("s", "tab:orange"),
+         "moving": ("x", "0.4")}
 knots = s["knots"]
 for r in rows:
     if float(r["time_step"]) != s["time_step"]:

@@ -3,7 +3,7 @@
 // with physical models"): 12a_1019, released from its flat coil with
 // inertia, air drag and no friction, leaves the plane by itself and comes to
 // rest in a 3D state, its knot type and link kept; with enough friction
-// between the touching wires it stays flat. At the default scale the jump's
+// between the touching wires it comes to rest flat. At the default scale the jump's
 // end does not depend on the time step (the same state at h/2).
 #include <gtest/gtest.h>
 

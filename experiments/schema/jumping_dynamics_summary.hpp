@@ -8,11 +8,11 @@
 
 namespace ek::results {
 
-/// One knot's friction bracket: it jumps at mu_jumps and stays flat at mu_flat.
+/// One knot's friction bracket: it jumps at mu_jumps and rests flat at mu_flat.
 struct FrictionBracket {
   std::string knot;
   std::optional<double> mu_jumps;  ///< [1] the largest friction coefficient at which it jumped (null: none)
-  std::optional<double> mu_flat;   ///< [1] the smallest at which it stayed flat (null: none up to the grid's end)
+  std::optional<double> mu_flat;   ///< [1] the smallest at which it came to rest flat (null: none up to the grid's end)
 };
 EK_JSON_FIELDS(FrictionBracket, knot, mu_jumps, mu_flat)
 
