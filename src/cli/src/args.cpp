@@ -1,6 +1,7 @@
 #include "args.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <sstream>
 
@@ -17,6 +18,18 @@ std::vector<double> parse_number_list(const std::string& text, const std::string
     pos = end + 1;
   }
   return out;
+}
+
+Eigen::Vector3d parse_vec3(const std::string& text, const std::string& option) {
+  std::vector<double> v;
+  try {
+    v = parse_number_list(text, option);
+  } catch (const InputError&) {
+    v.clear();
+  }
+  if (v.size() != 3 || !std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2]))
+    throw InputError(option + " expects X,Y,Z, not '" + text + "'");
+  return Eigen::Vector3d(v[0], v[1], v[2]);
 }
 
 ArgParser::ArgParser(std::string command, std::string synopsis)

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "ek/core/parse.hpp"
+#include <Eigen/Core>
 
 namespace ek::cli {
 
@@ -63,5 +64,8 @@ using ek::parse_number;
 /// Parses comma-separated numbers ("1e-3" or "1e-2,1e-1"); an empty item is
 /// not a number. The empty text gives an empty list.
 std::vector<double> parse_number_list(const std::string& text, const std::string& what);
+/// Parses "X,Y,Z" (three finite numbers) given to `option`; InputError
+/// "OPTION expects X,Y,Z, not 'TEXT'" otherwise.
+Eigen::Vector3d parse_vec3(const std::string& text, const std::string& option);
 
 }  // namespace ek::cli

@@ -76,20 +76,10 @@ bool parse_dynamics(int argc, char** argv, DynamicsCommand& c) {
   return args.parse(argc, argv);
 }
 
-/// "X,Y,Z" as a vector.
-Vec3 parse_vector(const std::string& text, const std::string& option) {
-  std::istringstream in(text);
-  Vec3 v;
-  char c1 = 0, c2 = 0;
-  if (!(in >> v(0) >> c1 >> v(1) >> c2 >> v(2)) || c1 != ',' || c2 != ',' || !in.eof() || !v.allFinite())
-    throw InputError(option + " expects X,Y,Z, not '" + text + "'");
-  return v;
-}
-
 void resolve(DynamicsCommand& c) {
   DynamicsOptions& o = c.options;
   o.model.link = c.link;
-  if (c.gravity) o.gravity = parse_vector(*c.gravity, "--gravity");
+  if (c.gravity) o.gravity = parse_vec3(*c.gravity, "--gravity");
   if (c.envelope) {
     o.envelope = SlabOptions();
     o.envelope->half_thickness = *c.envelope;

@@ -71,16 +71,6 @@ std::array<int, 2> parse_pair(const std::string& text, const std::string& option
   return v;
 }
 
-/// "X,Y,Z" as a vector.
-Vec3 parse_vector(const std::string& text) {
-  std::istringstream in(text);
-  Vec3 v;
-  char c1 = 0, c2 = 0;
-  if (!(in >> v(0) >> c1 >> v(1) >> c2 >> v(2)) || c1 != ',' || c2 != ',' || !in.eof())
-    throw InputError("--normal expects X,Y,Z, not '" + text + "'");
-  return v;
-}
-
 /// The options' load from the command line: exactly one of --pull, --plates, --force.
 void resolve_load(LoadCommand& c) {
   const int chosen = (c.pull ? 1 : 0) + (c.plates ? 1 : 0) + (c.force ? 1 : 0);
@@ -96,7 +86,7 @@ void resolve_load(LoadCommand& c) {
     o.kind = LoadKind::Plates;
   }
   require_input(!c.normal || o.kind == LoadKind::Plates, "--normal applies to --plates only");
-  if (c.normal) o.normal = parse_vector(*c.normal);
+  if (c.normal) o.normal = parse_vec3(*c.normal, "--normal");
   require_input(!c.rest_length || (*c.rest_length > 0.0 && std::isfinite(*c.rest_length)),
                 "--rest-length must be positive");
   o.stop_at_snap = !c.go_on;
