@@ -305,6 +305,30 @@ TEST(Dynamics, RingSlidingOnAPlateStopsAtTheCoulombDistance) {
   EXPECT_NEAR(mean_x(r.positions) - mean_x(start), v0 * 10.0, 1e-6);
 }
 
+// The envelope's plates moving apart at speed s: a ring pushed up against the
+// upper plate by gravity follows it, at the distance below the plate
+// z = H + s t where the barrier carries its weight (the reach stays fixed).
+TEST(Dynamics, RingFollowsTheOpeningEnvelope) {
+  const int n = 24;
+  const double g = 1.0, speed = 0.05, duration = 20.0;
+  DynamicsOptions o;
+  const double mass = lumped_masses(VecX::Ones(n), o.density, o.model.material.radius)(0);
+  const Floor f = floor_for(mass, g);  // the distance at which a plate's barrier carries the weight
+  o.envelope = f.plates;
+  o.envelope_speed = speed;
+  o.gravity = Vec3(0, 0, g);  // up, onto the upper plate
+  o.damping = 1.0;            // no bouncing
+  o.time_step = 0.05;
+  o.duration = duration;
+  const double gap = f.z + f.plates.half_thickness;
+  const DynamicsResult r = simulate(ring(n, f.plates.half_thickness - gap), VecX::Ones(n), o);
+  ASSERT_EQ(r.status, "duration") << r.failed_status;
+  // [5% of the distance] the viscous drag γ m s takes 5% of the weight off the barrier (measured 0.0045)
+  const double plate = f.plates.half_thickness + speed * duration;
+  EXPECT_LT(std::abs(r.positions.col(2).mean() - (plate - gap)), 0.05 * gap);
+  EXPECT_GT(r.positions.col(2).mean(), f.plates.half_thickness);  // it rose with the plate
+}
+
 TEST(Dynamics, StrongDampingEndsAtTheStaticEquilibrium) {
   const Points P = fixtures::torus_knot(60, 2, 3, 6.0, 2.5);
   const VecX rest = edge_lengths(P);  // relax()'s rest lengths

@@ -217,11 +217,13 @@ struct Motion {
   InertiaTerm inertia;
   NewtonSolver solver;
 
-  /// The envelope at time t (its plates moved apart by speed·t each).
+  /// The envelope at time t: its plates moved apart by speed·t each, their
+  /// barrier's reach (activation·H at t = 0) unchanged.
   void move_envelope(double t) {
     if (!o.envelope) return;
     SlabOptions s = *o.envelope;
     s.half_thickness += o.envelope_speed * t;
+    s.activation *= o.envelope->half_thickness / s.half_thickness;
     envelope.emplace(s);
   }
 

@@ -149,7 +149,9 @@ struct DynamicsOptions {
   /// The envelope: two plates |z| < h with the slab's barrier (slab.hpp),
   /// none: no plates (a flat state released at t = 0).
   std::optional<SlabOptions> envelope;
-  double envelope_speed = 0.0;       ///< [length/time] each plate moves away from z = 0 at this speed (0: fixed)
+  /// [length/time] each plate moves away from z = 0 at this speed (0:
+  /// fixed); its barrier keeps the reach it had at t = 0
+  double envelope_speed = 0.0;
   int frame_every = 10;              ///< [steps] a frame every this many steps (and the first and last)
   /// [length/time] at rest once every vertex is slower than this for
   /// `rest_steps` consecutive steps (after at least one step); 0: never.
