@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 
 namespace ek::clitest {
 
@@ -37,6 +38,22 @@ std::string temp_dir(const std::string& name) {
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir.string();
+}
+
+std::vector<std::string> lines_of(const std::string& file) {
+  std::ifstream in(file);
+  std::vector<std::string> out;
+  for (std::string line; std::getline(in, line);) out.push_back(line);
+  return out;
+}
+
+std::string relaxed_trefoil(const std::string& dir) {
+  for (const std::string& args : {"embed 3_1 --from braid -n 96 -o " + dir + "/embedded.obj",
+                                  "relax " + dir + "/embedded.obj -o " + dir + "/trefoil.obj"}) {
+    const Result r = run(args);
+    if (r.status != 0) throw std::runtime_error("knots " + args + ": " + r.err);
+  }
+  return dir + "/trefoil.obj";
 }
 
 }  // namespace ek::clitest

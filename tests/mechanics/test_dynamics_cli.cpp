@@ -15,34 +15,16 @@
 #include "ek/geometry/curve_io.hpp"
 #include "ek/knots/alexander.hpp"
 
+using ek::clitest::lines_of;
+using ek::clitest::relaxed_trefoil;
 using ek::clitest::run;
 using ek::clitest::temp_dir;
 
 namespace fs = std::filesystem;
 
-namespace {
-
-/// 3_1 embedded from its braid (96 vertices) and relaxed.
-std::string trefoil(const std::string& dir) {
-  auto r = run("embed 3_1 --from braid -n 96 -o " + dir + "/embedded.obj");
-  EXPECT_EQ(r.status, 0) << r.err;
-  r = run("relax " + dir + "/embedded.obj -o " + dir + "/trefoil.obj");
-  EXPECT_EQ(r.status, 0) << r.err;
-  return dir + "/trefoil.obj";
-}
-
-std::vector<std::string> lines_of(const std::string& file) {
-  std::ifstream in(file);
-  std::vector<std::string> out;
-  for (std::string line; std::getline(in, line);) out.push_back(line);
-  return out;
-}
-
-}  // namespace
-
 TEST(DynamicsCli, ThrownTrefoilKeepsItsTypeAndTheFolderAgreesWithTheSummary) {
   const std::string dir = temp_dir("dynamics_cli_thrown");
-  const std::string state = trefoil(dir);
+  const std::string state = relaxed_trefoil(dir);
   const ek::Points x = ek::read_curve(state);
   ek::Points v(x.rows(), 3);  // every vertex towards the centroid and spinning
   const Eigen::RowVector3d c = x.colwise().mean();
@@ -74,7 +56,7 @@ TEST(DynamicsCli, ThrownTrefoilKeepsItsTypeAndTheFolderAgreesWithTheSummary) {
 
 TEST(DynamicsCli, BadInputIsOneLineAndExitTwo) {
   const std::string dir = temp_dir("dynamics_cli_bad");
-  const std::string state = trefoil(dir);
+  const std::string state = relaxed_trefoil(dir);
   fs::create_directories(dir + "/exists");
   ek::Points lifted(12, 3);  // a ring at z = 1
   for (int i = 0; i < 12; ++i) lifted.row(i) = Eigen::RowVector3d(2 * std::cos(M_PI * i / 6), 2 * std::sin(M_PI * i / 6), 1.0);

@@ -16,34 +16,16 @@
 #include "ek/geometry/curve_io.hpp"
 #include "ek/knots/alexander.hpp"
 
+using ek::clitest::lines_of;
+using ek::clitest::relaxed_trefoil;
 using ek::clitest::run;
 using ek::clitest::temp_dir;
 
 namespace fs = std::filesystem;
 
-namespace {
-
-/// 3_1 embedded from its braid (96 vertices) and relaxed.
-std::string trefoil(const std::string& dir) {
-  auto r = run("embed 3_1 --from braid -n 96 -o " + dir + "/embedded.obj");
-  EXPECT_EQ(r.status, 0) << r.err;
-  r = run("relax " + dir + "/embedded.obj -o " + dir + "/trefoil.obj");
-  EXPECT_EQ(r.status, 0) << r.err;
-  return dir + "/trefoil.obj";
-}
-
-std::vector<std::string> lines_of(const std::string& file) {
-  std::ifstream in(file);
-  std::vector<std::string> out;
-  for (std::string line; std::getline(in, line);) out.push_back(line);
-  return out;
-}
-
-}  // namespace
-
 TEST(LoadCli, PressedTrefoilSnapsAndTheFolderAgreesWithTheSummary) {
   const std::string dir = temp_dir("load_cli_plates");
-  const std::string state = trefoil(dir);
+  const std::string state = relaxed_trefoil(dir);
   const auto r = run("load " + state + " --plates --to 0.4 -o " + dir + "/out --json");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = r.json();
@@ -76,7 +58,7 @@ TEST(LoadCli, PressedTrefoilSnapsAndTheFolderAgreesWithTheSummary) {
 // converged stable trefoil.
 TEST(LoadCli, PullGoesOnAfterEachSnapAndTheWorkBalances) {
   const std::string dir = temp_dir("load_cli_pull");
-  const std::string state = trefoil(dir);
+  const std::string state = relaxed_trefoil(dir);
   const auto r = run("load " + state + " --pull 0,48 --to 30 --go-on -o " + dir + "/out --json");
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = r.json();
@@ -95,7 +77,7 @@ TEST(LoadCli, PullGoesOnAfterEachSnapAndTheWorkBalances) {
 
 TEST(LoadCli, BadInputIsOneLineAndExitTwo) {
   const std::string dir = temp_dir("load_cli_bad");
-  const std::string state = trefoil(dir);
+  const std::string state = relaxed_trefoil(dir);
   fs::create_directories(dir + "/exists");
   for (const std::string& args :
        {"load " + dir + "/missing.obj --plates --to 0.5 -o " + dir + "/o1",  // no such file
@@ -123,7 +105,7 @@ TEST(LoadCli, BadInputIsOneLineAndExitTwo) {
 // the start, which is one line on stderr, exit status 1, nothing written.
 TEST(LoadCli, AStartWithoutEquilibriumIsOneLineAndExitOne) {
   const std::string dir = temp_dir("load_cli_stalled");
-  const std::string state = trefoil(dir);
+  const std::string state = relaxed_trefoil(dir);
   const auto r = run("load " + state + " --plates --from 0.7 --to 0.4 -o " + dir + "/out");
   EXPECT_EQ(r.status, 1) << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
