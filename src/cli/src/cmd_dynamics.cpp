@@ -116,9 +116,7 @@ void write_outputs(const DynamicsCommand& c, const DynamicsResult& r, const Json
     }
     write_curve((tmp / "start.obj").string(), r.frames.front().positions);
     write_curve((tmp / "end.obj").string(), r.positions);
-    AtomicFile f((tmp / "summary.json").string());
-    f.stream() << summary.dump(2) << "\n";
-    f.commit();
+    write_summary_json(tmp, summary);
   });
 }
 
@@ -140,14 +138,9 @@ int cmd_dynamics(int argc, char** argv) {
   const DynamicsResult r = simulate(state, rest, c.options, velocity);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (!r.alexander_preserved) throw TopologyError("dynamics: the knot type changed; nothing is written");
-  Json summary;
-  summary["input"] = c.file;
-  summary.update(dynamics_json(c.options, r, closest_equilibrium_json(reader ? &*reader : nullptr, r.positions),
-                               seconds));
-  const Json s = summary["seconds"];
-  summary.erase("seconds");
-  summary["output"] = c.out;
-  summary["seconds"] = s;
+  const Json summary = framed_summary(
+      c.file, dynamics_json(c.options, r, closest_equilibrium_json(reader ? &*reader : nullptr, r.positions), seconds),
+      c.out);
   write_outputs(c, r, summary);
   if (c.json) {
     print_json(summary);

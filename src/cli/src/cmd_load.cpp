@@ -98,15 +98,9 @@ void resolve_load(LoadCommand& c) {
 Json summary_json(const LoadCommand& c, const KnotLoadResult& r, const DatasetReader* reader) {
   std::vector<Json> released;
   for (const Snap& s : r.snaps) released.push_back(closest_equilibrium_json(reader, s.released));
-  Json j;
-  j["input"] = c.file;
-  j.update(knot_load_json(c.options, r, closest_equilibrium_json(reader, as_points(r.path.points.front().dofs)),
-                          released));
-  const Json seconds = j["seconds"];
-  j.erase("seconds");
-  j["output"] = c.out;
-  j["seconds"] = seconds;
-  return j;
+  return framed_summary(
+      c.file, knot_load_json(c.options, r, closest_equilibrium_json(reader, as_points(r.path.points.front().dofs)), released),
+      c.out);
 }
 
 /// path.csv: one row per point; `stiffness` is the secant dF/dδ from the
@@ -143,9 +137,7 @@ void write_outputs(const LoadCommand& c, const KnotLoadResult& r, const Json& su
       write_curve((tmp / ("snap_" + id + "_loaded.obj")).string(), s.loaded);
       write_curve((tmp / ("snap_" + id + "_released.obj")).string(), s.released);
     }
-    AtomicFile f((tmp / "summary.json").string());
-    f.stream() << summary.dump(2) << "\n";
-    f.commit();
+    write_summary_json(tmp, summary);
   });
 }
 

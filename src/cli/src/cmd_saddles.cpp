@@ -81,9 +81,7 @@ void write_outputs(const SaddlesCommand& c, const SaddleStart& s, const std::vec
       const std::vector<Points> path = saddle_path(r, energies, at);
       write_path_obj((tmp / ("path_" + id + ".obj")).string(), path, energies);
     }
-    AtomicFile f((tmp / "summary.json").string());
-    f.stream() << summary.dump(2) << "\n";
-    f.commit();
+    write_summary_json(tmp, summary);
   });
 }
 

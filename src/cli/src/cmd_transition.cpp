@@ -130,9 +130,7 @@ void write_outputs(const TransitionCommand& c, const TransitionSearch& t, const 
       const std::vector<Points> path = saddle_path(t.saddle, energies, at);
       write_path_obj((tmp / "path.obj").string(), path, energies);
     }
-    AtomicFile f((tmp / "summary.json").string());
-    f.stream() << summary.dump(2) << "\n";
-    f.commit();
+    write_summary_json(tmp, summary);
   });
 }
 

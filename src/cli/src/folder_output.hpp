@@ -10,6 +10,7 @@
 
 #include "ek/core/atomic_file.hpp"
 #include "ek/core/errors.hpp"
+#include "ek/core/json.hpp"
 
 namespace ek::cli {
 
@@ -43,6 +44,26 @@ inline void write_folder(const std::string& out, const std::function<void(const 
     fs::remove_all(tmp, ec);
     throw;
   }
+}
+
+/// A folder command's summary: `input` first, then the library's
+/// description, with `output` before its last key `seconds`.
+inline Json framed_summary(const std::string& input, const Json& description, const std::string& out) {
+  Json j;
+  j["input"] = input;
+  j.update(description);
+  const Json seconds = j["seconds"];
+  j.erase("seconds");
+  j["output"] = out;
+  j["seconds"] = seconds;
+  return j;
+}
+
+/// Writes `summary` as FOLDER/summary.json (indented), atomically.
+inline void write_summary_json(const std::filesystem::path& folder, const Json& summary) {
+  AtomicFile f((folder / "summary.json").string());
+  f.stream() << summary.dump(2) << "\n";
+  f.commit();
 }
 
 }  // namespace ek::cli
