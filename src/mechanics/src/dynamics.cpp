@@ -230,10 +230,9 @@ struct Motion {
   /// One backward Euler step from (x, v): the solver's report; the rod is left at the result.
   NewtonReport step(const Points& x, const Points& v, double t_next) {
     move_envelope(t_next);
-    contact.update(x);
     inertia.start_step(x, v);
     RodTerm rod_term(rod, o.model.max_tangent_rotation);
-    ContactTerm contact_term(contact, x);
+    ContactTerm contact_term(contact, x);  // builds the active set at x, which the friction reads
     std::vector<Potential*> terms{&inertia, &rod_term, &contact_term};
     std::optional<SlabTerm> slab_term;
     if (envelope) terms.push_back(&slab_term.emplace(*envelope, x));
