@@ -13,7 +13,7 @@ CONFIGURE = cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release -DEK_KNOT_TABLE=$(
             -DPython3_EXECUTABLE=$(PYTHON) $(CMAKE_ARGS)
 CTEST     = cd $(BUILD) && KNOT_TABLE=$(KNOT_TABLE) ctest --output-on-failure -j$(JOBS)
 
-.PHONY: animation ledger-results ledger-shards stopping-truth help help-experiments deps docs configure build python test unit sanitize fuzz fuzz-build fuzz-test fuzz-seeds stress slurm-test bench figures experiments studies claims paper-open manifest compare-methods clean \
+.PHONY: animation ledger-results ledger-shards ledger-far-end stopping-truth help help-experiments deps docs configure build python test unit sanitize fuzz fuzz-build fuzz-test fuzz-seeds stress slurm-test bench figures experiments studies claims paper-open manifest compare-methods clean \
         explorer explorer-screenshots serve browser
 
 help:
@@ -26,6 +26,7 @@ help:
 	@echo "make paper-open  the claims not reproduced (paper_checks/open_claims.cpp), values printed"
 	@echo "make ledger-shards SCALE=sample12|paper10  run the scale shard by shard, committing each finished shard's ledger"
 	@echo "make stopping-truth  both adaptive stopping rules replayed on 30 knots of 500 samples each (docs/results/truth/)"
+	@echo "make ledger-far-end SCALE=sample12|paper10  Fig. 9's far end decided at the full budget: the knots it needs sampled 500 times, each piece's ledger committed"
 	@echo "make ledger-results  Fig. 9, planarity and the sampling summary of the committed ledgers (docs/results/), and their checks"
 	@echo "make compare-methods  the default relaxation method against the direct one (hybrid) on the SCALE data sets"
 	@echo "make animation the jumping knot's release in time as figures/out/anim_jumping_dynamics.gif and .mp4 (runs exp_jumping_dynamics at SCALE if needed)"
@@ -254,6 +255,14 @@ manifest:
 LEDGER_SCALES ?= sample12 paper10
 ledger-shards: build
 	scripts/ledger_shards.sh $(SCALE) --commit --nice
+
+# ledger-far-end: Fig. 9's far end at the full budget (scripts/ledger_far_end.sh
+# SCALE --until-decided): the knots exp_milnor names (far_end_to_sample) sampled
+# again with 500 samples each, a few knots per piece of about 15 minutes,
+# each piece's ledger committed under docs/results/SCALE/full_budget/, round
+# after round until it names none (progress in results/SCALE/full_budget/progress.log).
+ledger-far-end: build
+	scripts/ledger_far_end.sh $(SCALE) --until-decided --commit --nice
 
 # stopping-truth: the ground truth of the stopping rules (scripts/ledger_shards.sh
 # truth: 30 knots of 5 to 12 crossings, 500 samples each, about 1 h on 2

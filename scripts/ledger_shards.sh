@@ -43,6 +43,8 @@ fail() {
 }
 
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+# shellcheck source=lib/commit_ledger.sh
+source "$here/scripts/lib/commit_ledger.sh"
 [[ $# -ge 1 ]] || { usage >&2; exit 2; }
 [[ "$1" == "-h" || "$1" == "--help" ]] && { usage; exit 0; }
 scale=$1
@@ -108,13 +110,6 @@ for i in "${list[@]}"; do
     --shard "$i/$shards" --quiet -o "$work/$name.h5" --ledger "$ledger"
   echo "$(date -u +%FT%TZ) $scale $name: finished in $(($(date +%s) - start)) s, ledger $(du -k "$ledger" | cut -f1) kB" >>"$log"
   if [[ $commit -eq 1 && $keep -eq 0 ]]; then
-    # the ledger alone (git commit --only): whatever else is staged stays staged
-    for attempt in 1 2 3 4 5; do
-      if git -C "$here" add "$ledger" && git -C "$here" commit -q --only "$ledger" \
-        -m "Ledger of $scale $name (knots dataset --shard $i/$shards)"; then
-        break
-      fi
-      sleep 5  # another git command holds the index lock
-    done
+    commit_ledger "$here" "$ledger" "Ledger of $scale $name (knots dataset --shard $i/$shards)"
   fi
 done

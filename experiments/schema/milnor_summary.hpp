@@ -36,9 +36,27 @@ struct MilnorSummary {
   double top_decile_two_bridge_share = 0;  ///< [1] share of 2-bridge knots in it
   long far_end_size = 0;                   ///< [1] min(top_decile_size, 2-bridge knots that are not BB), at least 1
   double far_end_two_bridge_share = 0;     ///< [1] share of 2-bridge knots among the far_end_size knots of largest ratio
+  /// [samples] the sampling's full budget per knot (fixed samples, or the
+  /// adaptive maximum): a knot sampled less has an upper bound of its ratio
+  long budget = 0;
+  /// [1] knots read from the full-budget ledgers (full_budget/) in place of the scale's own entries
+  long full_budget_knots = 0;
+  /// full-budget knots whose ratio came out above their adaptive run's (by
+  /// more than 1e-9 relative): not expected, since their first samples are
+  /// the adaptive run's (a relaxation that no longer reproduces)
+  std::vector<std::string> full_budget_raised;
+  /// far_end_certificate (ek/analysis/far_end.hpp): the far_end_size knots
+  /// of largest ratio at the full budget are all 2-bridge
+  bool far_end_certified = false;
+  double far_end_other_max_ratio = 0;      ///< [1] M, the largest ratio of a knot that is not 2-bridge
+  std::string far_end_other_max_knot;      ///< the knot that sets M
+  long far_end_certified_two_bridge = 0;   ///< [1] 2-bridge knots at the full budget with ratio above M
+  /// the knots to sample at the full budget to decide it (scripts/ledger_far_end.sh); empty once decided
+  std::vector<std::string> far_end_to_sample;
 };
 EK_JSON_FIELDS(MilnorSummary, scale, knots, equilibria, milnor_violations, bb_knots, bb_max_ratio_deviation,
                bb_max_threedim, planar_threshold, top_decile_size, top_decile_two_bridge_share, far_end_size,
-               far_end_two_bridge_share)
+               far_end_two_bridge_share, budget, full_budget_knots, full_budget_raised, far_end_certified,
+               far_end_other_max_ratio, far_end_other_max_knot, far_end_certified_two_bridge, far_end_to_sample)
 
 }  // namespace ek::results

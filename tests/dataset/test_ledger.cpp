@@ -14,6 +14,7 @@
 #include "ek/dataset/ledger.hpp"
 #include "ek/dataset/pipeline.hpp"
 #include "ek/dataset/run.hpp"
+#include "testing.hpp"
 
 using ek::clitest::run;
 using ek::clitest::temp_dir;
@@ -139,4 +140,70 @@ TEST(Ledger, RerunFromTheLedgerReproducesTheStates) {
     EXPECT_EQ(f.attributes(f.states[s].representative, energy), e.attributes(e.states[s].representative, energy));
     EXPECT_LE((f.states[s].curve - e.states[s].curve).cwiseAbs().maxCoeff(), 0.5 * l.provenance.curve_quantum * (1 + 1e-9));
   }
+}
+
+TEST(Ledger, SamplingBudgetIsTheFixedCountOrTheAdaptiveMaximum) {
+  DatasetMetadata m;
+  EXPECT_EQ(sampling_budget(m), 0);  // not recorded
+  m.sampling = "fixed:50";
+  EXPECT_EQ(sampling_budget(m), 50);
+  m.sampling = "fixed:12,burn-in=100";
+  EXPECT_EQ(sampling_budget(m), 12);
+  m.sampling = "adaptive:50+10,max=500,S>0.1,delta=0.05";
+  EXPECT_EQ(sampling_budget(m), 500);
+  m.sampling = "adaptive:50+10,max=80,unseen<0.1,low=1.1,delta=0.1,burn-in=5";
+  EXPECT_EQ(sampling_budget(m), 80);
+  m.sampling = "mystery:3";
+  EXPECT_THROW(sampling_budget(m), InputError);
+}
+
+// A knot of an adaptive scale sampled again at the full budget
+// (scripts/ledger_far_end.sh): read_results_knots puts that entry in place
+// of the adaptive one, whose runs are its first ones (the same walk and the
+// same relaxations: equal attributes), and refuses full-budget ledgers of
+// other parameters, of another sampling or of a knot the scale lacks.
+TEST(Ledger, FullBudgetEntriesReplaceTheAdaptiveOnes) {
+  const std::string dir = temp_dir("ledger_full_budget");
+  std::filesystem::create_directories(dir + "/ledgers");
+  std::filesystem::create_directories(dir + "/full_budget");
+  const std::string common = " -n 100 --no-stiffness --novelty-distance 0.05 --quiet --jobs 2 ";
+  ASSERT_EQ(run("dataset --names 3_1,5_2 --adaptive --max-samples 70" + common + "-o " + dir + "/a.h5 --ledger " +
+                dir + "/ledgers/a.ledger.h5").status, 0);
+  const std::string full = dir + "/full_budget/piece-01.ledger.h5";
+  ASSERT_EQ(run("dataset --names 3_1 --samples 70" + common + "-o " + dir + "/f.h5 --ledger " + full).status, 0);
+
+  EXPECT_TRUE(read_results_knots(dir, 0.05, false).replaced.empty());
+  const ResultsKnots r = read_results_knots(dir, 0.05, true);
+  EXPECT_EQ(r.budget, 70);
+  EXPECT_EQ(r.source, dir + "/ledgers");
+  ASSERT_EQ(r.entries.size(), 2u);
+  ASSERT_EQ(r.replaced.size(), 1u);
+  const LedgerEntry &own = r.replaced[0], &at_budget = r.entries[0];
+  EXPECT_EQ(own.name, "3_1");
+  EXPECT_EQ(at_budget.name, "3_1");
+  EXPECT_EQ(at_budget.runs.size(), 70u);
+  ASSERT_LE(own.runs.size(), at_budget.runs.size());
+  for (size_t i = 0; i < own.runs.size(); ++i) {
+    ASSERT_EQ(own.runs[i].sample, at_budget.runs[i].sample);
+    const int a = own.runs[i].equilibrium, b = at_budget.runs[i].equilibrium;
+    ASSERT_EQ(a < 0, b < 0) << "sample " << i;
+    if (a >= 0) EXPECT_TRUE(same_table(own.attributes.row(a), at_budget.attributes.row(b))) << "sample " << i;
+  }
+  EXPECT_EQ(r.entries[1].name, "5_2");
+  EXPECT_LT(r.entries[1].runs.size(), 71u);
+
+  const Ledger l = read_ledger(full);
+  const std::string& other = full;  // in its place: two full-budget ledgers must merge first
+  Ledger radius = l;
+  radius.parameters.radius = 0.3;
+  write_ledger(other, radius);
+  fixtures::expect_input_error([&] { read_results_knots(dir, 0.05, true); }, "differ from the scale's");
+  Ledger adaptive = l;
+  adaptive.parameters.sampling = "adaptive:50+10,max=70,S>0.1,delta=0.05";
+  write_ledger(other, adaptive);
+  fixtures::expect_input_error([&] { read_results_knots(dir, 0.05, true); }, "not fixed:70");
+  Ledger stranger = l;
+  stranger.entries[0].name = "4_1";
+  write_ledger(other, stranger);
+  fixtures::expect_input_error([&] { read_results_knots(dir, 0.05, true); }, "knot 4_1 of the full-budget ledgers");
 }

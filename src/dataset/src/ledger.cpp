@@ -527,16 +527,23 @@ Ledger merge_ledgers(const std::vector<Ledger>& ledgers) {
   return out;
 }
 
-Ledger read_ledger_folder(const std::string& folder) {
+std::vector<std::string> ledger_files(const std::string& folder) {
   std::vector<std::string> files;
+  if (!std::filesystem::is_directory(folder)) return files;
   std::error_code ec;
   for (const auto& p : std::filesystem::directory_iterator(folder, ec)) {
     const std::string name = p.path().filename().string();
     if (name.size() > 10 && name.compare(name.size() - 10, 10, ".ledger.h5") == 0) files.push_back(p.path().string());
   }
   if (ec) throw InputError("cannot read the ledger folder '" + folder + "': " + ec.message());
-  if (files.empty()) throw InputError("no ledger (*.ledger.h5) in '" + folder + "'");
   std::sort(files.begin(), files.end());
+  return files;
+}
+
+Ledger read_ledger_folder(const std::string& folder) {
+  if (!std::filesystem::is_directory(folder)) throw InputError("no ledger folder '" + folder + "'");
+  const std::vector<std::string> files = ledger_files(folder);
+  if (files.empty()) throw InputError("no ledger (*.ledger.h5) in '" + folder + "'");
   std::vector<Ledger> ledgers;
   for (const std::string& f : files) ledgers.push_back(read_ledger(f));
   return merge_ledgers(ledgers);

@@ -4,6 +4,7 @@
 #include "ek/dataset/ledger.hpp"
 #include "ek/dataset/pipeline.hpp"
 
+#include <algorithm>
 #include <filesystem>
 
 #include "ek/analysis/unseen.hpp"
@@ -40,18 +41,73 @@ Ledger ledger_of_dataset(const std::string& path, const LedgerProvenance& proven
 }
 
 std::vector<LedgerEntry> read_results_entries(const std::string& folder, double cut, std::string* source) {
-  const std::string dataset = folder + "/dataset/dataset.h5", ledgers = folder + "/ledgers";
-  std::vector<LedgerEntry> out;
-  if (std::filesystem::exists(dataset)) {
-    if (source) *source = dataset;
-    const DatasetReader reader(dataset);
-    for (const std::string& name : reader.knot_names()) out.push_back(ledger_entry(reader.read(name), cut, 0));
-    return out;
+  ResultsKnots r = read_results_knots(folder, cut, false);
+  if (source) *source = r.source;
+  return std::move(r.entries);
+}
+
+int sampling_budget(const DatasetMetadata& parameters) {
+  if (!parameters.sampling) return 0;
+  const std::string& s = *parameters.sampling;
+  std::string number;
+  if (s.rfind("fixed:", 0) == 0) {
+    number = s.substr(6);
+  } else if (const size_t at = s.find(",max="); s.rfind("adaptive:", 0) == 0 && at != std::string::npos) {
+    number = s.substr(at + 5);
   }
-  if (!std::filesystem::is_directory(ledgers))
+  const size_t digits = number.find_first_not_of("0123456789");
+  number = number.substr(0, digits);
+  if (number.empty()) throw InputError("unknown sampling '" + s + "': neither fixed:N nor adaptive:...,max=M");
+  return std::stoi(number);
+}
+
+namespace {
+
+/// The full-budget ledgers of a results folder, checked against it (read_results_knots).
+void put_full_budget(const std::string& folder, ResultsKnots& r) {
+  const Ledger extra = read_ledger_folder(folder);
+  DatasetMetadata theirs = extra.parameters;
+  if (r.budget < 1) throw InputError("full-budget ledgers in '" + folder + "', but the scale's sampling is not recorded");
+  const std::string& own = *r.parameters.sampling;  // the same walk: its burn-in too
+  const size_t burn_in = own.find(",burn-in=");
+  const std::string fixed = "fixed:" + std::to_string(r.budget) + (burn_in == std::string::npos ? "" : own.substr(burn_in));
+  if (theirs.sampling != fixed)
+    throw InputError("the full-budget ledgers in '" + folder + "' sample " + theirs.sampling.value_or("(unrecorded)") +
+                     ", not " + fixed);
+  theirs.sampling = r.parameters.sampling;
+  if (const std::string d = r.parameters.difference(theirs); !d.empty())
+    throw InputError("the full-budget ledgers in '" + folder + "' differ from the scale's: " + d);
+  for (const LedgerEntry& e : extra.entries) {
+    auto at = std::find_if(r.entries.begin(), r.entries.end(), [&](const LedgerEntry& x) { return x.name == e.name; });
+    if (at == r.entries.end())
+      throw InputError("knot " + e.name + " of the full-budget ledgers in '" + folder + "' is not in the scale");
+    r.replaced.push_back(std::move(*at));
+    *at = e;
+  }
+}
+
+}  // namespace
+
+ResultsKnots read_results_knots(const std::string& folder, double cut, bool full_budget) {
+  const std::string dataset = folder + "/dataset/dataset.h5", ledgers = folder + "/ledgers";
+  ResultsKnots r;
+  if (std::filesystem::exists(dataset)) {
+    r.source = dataset;
+    const DatasetReader reader(dataset);
+    r.parameters = reader.metadata();
+    for (const std::string& name : reader.knot_names()) r.entries.push_back(ledger_entry(reader.read(name), cut, 0));
+  } else if (std::filesystem::is_directory(ledgers)) {
+    r.source = ledgers;
+    Ledger l = read_ledger_folder(ledgers);
+    r.parameters = std::move(l.parameters);
+    r.entries = std::move(l.entries);
+  } else {
     throw InputError("neither a data set '" + dataset + "' nor a ledger folder '" + ledgers + "'");
-  if (source) *source = ledgers;
-  return read_ledger_folder(ledgers).entries;
+  }
+  r.budget = sampling_budget(r.parameters);
+  const std::string extra = folder + "/full_budget";
+  if (full_budget && !ledger_files(extra).empty()) put_full_budget(extra, r);
+  return r;
 }
 
 UnseenEstimate ledger_unseen(const LedgerEntry& e, double energy_factor) {

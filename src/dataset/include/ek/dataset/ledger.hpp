@@ -137,6 +137,32 @@ Ledger ledger_of_dataset(const std::string& dataset_path, const LedgerProvenance
 /// `source` (optional) receives which was read. InputError when neither exists.
 std::vector<LedgerEntry> read_results_entries(const std::string& folder, double cut, std::string* source = nullptr);
 
+/// [samples] A data set's full sampling budget per knot: the fixed samples
+/// ("fixed:N") or adaptive sampling's maximum ("adaptive:...,max=M,...");
+/// 0 when the sampling is not recorded.
+int sampling_budget(const DatasetMetadata& parameters);
+
+/// A results folder's knots (read_results_entries) with their parameters,
+/// and the full-budget entries of DIR/full_budget/*.ledger.h5 in place of
+/// the folder's own. Those ledgers (scripts/ledger_far_end.sh) hold knots of
+/// an adaptive scale sampled again at its full budget, with every other
+/// parameter equal (so each knot's walk, and its first samples, are those of
+/// the adaptive run): Fig.\ 9's far end is decided on them (far_end.hpp).
+struct ResultsKnots {
+  std::vector<LedgerEntry> entries;   ///< the folder's knots in its order, each full-budget entry in place
+  DatasetMetadata parameters;         ///< the folder's parameters (its data set's or its ledgers')
+  std::string source;                 ///< what was read: the data set, or the ledger folder
+  int budget = 0;                     ///< [samples] sampling_budget(parameters)
+  std::vector<LedgerEntry> replaced;  ///< the folder's own entries that full-budget ones replaced
+};
+
+/// Reads a results folder as read_results_entries does; with `full_budget`,
+/// also DIR/full_budget/ when it holds ledgers (*.ledger.h5). InputError when a
+/// full-budget ledger's parameters differ from the folder's in anything but
+/// the sampling, its sampling is not "fixed:<budget>", or it names a knot
+/// the folder does not have.
+ResultsKnots read_results_knots(const std::string& folder, double cut, bool full_budget);
+
 /// Writes `ledger` to `path` (a temporary renamed into place: an existing
 /// file is replaced only by a complete one). Each kept curve is stored as
 /// its first vertex and its steps on the grid of provenance.curve_quantum
@@ -164,6 +190,10 @@ bool is_ledger_file(const std::string& path);
 /// parameters, sums wall and CPU time where every ledger records them, and
 /// lists the commits (comma-separated, each once) and sources.
 Ledger merge_ledgers(const std::vector<Ledger>& ledgers);
+
+/// The ledger files (*.ledger.h5) in `folder`, in name order; none when it is
+/// not a folder. InputError when it cannot be read.
+std::vector<std::string> ledger_files(const std::string& folder);
 
 /// Every ledger file (*.ledger.h5) in `folder`, in name order, merged. InputError for none.
 Ledger read_ledger_folder(const std::string& folder);
