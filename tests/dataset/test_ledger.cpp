@@ -187,7 +187,9 @@ TEST(Ledger, FullBudgetEntriesReplaceTheAdaptiveOnes) {
     ASSERT_EQ(own.runs[i].sample, at_budget.runs[i].sample);
     const int a = own.runs[i].equilibrium, b = at_budget.runs[i].equilibrium;
     ASSERT_EQ(a < 0, b < 0) << "sample " << i;
-    if (a >= 0) EXPECT_TRUE(same_table(own.attributes.row(a), at_budget.attributes.row(b))) << "sample " << i;
+    if (a >= 0) {
+      EXPECT_TRUE(same_table(own.attributes.row(a), at_budget.attributes.row(b))) << "sample " << i;
+    }
   }
   EXPECT_EQ(r.entries[1].name, "5_2");
   EXPECT_LT(r.entries[1].runs.size(), 71u);

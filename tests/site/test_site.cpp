@@ -299,7 +299,9 @@ TEST(Site, FolderIsWrittenSafely) {
   for (const auto& entry : fs::directory_iterator(::testing::TempDir())) {
     const std::string name = entry.path().filename().string();
     for (const char* mine : {"site_write", "site_other", "site_empty", "site_escape"})
-      if (name.rfind(mine, 0) == 0) EXPECT_EQ(name.find(".tmp."), std::string::npos) << entry.path();
+      if (name.rfind(mine, 0) == 0) {
+        EXPECT_EQ(name.find(".tmp."), std::string::npos) << entry.path();
+      }
   }
   EXPECT_THROW(check_site_folder(::testing::TempDir() + "no/such/parent", false), InputError);
 }

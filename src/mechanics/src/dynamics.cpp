@@ -269,23 +269,6 @@ struct Motion {
   }
 };
 
-ElasticRod start_rod(const Points& start, const VecX& rest, const DynamicsOptions& o, TwistModel model) {
-  ElasticRod rod(start, rest, o.model.material, model);
-  if (o.model.link) {
-    rod.set_link(*o.model.link);
-    rod.relax_twist();
-  }
-  return rod;
-}
-
-AlexanderPolynomial start_alexander(const Points& start) {
-  try {
-    return alexander(start);
-  } catch (const InputError& e) {
-    throw InputError(std::string("dynamics: the start is not a simple curve: ") + e.what());
-  }
-}
-
 }  // namespace
 
 DynamicsResult simulate(const Points& start, const VecX& rest, const DynamicsOptions& o, const Points& velocity) {
@@ -301,7 +284,7 @@ DynamicsResult simulate(const Points& start, const VecX& rest, const DynamicsOpt
   no.remove_rigid_motions = false;  // inertia is not invariant under rigid motions
   const VecX masses = lumped_masses(rest, o.density, o.model.material.radius);
   Motion m{o,
-           start_rod(start, rest, o, model.model),
+           model_rod(start, rest, o.model, model),
            ContactPotential(CurveTopology::single(n), contact_options(model, o.model)),
            std::nullopt,
            InertiaTerm(masses, o.time_step, o.damping, o.gravity),
@@ -310,7 +293,7 @@ DynamicsResult simulate(const Points& start, const VecX& rest, const DynamicsOpt
   require_input(m.contact.min_distance() > 0.0, "dynamics: the start touches itself");
   m.move_envelope(0.0);
   require_input(!m.envelope || m.envelope->inside(start), "dynamics: the start is not strictly inside the envelope");
-  const AlexanderPolynomial a0 = start_alexander(start);
+  const AlexanderPolynomial a0 = input_alexander(start, "dynamics: the start");
 
   DynamicsResult r;
   r.model = to_string(model.model);

@@ -4,7 +4,9 @@
 
 #include "ek/contact/contact_potential.hpp"
 #include "ek/core/errors.hpp"
+#include "ek/geometry/polyline.hpp"
 #include "ek/rod/elastic_rod.hpp"
+#include "ek/solver/relax.hpp"
 
 namespace ek {
 
@@ -17,24 +19,19 @@ void CurveEnergyOptions::validate() const {
 CurveEnergy curve_energy(const Points& P, const CurveEnergyOptions& options) {
   options.validate();
   const int n = static_cast<int>(P.rows());
-  const TwistModel model = options.link ? TwistModel::FixedLink : TwistModel::TwistFree;
-  ElasticRod rod = options.rest_length ? ElasticRod(P, VecX::Constant(n, *options.rest_length), options.material, model)
-                                       : ElasticRod(P, options.material, model);
-  if (options.link) {
-    rod.set_link(*options.link);
-    rod.relax_twist();
-  }
+  RelaxOptions model_options;  // the model as relax() resolves it
+  model_options.material = options.material;
+  model_options.link = options.link;
+  const VecX rest = options.rest_length ? VecX(VecX::Constant(n, *options.rest_length)) : edge_lengths(P);
+  const ResolvedModel resolved = resolve_model(model_options, rest.mean());
+  ElasticRod rod = model_rod(P, rest, model_options, resolved);
   CurveEnergy e;
   e.vertices = n;
-  e.model = options.link ? "fixed-link" : "twist-free";
+  e.model = to_string(resolved.model);
   e.energy.stretch = rod.energy(EnergyTerm::Stretch);
   e.energy.bend = rod.energy(EnergyTerm::Bend);
   e.energy.twist = rod.energy(EnergyTerm::Twist);
   // Self-contact (paper eq. 1): ω E_contact with d̂ and ω as relax() resolves them.
-  RelaxOptions model_options;
-  model_options.material = options.material;
-  model_options.link = options.link;
-  const ResolvedModel resolved = resolve_model(model_options, rod.rest_edge_lengths().mean());
   ContactPotential contact(CurveTopology::single(n), contact_options(resolved, model_options));
   contact.update(P);
   e.energy.contact = contact.energy(P);

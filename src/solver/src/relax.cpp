@@ -31,14 +31,6 @@ VecX checked_rest_lengths(const Points& curve, const RelaxOptions& options) {
   return rest;
 }
 
-AlexanderPolynomial input_alexander(const Points& curve) {
-  try {
-    return alexander(curve);
-  } catch (const InputError& e) {
-    throw InputError(std::string("relax: the input curve is not simple: ") + e.what());
-  }
-}
-
 EnergyParts parts_of(Objective& objective) {
   EnergyParts p;
   for (const EnergyPart& part : objective.energy_parts()) {
@@ -67,8 +59,10 @@ struct Relaxation {
   }
 };
 
-ElasticRod make_rod(const Points& curve, const VecX& rest, const RelaxOptions& options, TwistModel model) {
-  ElasticRod rod(curve, rest, options.material, model);
+}  // namespace
+
+ElasticRod model_rod(const Points& x, const VecX& rest, const RelaxOptions& options, const ResolvedModel& model) {
+  ElasticRod rod(x, rest, options.material, model.model);
   if (options.link) {
     rod.set_link(*options.link);
     rod.relax_twist();
@@ -76,7 +70,13 @@ ElasticRod make_rod(const Points& curve, const VecX& rest, const RelaxOptions& o
   return rod;
 }
 
-}  // namespace
+AlexanderPolynomial input_alexander(const Points& curve, const std::string& what) {
+  try {
+    return alexander(curve);
+  } catch (const InputError& e) {
+    throw InputError(what + " is not a simple curve: " + e.what());
+  }
+}
 
 ContactOptions contact_options(const ResolvedModel& model, const RelaxOptions& options) {
   ContactOptions co;
@@ -288,7 +288,7 @@ void relax_level(const Points& curve, const VecX& rest, const RelaxOptions& opti
   result.lambda_min = cached_lambda_min(n, rest.mean(), options.material, model.model);
   const NewtonOptions no = newton_options(options, model, result.lambda_min);
   const ContactOptions co = contact_options(model, options);
-  Relaxation r{options, make_rod(curve, rest, options, model.model), co,
+  Relaxation r{options, model_rod(curve, rest, options, model), co,
                ContactPotential(CurveTopology::single(n), co), std::nullopt, NewtonSolver(no)};
   r.contact.update(curve);
   if (r.contact.min_distance() <= 0.0) throw InputError("relax: the input curve touches itself");
@@ -358,7 +358,7 @@ RelaxResult relax(const Points& curve, const RelaxOptions& options) {
   options.validate();
   const VecX rest = checked_rest_lengths(curve, options);
   AlexanderPolynomial input;
-  if (options.check_topology) input = input_alexander(curve);
+  if (options.check_topology) input = input_alexander(curve, "relax: the input curve");
   RelaxOptions unchecked = options;
   unchecked.check_topology = false;  // checked once below, on the result
   RelaxResult result = relax_levels(curve, rest, unchecked, options.coarse_levels, true);

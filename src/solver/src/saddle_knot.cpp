@@ -18,13 +18,9 @@ KnotSystem::KnotSystem(const Points& x, const VecX& rest, const RelaxOptions& op
   require_input(n >= 4 && x.allFinite(), "a closed curve needs at least 4 finite vertices");
   require_input(rest.size() == n && rest.allFinite() && rest.minCoeff() > 0.0, "rest lengths must be n positive numbers");
   const ResolvedModel model = resolve_model(options, rest.mean());
-  impl_ = std::unique_ptr<Impl>(new Impl{ElasticRod(x, rest, options.material, model.model),
+  impl_ = std::unique_ptr<Impl>(new Impl{model_rod(x, rest, options, model),
                                          ContactPotential(CurveTopology::single(n), contact_options(model, options)),
                                          nullptr});
-  if (options.link) {
-    impl_->rod.set_link(*options.link);
-    impl_->rod.relax_twist();
-  }
   impl_->contact.update(x);
   require_input(impl_->contact.min_distance() > 0.0, "the curve touches itself");
   impl_->objective = std::make_unique<KnotObjective>(impl_->rod, impl_->contact, nullptr, options.max_tangent_rotation);

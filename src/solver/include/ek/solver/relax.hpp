@@ -146,6 +146,15 @@ ContactOptions contact_options(const ResolvedModel& model, const RelaxOptions& o
 /// `options` (the resolved tolerance, the iteration cap, stop at a critical
 /// point) and the straight rod's λ_min (the shift's scale).
 NewtonOptions newton_options(const RelaxOptions& options, const ResolvedModel& model, double lambda_min);
+/// The rod of a relaxation: `x` (n by 3) with rest edges `rest` (n), the
+/// material of `options` and the resolved twist model; with options.link,
+/// its twist set to carry that link (the fixed-link model) and relaxed.
+/// relax(), saddles, dynamics and `knots energy` build their rod here.
+ElasticRod model_rod(const Points& x, const VecX& rest, const RelaxOptions& options, const ResolvedModel& model);
+/// The Alexander polynomial of a curve given as input, the reference of the
+/// topology check; InputError "<what> is not a simple curve: ..." when it
+/// meets itself (`what` names it, e.g. "relax: the input curve").
+AlexanderPolynomial input_alexander(const Points& curve, const std::string& what);
 /// ω that keeps the paper's relative penetration for another material:
 /// 1e3 · (E/2000) · (r/0.2)³ (contact_potential.hpp, "Stiffness scaling").
 double default_contact_stiffness(const RodMaterial& material);
