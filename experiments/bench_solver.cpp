@@ -143,7 +143,7 @@ Run timed_relax(const std::string& knot, int sample, const ek::Points& P, const 
 
 void print_run(const Run& run) {
   std::fprintf(stderr, "%-9s #%02d  %-9s %-18s %5d it  %7.3f s  E %.10g  contacts %d\n", run.knot.c_str(),
-               run.sample, run.method.c_str(), run.result.status().c_str(), run.result.all_phases().iterations,
+               run.sample, run.method.c_str(), to_string(run.result.status()).c_str(), run.result.all_phases().iterations,
                run.seconds, run.result.energy.total, run.result.contacts);
 }
 
@@ -196,8 +196,8 @@ Summary summarize(const std::string& method, const std::string& name, const std:
     its.push_back(rep.iterations);
     total += r->seconds;
     s.max_seconds = std::max(s.max_seconds, r->seconds);
-    ++s.statuses[r->result.status()];
-    if (r->result.status() == "converged-stable") ++s.stable;
+    ++s.statuses[to_string(r->result.status())];
+    if (r->result.status() == ek::RelaxStatus::ConvergedStable) ++s.stable;
     add_split(s, rep);
   }
   s.median_seconds = median(secs);
@@ -286,7 +286,7 @@ void write_runs_csv(const std::vector<Run>& runs, const std::string& out) {
          "symbolic,numeric,line_search_trials,saddle_escapes,marginal,failed\n";
   for (const Run& r : runs) {
     const ek::NewtonReport rep = r.result.all_phases();
-    csv << r.knot << "," << r.sample << "," << r.method << "," << r.result.status() << "," << fmt(r.seconds, "%.6g")
+    csv << r.knot << "," << r.sample << "," << r.method << "," << to_string(r.result.status()) << "," << fmt(r.seconds, "%.6g")
         << "," << fmt(r.cpu_seconds, "%.6g") << "," << rep.iterations << "," << fmt(r.result.energy.total, "%.15g")
         << "," << fmt(rep.gradient_norm, "%.3e") << "," << r.result.contacts << ","
         << fmt(r.result.min_distance, "%.6g") << "," << fmt(r.result.writhe, "%.6g") << ","
@@ -461,8 +461,8 @@ int peer(const Config& c) {
       kept = kept && best.result.alexander_preserved;
       const int it = best.result.all_phases().iterations;
       std::printf("%-28s %-9s %6d %-18s %9.4f %7d %14.10f\n", name.c_str(), m.name.c_str(), static_cast<int>(P.rows()),
-                  best.result.status().c_str(), best.seconds, it, best.result.energy.total);
-      csv << name << "," << m.name << "," << P.rows() << "," << best.result.status() << ","
+                  to_string(best.result.status()).c_str(), best.seconds, it, best.result.energy.total);
+      csv << name << "," << m.name << "," << P.rows() << "," << to_string(best.result.status()) << ","
           << fmt(best.seconds, "%.6g") << "," << it << "," << fmt(best.result.energy.total, "%.15g") << "\n";
     }
   }

@@ -59,10 +59,10 @@ Points pattern_state(const Args& a, const ConstructionOptions& o, const CircleCr
   const KnotRecord& k935 = KnotTable::global().at("9_35");
   const RelaxResult pr = relax(embed_pd(*k935.pd, o.drawing).points, o.relax);
   const GeometricAttributes pg = geometric_attributes(pr.positions);
-  sum.pattern = {k935.name, "pd", pr.status(), pr.energy.total, pg.threedim, pg.total_curvature,
+  sum.pattern = {k935.name, "pd", to_string(pr.status()), pr.energy.total, pg.threedim, pg.total_curvature,
                  measure(pr.positions, criterion), "curves/pattern_9_35.obj"};
   write_curve(a.out + "/" + sum.pattern.curve, pr.positions);
-  std::cout << "exp_generalization: 9_35 " << pr.status() << ", E " << pr.energy.total << ", 3D-ness " << pg.threedim
+  std::cout << "exp_generalization: 9_35 " << to_string(pr.status()) << ", E " << pr.energy.total << ", 3D-ness " << pg.threedim
             << ", circle fit " << sum.pattern.circles.relative_rms << std::endl;
   return pr.positions;
 }
@@ -131,7 +131,7 @@ results::GeneralizationMember member(const Args& a, const std::vector<int>& twis
   m.crossings = pd.size();
   m.alexander = k.alexander.coefficients;
   m.table_knots = k.table_knots;
-  m.status = k.relaxed.status();
+  m.status = to_string(k.relaxed.status());
   m.alexander_preserved = k.alexander_preserved;
   m.energy = k.relaxed.energy.total;
   m.threedim = k.attributes.threedim;

@@ -93,7 +93,7 @@ struct Release {
   std::string outcome() const {
     const double td = threedim(r.positions);
     if (td >= kJumpThreedim) return "jumped";
-    if (r.status != "rest") return "moving";
+    if (r.status != DynamicsStatus::Rest) return "moving";
     return td < kPlanarThreedim ? "flat" : "between";
   }
 };
@@ -145,7 +145,7 @@ void write_run(const Args& a, const Release& x, Csv& table) {
     }
   }
   const double link_error = std::abs(x.r.link - x.coil->link);
-  table.row({x.coil->knot, Csv::num(x.mu), Csv::num(x.h), x.r.status, x.outcome(), Csv::num(threedim(x.r.positions)),
+  table.row({x.coil->knot, Csv::num(x.mu), Csv::num(x.h), to_string(x.r.status), x.outcome(), Csv::num(threedim(x.r.positions)),
              x.r.rest_time ? Csv::num(*x.r.rest_time) : "", Csv::num(x.r.max_speed), Csv::num(x.r.max_kinetic),
              Csv::num(x.r.frames.front().elastic), Csv::num(x.r.frames.back().elastic),
              Csv::num(similarity(x.r.positions, x.coil->released)), Csv::num(similarity(x.r.positions, x.coil->target)),

@@ -109,7 +109,7 @@ Outcome jump(const Args& a, const KnotRecord& k, int samples) {
   write_curve(a.out + "/curves/" + k.name + "_final.obj", r.positions);
   write_curve(a.out + "/curves/" + k.name + "_target.obj", target->positions);
   out.row = {k.name, std::to_string(k.braid->strands), Csv::num(target->threedim), Csv::num(target->writhe),
-             Csv::num(r.link), flat.status(), Csv::num(flat.energy.total), Csv::num(flat_td), r.status(),
+             Csv::num(r.link), to_string(flat.status()), Csv::num(flat.energy.total), Csv::num(flat_td), to_string(r.status()),
              Csv::num(r.energy.total), Csv::num(final_td), Csv::num(link_error),
              Csv::num(flat.energy.total - r.energy.total), Csv::flag(out.jumps), target->source};
   std::ostringstream line;  // one write per line: workers print concurrently

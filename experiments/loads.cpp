@@ -144,7 +144,7 @@ void run_one(const Args& a, int id, const Run& r, Csv& loads, Csv& snaps, result
     write_curve(a.out + "/" + files + "_released.obj", z.released);
     const PathPoint& before = res.path.points[static_cast<size_t>(z.point) - 1];
     snaps.row({std::to_string(id), std::to_string(k), std::to_string(z.point), Csv::num(z.parameter),
-               Csv::num(z.reaction), Csv::num(z.jump), Csv::num(z.energy_drop / s.energy_scale), z.released_status,
+               Csv::num(z.reaction), Csv::num(z.jump), Csv::num(z.energy_drop / s.energy_scale), to_string(z.released_status),
                state, Csv::num(to_start), Csv::num(to_other), before.index >= 0 ? Csv::num(before.lowest_eigenvalue) : "",
                files + "_before.obj", files + "_loaded.obj", files + "_released.obj"});
     ++sum.snaps;

@@ -91,7 +91,7 @@ void from_coil(const Context& c, results::PeriodicMember& out, std::vector<std::
   const Points& P = r.positions;
   if (!c.m.table_name.empty())
     out.alexander_matches_table = alexander(P) == alexander(*KnotTable::global().at(c.m.table_name).pd);
-  out.status = r.status();
+  out.status = to_string(r.status());
   out.energy = r.energy.total;
   out.alexander_preserved = r.alexander_preserved;
   out.threedim = threedim(P);
@@ -109,7 +109,7 @@ void from_coil(const Context& c, results::PeriodicMember& out, std::vector<std::
   out.expected_rotation_deg = c.m.expected_rotation_deg();
   out.curve = c.write("", P);
   row = {c.m.family, std::to_string(c.m.strands), std::to_string(c.m.p), std::to_string(c.n), c.m.table_name,
-         r.status(), Csv::num(r.energy.total),
+         to_string(r.status()), Csv::num(r.energy.total),
          out.alexander_matches_table ? Csv::flag(*out.alexander_matches_table) : std::string(),
          Csv::num(out.symmetry_error), std::to_string(g.top.count), std::to_string(g.bottom.count),
          Csv::num(g.top.max_error), Csv::num(g.bottom.max_error), Csv::num(g.rotation),
@@ -120,11 +120,11 @@ results::PeriodicEquilibrium equilibrium(const Context& c, const Points& start, 
   const RelaxResult r = relax(start, with_method(RelaxOptions{}, method));
   results::PeriodicEquilibrium e;
   e.method = method;
-  e.status = r.status();
+  e.status = to_string(r.status());
   e.iterations = r.all_phases().iterations;
   e.energy = r.energy.total;
   e.threedim = threedim(r.positions);
-  e.stable = r.status() == "converged-stable";
+  e.stable = r.status() == RelaxStatus::ConvergedStable;
   e.symmetry_error = find_symmetry_axis(r.positions, c.m.p).error;
   e.curve = c.write(method == "default" ? "_cylinder" : "_cylinder_" + method, r.positions);
   return e;
@@ -136,7 +136,7 @@ results::PeriodicTransient transient(const Context& c, const Points& start, int 
   const RelaxResult r = relax(start, o);
   results::PeriodicTransient t;
   t.iterations = iterations;
-  t.status = r.status();
+  t.status = to_string(r.status());
   t.energy = r.energy.total;
   t.gradient_norm = r.report.gradient_norm;
   t.threedim = threedim(r.positions);
@@ -158,7 +158,7 @@ std::vector<results::PeriodicSaddleDescent> saddle_descents(const SymmetricCriti
     Points P = s.positions;
     as_vector(P) += sign * scale * v;
     const RelaxResult r = relax(P, o);
-    out.push_back({sign, r.status(), r.energy.total, threedim(r.positions)});
+    out.push_back({sign, to_string(r.status()), r.energy.total, threedim(r.positions)});
   }
   return out;
 }
@@ -320,7 +320,7 @@ results::PeriodicLinkMember run_link(const Args& a, const PeriodicBraid& m) {
   out.family = m.family;
   out.p = m.p;
   out.components = static_cast<int>(r.positions.size());
-  out.status = r.status();
+  out.status = to_string(r.status());
   out.energy = r.energy;
   out.alexander_preserved = r.alexander_preserved;
   out.linking_preserved = r.linking_preserved;

@@ -122,7 +122,7 @@ std::optional<results::PeriodicLinkedSymmetric> linked_symmetric(const Args& a, 
     results::PeriodicLinkedSymmetric y;
     y.link = d.link;
     y.from_symmetry_error = out.runs[i].symmetry_error;
-    y.status = rs.status();
+    y.status = to_string(rs.status());
     y.energy = rs.energy.total;
     y.energy_above = rs.energy.total - d.energy;
     y.threedim = threedim(S);
@@ -181,7 +181,7 @@ results::PeriodicLinkScan link_scan(const Args& a, const PeriodicBraid& m, int n
   out.three_d_above = ls.three_d_above;
   const std::string stem = "curves/" + m.family + "_p" + std::to_string(m.p) + "_lk";
   for (const DeployRun& d : ls.runs) {
-    results::PeriodicLinkRun r{d.link,   d.flat_status, d.flat_energy, d.flat_writhe, d.status, d.energy,
+    results::PeriodicLinkRun r{d.link, to_string(d.flat_status), d.flat_energy, d.flat_writhe, to_string(d.status), d.energy,
                                d.threedim, d.writhe, d.link_error, d.buckled, d.three_d,
                                find_symmetry_axis(d.positions, m.p).error, std::nullopt};
     if (d.three_d) {

@@ -71,7 +71,7 @@ void circles(const Args& a, const std::vector<int>& ns) {
         start *= L / curve_length(start);
         const RelaxResult r = relax(start, ro);
         if (!r.converged())
-          std::cout << "exp_time_vs_error: circle n = " << n << " ended " << r.status() << " after "
+          std::cout << "exp_time_vs_error: circle n = " << n << " ended " << to_string(r.status()) << " after "
                     << r.report.iterations << " iterations, |g| " << r.report.gradient_norm << std::endl;
         E = r.energy.bend;
       } else {
@@ -93,7 +93,7 @@ bool twisted_circle_stable(const Points& circle, double lk) {
   ro.max_iterations = 1000;
   const RelaxResult r = relax(circle, ro);
   if (!r.converged())
-    std::cout << "exp_time_vs_error: Michell n = " << circle.rows() << ", Lk = " << lk << ": " << r.status()
+    std::cout << "exp_time_vs_error: Michell n = " << circle.rows() << ", Lk = " << lk << ": " << to_string(r.status())
               << std::endl;
   return r.stable();
 }
@@ -145,7 +145,7 @@ void resolution_sweep(const std::string& name, const RelaxResult& base, Csv& csv
   const double ref = E[m - 1] + d2 / (std::pow(2.0, p) - 1.0);
   for (size_t q = 0; q < m; ++q)
     csv.row({name, std::to_string(kn[q]), Csv::num(E[q]), Csv::num(ref), Csv::num(std::fabs(E[q] - ref) / ref),
-             Csv::num(T[q]), std::to_string(runs[q].report.iterations), runs[q].status(), Csv::num(p)});
+             Csv::num(T[q]), std::to_string(runs[q].report.iterations), to_string(runs[q].status()), Csv::num(p)});
   std::cout << "exp_time_vs_error: " << name << " observed order " << p << ", reference energy " << ref << std::endl;
 }
 
@@ -164,7 +164,7 @@ void tolerance_sweep(const std::string& name, const Points& sample, Csv& csv) {
     const auto [r, secs] = solve(tol);
     const double er = std::fabs(r.energy.total - reference) / reference;
     csv.row({name, Csv::num(tol), Csv::num(r.energy.total), Csv::num(reference), Csv::num(er), Csv::num(secs),
-             std::to_string(r.report.iterations), r.status()});
+             std::to_string(r.report.iterations), to_string(r.status())});
   }
 }
 

@@ -26,7 +26,7 @@ TEST(Construction, RelaxedAndMeasuredAgainstAPattern) {
   ConstructionOptions o;
   const Points start = embed_pd(pd, o.drawing).points;
   const ConstructedKnot first = relax_construction(pd, start, o);
-  EXPECT_EQ(first.relaxed.status(), "converged-stable");
+  EXPECT_EQ(first.relaxed.status(), RelaxStatus::ConvergedStable);
   EXPECT_TRUE(first.alexander_preserved);
   EXPECT_EQ(first.alexander, alexander(*KnotTable::global().at("3_1").pd));
   EXPECT_NE(std::find(first.table_knots.begin(), first.table_knots.end(), "3_1"), first.table_knots.end());

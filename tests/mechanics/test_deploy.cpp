@@ -26,8 +26,8 @@ Points ring() { return fixtures::circle(kVertices, 0.5 / std::sin(M_PI / kVertic
 // prescribed link carried as twist (Wr = 0 for a planar curve).
 TEST(Deploy, RingBelowMichellThresholdStaysFlat) {
   const DeployRun r = deploy_at_link(ring(), 1.0);
-  EXPECT_EQ(r.flat_status, "converged-stable");
-  EXPECT_EQ(r.status, "converged-stable");
+  EXPECT_EQ(r.flat_status, RelaxStatus::ConvergedStable);
+  EXPECT_EQ(r.status, RelaxStatus::ConvergedStable);
   EXPECT_TRUE(r.stable);
   EXPECT_FALSE(r.three_d);
   EXPECT_LT(r.threedim, 1e-6);

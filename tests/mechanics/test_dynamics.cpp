@@ -204,7 +204,7 @@ TEST(Dynamics, RingOscillatesAtItsInPlaneBendingFrequency) {
   o.duration = 2.2 * period;
   o.frame_every = 1;
   const DynamicsResult r = simulate(ring_mode2(n, 1e-3 * R), VecX::Ones(n), o);
-  ASSERT_EQ(r.status, "duration");
+  ASSERT_EQ(r.status, DynamicsStatus::Duration);
   const std::vector<double> t = zero_crossings(r, ring(n));
   ASSERT_GE(t.size(), 4u);
   const double measured = 2.0 * (t.back() - t.front()) / static_cast<double>(t.size() - 1);
@@ -227,7 +227,7 @@ TEST(Dynamics, BackwardEulerDissipatesAtFirstOrderInTheTimeStep) {
     o.time_step = period / steps;
     o.duration = period;
     const DynamicsResult r = simulate(start, VecX::Ones(n), o);
-    ASSERT_EQ(r.status, "duration");
+    ASSERT_EQ(r.status, DynamicsStatus::Duration);
     const double e0 = total(r.frames.front()) - base, e1 = total(r.frames.back()) - base;
     ASSERT_GT(e0, 0.0);
     lost.push_back(1.0 - e1 / e0);
@@ -291,7 +291,7 @@ TEST(Dynamics, RingSlidingOnAPlateStopsAtTheCoulombDistance) {
     o.duration = 2.0 * v0 / (mu * g);
     o.rest_speed = 1e-6;
     const DynamicsResult r = simulate(start, VecX::Ones(n), o, v);
-    ASSERT_EQ(r.status, "rest") << "mu " << mu;
+    ASSERT_EQ(r.status, DynamicsStatus::Rest) << "mu " << mu;
     // [0.1%] v²/(2μg) less backward Euler's v h/2 (each step moves by h times the velocity at its end)
     const double distance = v0 * v0 / (2 * mu * g) - v0 * o.time_step / 2;
     EXPECT_NEAR((mean_x(r.positions) - mean_x(start)) / distance, 1.0, 1e-3) << "mu " << mu;
@@ -301,7 +301,7 @@ TEST(Dynamics, RingSlidingOnAPlateStopsAtTheCoulombDistance) {
   o.friction = 0.0;  // no friction: it slides on at v
   o.duration = 10.0;
   const DynamicsResult r = simulate(start, VecX::Ones(n), o, v);
-  EXPECT_EQ(r.status, "duration");
+  EXPECT_EQ(r.status, DynamicsStatus::Duration);
   EXPECT_NEAR(mean_x(r.positions) - mean_x(start), v0 * 10.0, 1e-6);
 }
 
@@ -322,7 +322,7 @@ TEST(Dynamics, RingFollowsTheOpeningEnvelope) {
   o.duration = duration;
   const double gap = f.z + f.plates.half_thickness;
   const DynamicsResult r = simulate(ring(n, f.plates.half_thickness - gap), VecX::Ones(n), o);
-  ASSERT_EQ(r.status, "duration") << r.failed_status;
+  ASSERT_EQ(r.status, DynamicsStatus::Duration) << (r.failed_status ? to_string(*r.failed_status) : "");
   // [5% of the distance] the viscous drag γ m s takes 5% of the weight off the barrier (measured 0.0045)
   const double plate = f.plates.half_thickness + speed * duration;
   EXPECT_LT(std::abs(r.positions.col(2).mean() - (plate - gap)), 0.05 * gap);
@@ -341,7 +341,7 @@ TEST(Dynamics, StrongDampingEndsAtTheStaticEquilibrium) {
   o.duration = 1e5;
   o.rest_speed = 1e-9;
   const DynamicsResult r = simulate(start, rest, o);
-  ASSERT_EQ(r.status, "rest");
+  ASSERT_EQ(r.status, DynamicsStatus::Rest);
   EXPECT_TRUE(r.alexander_preserved);
   // [1e-3 RMS, 1e-6 relative energy] the relaxation's equilibrium, after the best rigid motion
   const Points aligned = align_onto(r.positions, eq.positions);
@@ -359,7 +359,7 @@ TEST(Dynamics, ViolentMotionKeepsTheKnotType) {
   o.friction = 0.3;
   const Points v = 3.0 * fixtures::random_fourier_curve(60, 4, 9);  // strands thrown through each other
   const DynamicsResult r = simulate(eq.positions, edge_lengths(P), o, v);
-  EXPECT_EQ(r.status, "duration") << r.failed_status;
+  EXPECT_EQ(r.status, DynamicsStatus::Duration) << (r.failed_status ? to_string(*r.failed_status) : "");
   EXPECT_TRUE(r.alexander_preserved);
   EXPECT_GT(r.max_speed, 1.0);
   int touching = 0;
@@ -375,7 +375,7 @@ TEST(Dynamics, FullModelKeepsItsLink) {
   o.time_step = 1.0;
   o.duration = 20.0;
   const DynamicsResult r = simulate(ring_mode2(n, 0.01 * R), VecX::Ones(n), o);
-  EXPECT_EQ(r.status, "duration") << r.failed_status;
+  EXPECT_EQ(r.status, DynamicsStatus::Duration) << (r.failed_status ? to_string(*r.failed_status) : "");
   EXPECT_EQ(r.model, "fixed-link");
   EXPECT_NEAR(r.link, 1.0, 1e-6);
 }

@@ -170,7 +170,7 @@ TEST(KnotLoading, PressedEightOneSnapReleasesEnergyAtItsControl) {
   EXPECT_LT(before.energy - after.energy, 0.0) << "the cross-control difference";
   EXPECT_LT(before.lowest_eigenvalue, 1e-6);
   EXPECT_GT(s.jump, 0.1);
-  EXPECT_EQ(s.released_status, "converged-stable");
+  EXPECT_EQ(s.released_status, RelaxStatus::ConvergedStable);
   EXPECT_NEAR(s.released_energy, 0.9793881171, 1e-8);
   std::cout << "[ measured ] 8_1 pressed: snap at gap " << s.parameter << ", released " << s.energy_drop
             << " at one control; across the step " << before.energy - after.energy << "; lowest eigenvalue before "
@@ -259,7 +259,7 @@ TEST(KnotLoading, PressedTrefoilSnapsAndItsReleasedStateIsATrefoil) {
   EXPECT_GT(s.reaction, 0.0);
   EXPECT_GT(s.parameter, o.to);
   EXPECT_TRUE(s.alexander_preserved);
-  EXPECT_EQ(s.released_status, "converged-stable");
+  EXPECT_EQ(s.released_status, RelaxStatus::ConvergedStable);
   EXPECT_EQ(alexander(s.released), alexander(P));
   std::cout << "[ measured ] plates: snap at gap " << s.parameter << ", force " << s.reaction << ", jump " << s.jump
             << ", energy drop " << s.energy_drop << ", released E " << s.released_energy << std::endl;

@@ -115,7 +115,7 @@ TEST(LinkRelax, HopfLinkRelaxesToTwoRoundRings) {
   const Link link{circle(40, Vec3::Zero(), 5.0, Vec3::UnitX(), Vec3::UnitY()),
                   circle(40, Vec3(5.0, 0.0, 0.0), 5.0, Vec3::UnitX(), Vec3::UnitZ())};
   const LinkRelaxResult r = relax_link(link);
-  EXPECT_EQ(r.status(), "converged-stable");
+  EXPECT_EQ(r.status(), RelaxStatus::ConvergedStable);
   EXPECT_TRUE(r.alexander_preserved && r.linking_preserved && r.conway_preserved);
   EXPECT_EQ(r.linking_numbers(0, 1), -1);
   EXPECT_EQ(r.conway.to_string(), "[0, 1]");
@@ -136,7 +136,7 @@ TEST(LinkRelax, TorusLinkKeepsItsLinkingNumberInContact) {
   LinkModel start(link, RelaxOptions{});
   const double e0 = start.objective().energy();
   const LinkRelaxResult r = relax_link(link);
-  EXPECT_EQ(r.status(), "converged-stable");
+  EXPECT_EQ(r.status(), RelaxStatus::ConvergedStable);
   EXPECT_LT(r.energy, e0);
   EXPECT_NEAR(linking_number(r.positions[0], r.positions[1]), lk, 1e-9);
   for (const Points& P : r.positions) EXPECT_EQ(alexander(P).to_string(), "[1]");

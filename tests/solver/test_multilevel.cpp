@@ -79,7 +79,7 @@ TEST(Multilevel, RelaxesThroughTheCoarseLevels) {
   RelaxOptions o;
   o.newton.record_trace = true;
   const RelaxResult r = relax(P, o);
-  ASSERT_EQ(r.status(), "converged-stable");
+  ASSERT_EQ(r.status(), RelaxStatus::ConvergedStable);
   EXPECT_TRUE(r.alexander_preserved);
   EXPECT_EQ(r.coarse_vertices, (std::vector<int>{100}));
   ASSERT_EQ(r.coarse_reports.size(), 1u);

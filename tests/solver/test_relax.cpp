@@ -32,7 +32,7 @@ TEST(Relax, MichellRingStaysFlatBelowCriticalLink) {
   RelaxOptions o;
   o.link = 2.0;
   const RelaxResult r = relax(unit_ring(100), o);
-  EXPECT_EQ(r.status(), "converged-stable");
+  EXPECT_EQ(r.status(), RelaxStatus::ConvergedStable);
   EXPECT_NEAR(r.link, 2.0, 1e-8);                            // link preserved (tolerance: round-off of Tw + Wr)
   EXPECT_LT(r.positions.col(2).cwiseAbs().maxCoeff(), 1e-6);  // still planar
   EXPECT_NEAR(total_curvature(r.positions), 2 * M_PI, 1e-6);  // still a circle
@@ -42,7 +42,7 @@ TEST(Relax, MichellRingLeavesThePlaneAboveCriticalLink) {
   RelaxOptions o;
   o.link = 2.5;
   const RelaxResult r = relax(unit_ring(100), o);
-  EXPECT_EQ(r.status(), "converged-stable");
+  EXPECT_EQ(r.status(), RelaxStatus::ConvergedStable);
   EXPECT_GE(r.report.saddle_escapes, 1);  // the flat ring is a saddle: left along negative curvature
   EXPECT_NEAR(r.link, 2.5, 1e-8);         // link preserved while twist turns into writhe
   EXPECT_GT(std::fabs(r.writhe), 0.5);    // measured ≈ 2.1: it left the plane
@@ -60,7 +60,7 @@ TEST(Relax, StopsAtSaddleWhenAsked) {
   o.link = 2.5;
   o.stop_at_critical_point = true;
   const RelaxResult r = relax(unit_ring(100), o);
-  EXPECT_EQ(r.status(), "converged-unstable");
+  EXPECT_EQ(r.status(), RelaxStatus::ConvergedUnstable);
   EXPECT_FALSE(r.stable());
 }
 
@@ -68,7 +68,7 @@ TEST(Relax, PeerFilesRelaxAsTheyAre) {
   for (const char* f : {"4_1-smooth.obj", "9_47-cubiclattice.txt"}) {
     const Points P = read_curve(fixtures::peer_dir() + "/" + f);
     const RelaxResult r = relax(P);
-    EXPECT_EQ(r.status(), "converged-stable") << f;
+    EXPECT_EQ(r.status(), RelaxStatus::ConvergedStable) << f;
     EXPECT_TRUE(r.alexander_preserved) << f;
     EXPECT_LE(r.report.gradient_norm, 1e-8) << f;
     // no two non-adjacent edges closer than half the wire diameter at equilibrium
@@ -86,12 +86,12 @@ TEST(Relax, FastPathAndFullModelReachTheSameEnergy) {
   // an equilibrium there, with the same energy and zero twist.
   const Points P = read_curve(fixtures::peer_dir() + "/4_1-smooth.obj");
   const RelaxResult fast = relax(P);
-  ASSERT_EQ(fast.status(), "converged-stable");
+  ASSERT_EQ(fast.status(), RelaxStatus::ConvergedStable);
   RelaxOptions full_options;
   full_options.full_model = true;
   full_options.rest_lengths = edge_lengths(P);
   const RelaxResult full = relax(fast.positions, full_options);
-  ASSERT_EQ(full.status(), "converged-stable");
+  ASSERT_EQ(full.status(), RelaxStatus::ConvergedStable);
   EXPECT_EQ(full.model, "free-theta");
   EXPECT_NEAR(full.energy.twist, 0.0, 1e-12);
   // same rest lengths: equal to 1e-8 relative (gradient tolerance 1e-8 times displacements of order 1)
@@ -100,7 +100,7 @@ TEST(Relax, FastPathAndFullModelReachTheSameEnergy) {
   RelaxOptions fast_options;
   fast_options.rest_lengths = edge_lengths(P);
   const RelaxResult back = relax(full.positions, fast_options);
-  ASSERT_EQ(back.status(), "converged-stable");
+  ASSERT_EQ(back.status(), RelaxStatus::ConvergedStable);
   EXPECT_NEAR(back.energy.total, full.energy.total, 1e-8 * full.energy.total);
 }
 
@@ -160,7 +160,7 @@ TEST(Relax, PlanaritySlabFlattensAndReleaseKeepsLink) {
   EXPECT_TRUE(r.alexander_preserved);
   EXPECT_NEAR(r.link, *o.link, 1e-6);  // the link stays Lk_B throughout (1e-6)
   EXPECT_EQ(to_string(r.slab_report->status), "converged-stable");
-  EXPECT_EQ(r.status(), "converged-stable");
+  EXPECT_EQ(r.status(), RelaxStatus::ConvergedStable);
   EXPECT_LE(r.energy.total, r.slab_energy->total + 1e-9);
 }
 
@@ -185,7 +185,7 @@ TEST(Relax, FlatCoilOfTwelveCrossingsConvergesUnderTheSlab) {
     o.max_iterations = 600;
     if (fixed_link) o.link = 0.5;
     const RelaxResult r = relax(P, o);
-    EXPECT_EQ(r.status(), "converged-stable")
+    EXPECT_EQ(r.status(), RelaxStatus::ConvergedStable)
         << (fixed_link ? "fixed link: " : "free: ") << r.report.iterations << " iterations, |g| "
         << r.report.gradient_norm;
     EXPECT_TRUE(r.alexander_preserved);
@@ -239,7 +239,7 @@ TEST(Relax, DefaultAndPaperNewtonOptionsReachStableEquilibriaOfTheSameKnot) {
     for (const RelaxOptions* o : {&paper, &defaults}) {
       const RelaxResult r = relax(c.curve, *o);
       const char* which = o == &paper ? "paper" : "default";
-      EXPECT_EQ(r.status(), "converged-stable") << c.name << " " << which;
+      EXPECT_EQ(r.status(), RelaxStatus::ConvergedStable) << c.name << " " << which;
       EXPECT_TRUE(r.alexander_preserved) << c.name << " " << which;
       EXPECT_EQ(r.result_alexander, input) << c.name << " " << which;
       EXPECT_LE(r.report.gradient_norm, tol) << c.name << " " << which;
@@ -275,7 +275,7 @@ TEST(Relax, EllipseRelaxesToTheCircleQuickly) {
     o.rest_lengths = VecX::Constant(n, L / n);
     o.newton.hessian = mode;
     const RelaxResult r = relax(P, o);
-    EXPECT_EQ(r.status(), "converged-stable") << to_string(mode);
+    EXPECT_EQ(r.status(), RelaxStatus::ConvergedStable) << to_string(mode);
     if (mode == HessianMode::Hybrid) {
       EXPECT_LE(r.report.iterations, 100);
     }
@@ -297,12 +297,12 @@ TEST(Relax, ContinuationEndsAtTheStiffModel) {
   RelaxOptions direct;
   direct.method = RelaxMethod::Direct;
   const RelaxResult d = relax(curve, direct);
-  ASSERT_EQ(d.status(), "converged-stable");
+  ASSERT_EQ(d.status(), RelaxStatus::ConvergedStable);
 
   RelaxOptions cont = direct;
   cont.contact_continuation = {1e-3};
   const RelaxResult c = relax(curve, cont);
-  ASSERT_EQ(c.status(), "converged-stable");
+  ASSERT_EQ(c.status(), RelaxStatus::ConvergedStable);
   EXPECT_EQ(c.result_alexander, input);
   ASSERT_EQ(c.continuation_reports.size(), 1u);
   const NewtonReport all = c.all_phases();
@@ -319,7 +319,7 @@ TEST(Relax, ContinuationEndsAtTheStiffModel) {
   RelaxOptions soft = direct;
   soft.contact_stiffness = 1e-3 * 1e3;  // the default ω for r = 0.2, E = 2000 is 1e3
   const RelaxResult s = relax(curve, soft);
-  ASSERT_EQ(s.status(), "converged-stable");
+  ASSERT_EQ(s.status(), RelaxStatus::ConvergedStable);
   const double dhat = 2.0 * direct.material.radius;
   const double pen_soft = dhat - s.min_distance, pen_direct = dhat - d.min_distance, pen_cont = dhat - c.min_distance;
   ASSERT_GT(pen_soft, 0.0);  // the soft solve ends in contact
@@ -346,7 +346,7 @@ TEST(Relax, ShiftHintFindsTheSameShiftsWithFewerFactorisations) {
   RelaxOptions with, without;
   without.newton.shift_hint = false;
   const RelaxResult a = relax(curve, with), b = relax(curve, without);
-  ASSERT_EQ(a.status(), "converged-stable");
+  ASSERT_EQ(a.status(), RelaxStatus::ConvergedStable);
   EXPECT_EQ(a.report.iterations, b.report.iterations);
   EXPECT_EQ(a.energy.total, b.energy.total);
   EXPECT_EQ(a.positions, b.positions);
@@ -384,4 +384,19 @@ TEST(Relax, ResolveModelComputesThePapersDefaultsAndTheirScaling) {
   EXPECT_EQ(given.tolerance, 1e-6);
   EXPECT_EQ(given.model, TwistModel::FixedLink);
   EXPECT_THROW(resolve_model(o, 0.0), std::exception);
+}
+
+// The status's text at the boundary: every status reads back from its text,
+// and a lost topology wins over the solver's status.
+TEST(Relax, StatusTextRoundTripAndTopologyFirst) {
+  for (RelaxStatus s : {RelaxStatus::ConvergedStable, RelaxStatus::ConvergedUnstable, RelaxStatus::MaxIterations,
+                        RelaxStatus::Stalled, RelaxStatus::TopologyChanged})
+    EXPECT_EQ(parse_relax_status(to_string(s)), s) << s;
+  EXPECT_EQ(to_string(RelaxStatus::TopologyChanged), "topology-changed");
+  EXPECT_EQ(relax_status(SolverStatus::ConvergedStable, false), RelaxStatus::TopologyChanged);
+  EXPECT_EQ(relax_status(SolverStatus::MaxIterations, true), RelaxStatus::MaxIterations);
+  for (SolverStatus s : {SolverStatus::ConvergedStable, SolverStatus::ConvergedUnstable, SolverStatus::MaxIterations,
+                         SolverStatus::Stalled})
+    EXPECT_EQ(to_string(relax_status(s, true)), to_string(s));  // the same texts as the solver's
+  EXPECT_THROW(parse_relax_status("converged"), InputError);
 }

@@ -173,7 +173,7 @@ TEST(SymmetricCriticalPoint, SymmetricCriticalPointsAreCriticalInTheFullSpace) {
     o.rest_lengths = edge_lengths(P);
     o.method = RelaxMethod::Direct;
     const RelaxResult r = relax(c.positions, o);
-    EXPECT_EQ(r.status(), "converged-stable");
+    EXPECT_EQ(r.status(), RelaxStatus::ConvergedStable);
     EXPECT_NEAR(r.energy.total, c.energy, 1e-9 * c.energy);
   }
 }

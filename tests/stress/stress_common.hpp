@@ -19,7 +19,7 @@ struct Tally {
   void add(const RelaxResult& r, const std::string& what) {
     const bool finite = r.positions.allFinite() && std::isfinite(r.energy.total) &&
                         std::isfinite(r.report.gradient_norm) && std::isfinite(r.link);
-    add_logged(r.status(), finite, r.alexander_preserved, what);
+    add_logged(to_string(r.status()), finite, r.alexander_preserved, what);
   }
 
   /// One run given by its status, whether its results were finite and

@@ -107,7 +107,7 @@ TEST(StressLong, VolumeOfLatticeSamples) {
       if (log) {
         char row[512];
         std::snprintf(row, sizeof row, "%d,%s,%llu,%s,%d,%.4f,%.10g,%.3e,%d\n", k, knot.name.c_str(),
-                      static_cast<unsigned long long>(so.seed), r.status().c_str(), r.report.iterations,
+                      static_cast<unsigned long long>(so.seed), to_string(r.status()).c_str(), r.report.iterations,
                       r.report.seconds, r.energy.total, r.report.gradient_norm, r.alexander_preserved ? 1 : 0);
         log << row << std::flush;
       }

@@ -67,7 +67,7 @@ TransitionGraph samples41() {
   g.cut = 0.05;
   for (const auto& p : batch.samples) {
     const RelaxResult r = relax(to_points(p), RelaxOptions{});
-    EXPECT_EQ(r.status(), "converged-stable");
+    EXPECT_EQ(r.status(), RelaxStatus::ConvergedStable);
     g.states.push_back({-1, -1, r.energy.total, r.positions});
   }
   g.energy_scale = RelaxOptions{}.material.bending_stiffness() / kVertices;

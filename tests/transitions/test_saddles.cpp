@@ -32,7 +32,7 @@ const std::vector<Points>& states() {
     std::vector<Points> s;
     for (const auto& p : batch.samples) {
       const RelaxResult r = relax(to_points(p), RelaxOptions{});
-      EXPECT_EQ(r.status(), "converged-stable");
+      EXPECT_EQ(r.status(), RelaxStatus::ConvergedStable);
       s.push_back(r.positions);
     }
     return s;

@@ -144,9 +144,9 @@ int cmd_dynamics(int argc, char** argv) {
   write_outputs(c, r, summary);
   if (c.json) {
     print_json(summary);
-    return r.status == "step-failed" ? 1 : 0;
+    return r.status == DynamicsStatus::StepFailed ? 1 : 0;
   }
-  std::cout << r.model << ", " << r.status << (r.failed_status.empty() ? "" : " (" + r.failed_status + ")") << " at t = "
+  std::cout << r.model << ", " << r.status << (r.failed_status ? " (" + to_string(*r.failed_status) + ")" : "") << " at t = "
             << fmt(r.time) << " after " << r.steps << " steps (" << r.newton_iterations << " Newton iterations, "
             << fmt(seconds, 3) << " s)\n"
             << "elastic energy " << fmt(summary["start_energy"].get<double>()) << " -> "
@@ -154,7 +154,7 @@ int cmd_dynamics(int argc, char** argv) {
             << " -> " << fmt(summary["end_threedim"].get<double>()) << " (max "
             << fmt(summary["max_threedim"].get<double>()) << "), max speed " << fmt(r.max_speed) << "\n"
             << "wrote " << c.out << "\n";
-  return r.status == "step-failed" ? 1 : 0;
+  return r.status == DynamicsStatus::StepFailed ? 1 : 0;
 }
 
 }  // namespace ek::cli

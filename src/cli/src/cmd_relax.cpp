@@ -104,7 +104,7 @@ Json link_result_json(const RelaxCommand& c, const LinkRelaxResult& r) {
   Json j;
   j["file"] = c.file;
   j.update(link_relax_json(r));
-  if (!c.out.empty() && r.status() != "topology-changed") j["output"] = c.out;
+  if (!c.out.empty() && r.status() != RelaxStatus::TopologyChanged) j["output"] = c.out;
   return j;
 }
 

@@ -44,7 +44,7 @@ JournalRun run_one(const Points& sample, int index, std::uint64_t seed, const Ex
     RelaxOptions ro = o.relax;
     ro.smallest_eigenvalue = o.stiffness;
     const RelaxResult r = relax(sample, ro);
-    out.record.status = r.status();
+    out.record.status = to_string(r.status());
     const NewtonReport all = r.all_phases();
     out.record.iterations = all.iterations;
     out.record.seconds = all.seconds;
@@ -662,7 +662,7 @@ JournalRun run_link_one(const Link& sample, int index, std::uint64_t seed, const
   out.stiffness = std::numeric_limits<double>::quiet_NaN();
   try {
     const LinkRelaxResult r = relax_link(sample, o.relax);
-    out.record.status = r.status();
+    out.record.status = to_string(r.status());
     out.record.iterations = r.report.iterations;
     out.record.seconds = r.report.seconds;
     for (const NewtonReport& c : r.continuation_reports) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <ostream>
 #include <sstream>
 
 #include "ek/contact/barrier.hpp"
@@ -271,6 +272,18 @@ struct Motion {
 
 }  // namespace
 
+std::string to_string(DynamicsStatus status) {
+  switch (status) {
+    case DynamicsStatus::Rest: return "rest";
+    case DynamicsStatus::Duration: return "duration";
+    case DynamicsStatus::StepFailed: return "step-failed";
+    case DynamicsStatus::TopologyChanged: return "topology-changed";
+  }
+  return "unknown";
+}
+
+std::ostream& operator<<(std::ostream& out, DynamicsStatus status) { return out << to_string(status); }
+
 DynamicsResult simulate(const Points& start, const VecX& rest, const DynamicsOptions& o, const Points& velocity) {
   o.validate();
   const int n = static_cast<int>(start.rows());
@@ -301,7 +314,7 @@ DynamicsResult simulate(const Points& start, const VecX& rest, const DynamicsOpt
   r.frames.push_back(m.frame(0.0, x, v, masses, 0));
   r.max_speed = r.frames.back().max_speed;
   r.max_kinetic = r.frames.back().kinetic;
-  r.status = "duration";
+  r.status = DynamicsStatus::Duration;
   int slow_steps = 0;
   bool framed = true;
   while (r.time < o.duration * (1.0 - 1e-12)) {
@@ -311,8 +324,8 @@ DynamicsResult simulate(const Points& start, const VecX& rest, const DynamicsOpt
     r.newton_iterations += rep.iterations;
     if (rep.status != SolverStatus::ConvergedStable && rep.status != SolverStatus::ConvergedUnstable) {
       m.rod.restore(before);
-      r.status = "step-failed";
-      r.failed_status = to_string(rep.status);
+      r.status = DynamicsStatus::StepFailed;
+      r.failed_status = rep.status;
       break;
     }
     const Points next = m.rod.positions();
@@ -327,7 +340,7 @@ DynamicsResult simulate(const Points& start, const VecX& rest, const DynamicsOpt
     slow_steps = f.max_speed < o.rest_speed ? slow_steps + 1 : 0;
     if (framed) r.frames.push_back(f);
     if (o.rest_speed > 0.0 && slow_steps >= o.rest_steps) {
-      r.status = "rest";
+      r.status = DynamicsStatus::Rest;
       r.rest_time = r.time;
       break;
     }
@@ -338,7 +351,7 @@ DynamicsResult simulate(const Points& start, const VecX& rest, const DynamicsOpt
   r.theta = m.rod.thetas();
   r.link = m.rod.model() == TwistModel::TwistFree ? 0.0 : m.rod.link();
   r.alexander_preserved = alexander(x) == a0;
-  if (!r.alexander_preserved) r.status = "topology-changed";
+  if (!r.alexander_preserved) r.status = DynamicsStatus::TopologyChanged;
   return r;
 }
 

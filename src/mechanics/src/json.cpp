@@ -40,7 +40,7 @@ Json knot_load_json(const KnotLoadOptions& o, const KnotLoadResult& r, const Jso
     sj["jump"] = json_number(s.jump);
     sj["energy_drop"] = json_number(s.energy_drop);
     sj["loaded_energy"] = json_number(s.loaded_energy);
-    sj["released_status"] = s.released_status;
+    sj["released_status"] = to_string(s.released_status);
     sj["released_energy"] = json_number(s.released_energy);
     sj["released_match"] = released_matches[k];
     j["snaps"].push_back(sj);
@@ -67,8 +67,8 @@ Json dynamics_json(const DynamicsOptions& o, const DynamicsResult& r, const Json
   j["friction_velocity"] = json_number(o.friction_velocity);
   j["envelope"] = o.envelope ? json_number(o.envelope->half_thickness) : Json(nullptr);
   j["envelope_speed"] = json_number(o.envelope_speed);
-  j["status"] = r.status;
-  j["failed_status"] = r.failed_status.empty() ? Json(nullptr) : Json(r.failed_status);
+  j["status"] = to_string(r.status);
+  j["failed_status"] = r.failed_status ? Json(to_string(*r.failed_status)) : Json(nullptr);
   j["steps"] = r.steps;
   j["time"] = json_number(r.time);
   j["rest_time"] = r.rest_time ? json_number(*r.rest_time) : Json(nullptr);

@@ -43,7 +43,7 @@ Result relax_link_components(const py::list& components, const RelaxRequest& req
     py::gil_scoped_release release;
     r = relax_link(link, request.options());
   }
-  if (r.status() == "topology-changed")
+  if (r.status() == RelaxStatus::TopologyChanged)
     throw TopologyError("relax: a component's Alexander polynomial or a linking number changed");
   if (output) write_link(*output, r.positions);
   Result result = result_from_json(link_relax_json(r), "relax_link");

@@ -62,7 +62,7 @@ Json curve_energy_json(const CurveEnergy& e) {
 Json relax_json(const RelaxResult& r, const std::string& method) {
   const NewtonReport all = r.all_phases();
   Json j;
-  j["status"] = r.status();
+  j["status"] = to_string(r.status());
   j["converged"] = r.converged();
   j["stable"] = r.stable();
   j["iterations"] = r.report.iterations;
@@ -101,7 +101,7 @@ Json link_relax_json(const LinkRelaxResult& r) {
   int vertices = 0;
   for (const Points& P : r.positions) vertices += static_cast<int>(P.rows());
   j["vertices"] = vertices;
-  j["status"] = r.status();
+  j["status"] = to_string(r.status());
   j["iterations"] = r.report.iterations;
   j["seconds"] = json_number(r.report.seconds);
   j["energy"] = json_number(r.energy);

@@ -170,9 +170,7 @@ bool LinkRelaxResult::converged() const {
   return report.status == SolverStatus::ConvergedStable || report.status == SolverStatus::ConvergedUnstable;
 }
 
-std::string LinkRelaxResult::status() const {
-  return topology_preserved() ? to_string(report.status) : "topology-changed";
-}
+RelaxStatus LinkRelaxResult::status() const { return relax_status(report.status, topology_preserved()); }
 
 LinkRelaxResult relax_link(const Link& link, const RelaxOptions& options) {
   LinkModel m(link, options);

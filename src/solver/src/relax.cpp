@@ -6,6 +6,7 @@
 #include <cmath>
 #include <map>
 #include <mutex>
+#include <ostream>
 #include <tuple>
 
 #include "ek/core/errors.hpp"
@@ -258,7 +259,42 @@ bool RelaxResult::converged() const {
   return report.status == SolverStatus::ConvergedStable || report.status == SolverStatus::ConvergedUnstable;
 }
 bool RelaxResult::stable() const { return report.status == SolverStatus::ConvergedStable; }
-std::string RelaxResult::status() const { return alexander_preserved ? to_string(report.status) : "topology-changed"; }
+RelaxStatus RelaxResult::status() const { return relax_status(report.status, alexander_preserved); }
+
+namespace {
+
+const std::pair<RelaxStatus, const char*> kRelaxStatusNames[] = {
+    {RelaxStatus::ConvergedStable, "converged-stable"}, {RelaxStatus::ConvergedUnstable, "converged-unstable"},
+    {RelaxStatus::MaxIterations, "max-iterations"},     {RelaxStatus::Stalled, "stalled"},
+    {RelaxStatus::TopologyChanged, "topology-changed"},
+};
+
+}  // namespace
+
+std::string to_string(RelaxStatus status) {
+  for (const auto& [s, name] : kRelaxStatusNames)
+    if (s == status) return name;
+  return "unknown";
+}
+
+RelaxStatus parse_relax_status(const std::string& text) {
+  for (const auto& [s, name] : kRelaxStatusNames)
+    if (text == name) return s;
+  throw InputError("unknown relaxation status '" + text + "'");
+}
+
+RelaxStatus relax_status(SolverStatus solver, bool topology_preserved) {
+  if (!topology_preserved) return RelaxStatus::TopologyChanged;
+  switch (solver) {
+    case SolverStatus::ConvergedStable: return RelaxStatus::ConvergedStable;
+    case SolverStatus::ConvergedUnstable: return RelaxStatus::ConvergedUnstable;
+    case SolverStatus::MaxIterations: return RelaxStatus::MaxIterations;
+    case SolverStatus::Stalled: return RelaxStatus::Stalled;
+  }
+  return RelaxStatus::Stalled;
+}
+
+std::ostream& operator<<(std::ostream& out, RelaxStatus status) { return out << to_string(status); }
 
 double cached_lambda_min(int n, double edge_length, const RodMaterial& m, TwistModel model) {
   static std::mutex mutex;

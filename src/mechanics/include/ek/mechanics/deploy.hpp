@@ -51,10 +51,10 @@ struct DeployOptions {
 /// One coil relaxed at one prescribed link, under the slab and released.
 struct DeployRun {
   double link = 0.0;          ///< [turns] prescribed Lk
-  std::string flat_status;    ///< solver status at the end of the slab phase
+  RelaxStatus flat_status = RelaxStatus::Stalled;  ///< at the end of the slab phase
   double flat_energy = 0.0;   ///< [energy] at the end of the slab phase (slab barrier included)
   double flat_writhe = 0.0;   ///< [turns] of the flat state
-  std::string status;         ///< RelaxResult::status() after the release
+  RelaxStatus status = RelaxStatus::Stalled;       ///< RelaxResult::status() after the release
   double energy = 0.0;        ///< [energy] after the release
   double threedim = 0.0;      ///< [1] after the release
   double writhe = 0.0;        ///< [turns] after the release

@@ -48,6 +48,7 @@
 /// Units: consistent but arbitrary as for the rod (material.hpp), with
 /// [pressure] = [mass]/([length]·[time]²): lengths in metres, E in pascals
 /// and ρ in kg/m³ give times in seconds.
+#include <iosfwd>
 #include <optional>
 #include <string>
 #include <vector>
@@ -172,13 +173,23 @@ struct DynamicsFrame {
   int newton_iterations = 0;         ///< [1] of the step that ended here (0 at t = 0)
 };
 
+/// How simulate() ended.
+enum class DynamicsStatus {
+  Rest,             ///< "rest": came to rest
+  Duration,         ///< "duration": the time ran out
+  /// "step-failed": a step's Newton solve did not converge (the run ends at
+  /// the last step that did)
+  StepFailed,
+  /// "topology-changed": the Alexander polynomial differs from the start's
+  /// (an error, never a silent result)
+  TopologyChanged,
+};
+std::string to_string(DynamicsStatus status);  ///< the texts above
+std::ostream& operator<<(std::ostream& out, DynamicsStatus status);  ///< prints to_string(status)
+
 /// What simulate() did: its status, frames and end state.
 struct DynamicsResult {
-  /// "rest" (came to rest), "duration" (the time ran out), "step-failed"
-  /// (a step's Newton solve did not converge: the run ends at the last
-  /// step that did) or "topology-changed" (the Alexander polynomial differs
-  /// from the start's: an error, never a silent result).
-  std::string status;
+  DynamicsStatus status = DynamicsStatus::Duration;
   std::vector<DynamicsFrame> frames; ///< every frame_every steps, the first and the last
   Points positions;                  ///< n by 3 at the end
   Points velocities;                 ///< n by 3 at the end
@@ -190,7 +201,7 @@ struct DynamicsResult {
   double max_kinetic = 0.0;          ///< [energy] over the run
   int steps = 0;                     ///< [1]
   int newton_iterations = 0;         ///< [1] over all steps
-  std::string failed_status;         ///< the solver status of a failed step
+  std::optional<SolverStatus> failed_status;  ///< the solver status of a failed step
   bool alexander_preserved = true;   ///< the end's Alexander polynomial is the start's
   std::string model;                 ///< "twist-free", "free-theta" or "fixed-link"
 };

@@ -80,7 +80,7 @@ struct Snap {
   Points loaded;                  ///< n by 3: the stable state it falls into under the load
   double loaded_energy = 0.0;     ///< [energy] E_knot + E_load there
   Points released;                ///< n by 3: that state relaxed without the load
-  std::string released_status;    ///< RelaxResult::status()
+  RelaxStatus released_status = RelaxStatus::Stalled;  ///< RelaxResult::status()
   double released_energy = 0.0;   ///< [energy]
   /// the state it falls into and its released state have the start's Alexander polynomial
   bool alexander_preserved = true;

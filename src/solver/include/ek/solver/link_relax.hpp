@@ -54,10 +54,10 @@ struct LinkRelaxResult {
   bool converged() const;  ///< Whether the solve at ω converged (stable or, with stop_at_critical_point, unstable).
   /// Every component's Alexander polynomial, every linking number and ∇ kept.
   bool topology_preserved() const { return alexander_preserved && linking_preserved && conway_preserved; }
-  /// The solver's status, or "topology-changed" when a component's
+  /// The solver's status, or TopologyChanged when a component's
   /// Alexander polynomial, a linking number or the link's Conway polynomial
   /// differs (an error, never a silent result).
-  std::string status() const;
+  RelaxStatus status() const;
 };
 
 /// The link's model at a configuration: its rods (rest lengths: the edges

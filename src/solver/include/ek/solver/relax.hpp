@@ -13,6 +13,7 @@
 /// reuse while the contact set is unchanged, and a line search capped by the
 /// continuous collision detection, so that no accepted step ever produces a
 /// crossing. The result's Alexander polynomial is compared with the input's.
+#include <iosfwd>
 #include <optional>
 #include <string>
 #include <vector>
@@ -169,6 +170,25 @@ struct EnergyParts {
   ///@}
 };
 
+/// A relaxation's outcome: the solver's status of its last phase, or
+/// TopologyChanged when the result's knot or link type differs from the
+/// input's (an error, never a silent result). Text only at the boundary
+/// (files, JSON, CSV, Python, the command line): to_string / parse_relax_status.
+enum class RelaxStatus {
+  ConvergedStable,    ///< "converged-stable"
+  ConvergedUnstable,  ///< "converged-unstable" (only with stop_at_critical_point)
+  MaxIterations,      ///< "max-iterations"
+  Stalled,            ///< "stalled"
+  TopologyChanged,    ///< "topology-changed"
+};
+std::string to_string(RelaxStatus status);
+/// The status of a text written by to_string; InputError for any other text.
+RelaxStatus parse_relax_status(const std::string& text);
+/// The solver's status, or TopologyChanged when the topology was not kept.
+RelaxStatus relax_status(SolverStatus solver, bool topology_preserved);
+/// Prints to_string(status) (messages, test failures).
+std::ostream& operator<<(std::ostream& out, RelaxStatus status);
+
 /// What relax() returns: the equilibrium, the solver's reports of every
 /// phase, the energy's parts, the contacts, twist, writhe and link, and the
 /// check of the knot type.
@@ -215,9 +235,9 @@ struct RelaxResult {
 
   bool converged() const;  ///< The last phase converged, stable or (stop_at_critical_point) unstable.
   bool stable() const;     ///< The last phase converged to a stable equilibrium.
-  /// The status as reported: the solver status, or "topology-changed" when the
+  /// The solver status of the last phase, or TopologyChanged when the
   /// Alexander polynomial differs (an error, never a silent result).
-  std::string status() const;
+  RelaxStatus status() const;
 };
 
 /// The named methods of `knots relax --method` (and of explore, dataset and
