@@ -17,7 +17,7 @@ namespace ek {
 
 /// One knot's Milnor ratio as measured.
 struct KnotRatio {
-  std::string name;
+  std::string name;         ///< the knot
   double ratio = 0.0;       ///< [1] smallest total curvature / (2π · bridge index) over its equilibria
   bool two_bridge = false;  ///< bridge index 2 (the (2, q) torus knots included)
   int samples = 0;          ///< [samples] lattice samples it was relaxed from
@@ -44,11 +44,11 @@ struct KnotRatio {
 /// list with `certified` false means the claim is false at the full budget
 /// (M is exact and fewer than k 2-bridge knots lie above it).
 struct FarEndCertificate {
-  bool certified = false;
+  bool certified = false;          ///< the claim holds at the full budget
   double other_max_ratio = 0.0;    ///< [1] M (0 when every knot is 2-bridge)
   std::string other_max_knot;      ///< the knot that sets M (empty when none)
   int certified_two_bridge = 0;    ///< [1] 2-bridge knots at the budget with ratio > M
-  std::vector<std::string> to_sample;
+  std::vector<std::string> to_sample;  ///< the knots to sample at the full budget (see above); empty once decided
 };
 
 /// The certificate for the k knots of largest ratio with the full budget

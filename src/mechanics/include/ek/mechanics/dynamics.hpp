@@ -189,7 +189,7 @@ std::ostream& operator<<(std::ostream& out, DynamicsStatus status);  ///< prints
 
 /// What simulate() did: its status, frames and end state.
 struct DynamicsResult {
-  DynamicsStatus status = DynamicsStatus::Duration;
+  DynamicsStatus status = DynamicsStatus::Duration;  ///< how it ended
   std::vector<DynamicsFrame> frames; ///< every frame_every steps, the first and the last
   Points positions;                  ///< n by 3 at the end
   Points velocities;                 ///< n by 3 at the end

@@ -181,7 +181,7 @@ enum class RelaxStatus {
   Stalled,            ///< "stalled"
   TopologyChanged,    ///< "topology-changed"
 };
-std::string to_string(RelaxStatus status);
+std::string to_string(RelaxStatus status);  ///< the texts above ("converged-stable", ...)
 /// The status of a text written by to_string; InputError for any other text.
 RelaxStatus parse_relax_status(const std::string& text);
 /// The solver's status, or TopologyChanged when the topology was not kept.
