@@ -31,11 +31,6 @@ Progress: one line per piece start and end in results/SCALE/full_budget/progress
 EOF2
 }
 
-fail() {
-  echo "ledger_far_end.sh: error: $*" >&2
-  exit 2
-}
-
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 # shellcheck source=lib/commit_ledger.sh
 source "$here/scripts/lib/commit_ledger.sh"

@@ -37,11 +37,6 @@ Progress: one line per shard start and end in results/SCALE/shards/progress.log.
 EOF
 }
 
-fail() {
-  echo "ledger_shards.sh: error: $*" >&2
-  exit 2
-}
-
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 # shellcheck source=lib/commit_ledger.sh
 source "$here/scripts/lib/commit_ledger.sh"

@@ -1,4 +1,12 @@
-# Sourced by the ledger scripts. commit_ledger ROOT FILE MESSAGE: git commit
+# Sourced by the ledger scripts.
+
+# fail MESSAGE: the script's one-line error, exit status 2.
+fail() {
+  echo "${0##*/}: error: $*" >&2
+  exit 2
+}
+
+# commit_ledger ROOT FILE MESSAGE: git commit
 # FILE alone (git commit --only: whatever else is staged stays staged),
 # retrying while another git command holds the index lock.
 commit_ledger() {
