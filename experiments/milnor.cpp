@@ -69,6 +69,7 @@ double two_bridge_share(const std::vector<Row>& sorted, size_t count) {
 
 /// The far end at the full budget (far_end_certificate) into `sum`.
 void certify_far_end(const std::vector<Row>& rows, results::MilnorSummary& sum) {
+  if (rows.empty()) return;  // nothing to certify (budget 0)
   std::vector<KnotRatio> ratios;
   for (const Row& r : rows) ratios.push_back({r.name, r.ratio, r.bridge == 2, r.samples});
   const FarEndCertificate c = far_end_certificate(ratios, static_cast<int>(sum.far_end_size), static_cast<int>(sum.budget));
@@ -150,6 +151,8 @@ int main(int argc, char** argv) {
     results::MilnorSummary sum;
     sum.scale = a.scale_name;
     sum.budget = knots.budget;
+    for (const Row& r : rows)  // a data set without its sampling recorded: its largest sample count
+      if (knots.budget < 1) sum.budget = std::max<long>(sum.budget, r.samples);
     note_full_budget(knots, sum);
     fill_summary(rows, sum);
     write_summary(a, sum);
