@@ -151,8 +151,6 @@ int main(int argc, char** argv) {
     results::MilnorSummary sum;
     sum.scale = a.scale_name;
     sum.budget = knots.budget;
-    for (const Row& r : rows)  // a data set without its sampling recorded: its largest sample count
-      if (knots.budget < 1) sum.budget = std::max<long>(sum.budget, r.samples);
     note_full_budget(knots, sum);
     fill_summary(rows, sum);
     write_summary(a, sum);

@@ -67,7 +67,8 @@ namespace {
 void put_full_budget(const std::string& folder, ResultsKnots& r) {
   const Ledger extra = read_ledger_folder(folder);
   DatasetMetadata theirs = extra.parameters;
-  if (r.budget < 1) throw InputError("full-budget ledgers in '" + folder + "', but the scale's sampling is not recorded");
+  if (!r.parameters.sampling)
+    throw InputError("full-budget ledgers in '" + folder + "', but the scale's sampling is not recorded");
   const std::string& own = *r.parameters.sampling;  // the same walk: its burn-in too
   const size_t burn_in = own.find(",burn-in=");
   const std::string fixed = "fixed:" + std::to_string(r.budget) + (burn_in == std::string::npos ? "" : own.substr(burn_in));
@@ -105,6 +106,8 @@ ResultsKnots read_results_knots(const std::string& folder, double cut, bool full
     throw InputError("neither a data set '" + dataset + "' nor a ledger folder '" + ledgers + "'");
   }
   r.budget = sampling_budget(r.parameters);
+  if (r.budget < 1)  // not recorded: the largest sample count stands for it
+    for (const LedgerEntry& e : r.entries) r.budget = std::max(r.budget, static_cast<int>(e.runs.size()));
   const std::string extra = folder + "/full_budget";
   if (full_budget && !ledger_files(extra).empty()) put_full_budget(extra, r);
   return r;

@@ -152,7 +152,9 @@ struct ResultsKnots {
   std::vector<LedgerEntry> entries;   ///< the folder's knots in its order, each full-budget entry in place
   DatasetMetadata parameters;         ///< the folder's parameters (its data set's or its ledgers')
   std::string source;                 ///< what was read: the data set, or the ledger folder
-  int budget = 0;                     ///< [samples] sampling_budget(parameters)
+  /// [samples] sampling_budget(parameters), or, when the sampling is not
+  /// recorded, the largest number of runs of a knot
+  int budget = 0;
   std::vector<LedgerEntry> replaced;  ///< the folder's own entries that full-budget ones replaced
 };
 
