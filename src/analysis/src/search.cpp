@@ -7,7 +7,7 @@
 #include "ek/core/errors.hpp"
 #include "ek/geometry/resample.hpp"
 #include "ek/geometry/rigid.hpp"
-#include "ek/geometry/segment_distance.hpp"
+#include "ek/geometry/nearest_segment.hpp"
 
 namespace ek {
 
@@ -18,40 +18,22 @@ Points centred(const Points& P) { return P.rowwise() - P.colwise().mean(); }
 /// Symmetric RMS of point-to-polygon distances between two closed polygons.
 double symmetric_rms(const Points& A, const Points& B) {
   auto one_way = [](const Points& X, const Points& P) {
-    const auto m = P.rows();
+    const NearestSegment segments(P);
     double sum = 0.0;
-    for (Eigen::Index i = 0; i < X.rows(); ++i) {
-      const Vec3 x = X.row(i).transpose();
-      double best = std::numeric_limits<double>::infinity();
-      for (Eigen::Index j = 0; j < m; ++j)
-        best = std::min(best, point_segment_distance_squared(x, P.row(j).transpose(), P.row((j + 1) % m).transpose()));
-      sum += best;
-    }
+    for (Eigen::Index i = 0; i < X.rows(); ++i) sum += segments.nearest(X.row(i).transpose()).distance_squared;
     return sum;
   };
   return std::sqrt((one_way(A, B) + one_way(B, A)) / static_cast<double>(A.rows() + B.rows()));
   // (vertices of A to the polygon B and vertices of B to the polygon A)
 }
 
-/// Closest point on the closed polygon P to x (brute force over the segments);
+/// Closest point on the closed polygon `segments` (of the vertices P) to x;
 /// writes the unit direction of its segment.
-Vec3 closest_on_polygon(const Vec3& x, const Points& P, Vec3* tangent = nullptr) {
-  const auto n = P.rows();
-  double best = std::numeric_limits<double>::infinity();
-  Eigen::Index bj = 0;
-  double bt = 0.0;
-  for (Eigen::Index j = 0; j < n; ++j) {
-    double t = 0.0;
-    const double d2 = point_segment_distance_squared(x, P.row(j).transpose(), P.row((j + 1) % n).transpose(), &t);
-    if (d2 < best) {
-      best = d2;
-      bj = j;
-      bt = t;
-    }
-  }
-  const Vec3 a = P.row(bj).transpose(), e = P.row((bj + 1) % n).transpose() - a;
+Vec3 closest_on_polygon(const Vec3& x, const Points& P, const NearestSegment& segments, Vec3* tangent = nullptr) {
+  const NearestSegmentHit hit = segments.nearest(x);
+  const Vec3 a = P.row(hit.segment).transpose(), e = P.row((hit.segment + 1) % P.rows()).transpose() - a;
   if (tangent) *tangent = e.norm() > 0.0 ? Vec3(e.normalized()) : Vec3::Zero();
-  return a + bt * e;
+  return a + hit.t * e;
 }
 
 struct Start {
@@ -213,11 +195,12 @@ bool polish_step(const Points& query, const Points& Q, const Points& Csym, const
   PointToLine ne;
   ne.c = Q.colwise().mean().transpose();
   const Vec3& c = ne.c;
+  const NearestSegment to_candidate(Corig), to_query(query);
   for (int k = 0; k < m; ++k) {
     Vec3 tg;
-    const Vec3 y = closest_on_polygon(Q.row(k).transpose(), Corig, &tg);
+    const Vec3 y = closest_on_polygon(Q.row(k).transpose(), Corig, to_candidate, &tg);
     ne.add_pair(y, Q.row(k).transpose(), tg);
-    const Vec3 x = closest_on_polygon(Cmoved.row(k).transpose(), query, &tg);
+    const Vec3 x = closest_on_polygon(Cmoved.row(k).transpose(), query, to_query, &tg);
     ne.add_pair(Cmoved.row(k).transpose(), x, tg);
   }
   // damped solve: a circle's rotation about its axis is a free direction

@@ -8,7 +8,7 @@
 
 #include "ek/core/errors.hpp"
 #include "ek/geometry/polyline.hpp"
-#include "ek/geometry/segment_distance.hpp"
+#include "ek/geometry/nearest_segment.hpp"
 #include "ek/knots/diagram.hpp"
 
 namespace ek {
@@ -39,14 +39,11 @@ double rotational_symmetry_error(const Link& link, const Vec3& c, const Vec3& ax
     for (Eigen::Index i = 0; i < P.rows(); ++i, ++vertices) rg += (P.row(i).transpose() - c).squaredNorm();
   rg = std::sqrt(rg / static_cast<double>(vertices));
   if (rg == 0.0) return 0.0;
+  const NearestSegment segments(link);
   for (const Points& P : link)
     for (Eigen::Index i = 0; i < P.rows(); ++i) {
       const Vec3 q = c + R * (P.row(i).transpose() - c);
-      double best = 1e300;
-      for (const Points& Q : link)
-        for (Eigen::Index j = 0; j < Q.rows(); ++j)
-          best = std::min(best, point_segment_distance_squared(q, Q.row(j).transpose(), Q.row((j + 1) % Q.rows()).transpose()));
-      sum += std::sqrt(best);
+      sum += std::sqrt(std::min(1e300, segments.nearest(q).distance_squared));
     }
   return sum / static_cast<double>(vertices) / rg;
 }

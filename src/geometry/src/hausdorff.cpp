@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "ek/core/errors.hpp"
+#include "ek/geometry/nearest_segment.hpp"
 #include "ek/geometry/segment_distance.hpp"
 
 namespace ek {
@@ -17,16 +18,9 @@ struct Nearest {
   Eigen::Index segment;
 };
 
-Nearest nearest_segment(const Vec3& x, const Points& P, bool closed) {
-  const Eigen::Index n = P.rows();
-  const Eigen::Index segments = closed ? n : n - 1;
-  Nearest best{std::numeric_limits<double>::infinity(), 0};
-  for (Eigen::Index j = 0; j < segments; ++j) {
-    const double d2 = point_segment_distance_squared(x, P.row(j).transpose(), P.row((j + 1) % n).transpose());
-    if (d2 < best.distance) best = {d2, j};
-  }
-  best.distance = std::sqrt(best.distance);
-  return best;
+Nearest nearest_segment(const Vec3& x, const NearestSegment& B) {
+  const NearestSegmentHit hit = B.nearest(x);
+  return {std::sqrt(hit.distance_squared), hit.segment};
 }
 
 /// One piece [s0, s1] of segment `segment` of A: the distances f0, f1 to B at
@@ -69,9 +63,10 @@ Directed directed_hausdorff(const Points& A, const Points& B, bool closed, doubl
   const Eigen::Index n = A.rows();
   const Eigen::Index segments = closed ? n : n - 1;
   Directed d;
+  const NearestSegment tree(B, closed);
   auto f = [&](const Vec3& x) {
     ++d.evaluations;
-    return nearest_segment(x, B, closed);
+    return nearest_segment(x, tree);
   };
   std::vector<Nearest> at_vertex;
   d.value = -1.0;
@@ -115,7 +110,7 @@ void HausdorffOptions::validate() const {
 
 double point_polyline_distance(const Vec3& x, const Points& P, bool closed) {
   require(P.rows() >= 2, "point_polyline_distance: at least 2 vertices expected");
-  return nearest_segment(x, P, closed).distance;
+  return nearest_segment(x, NearestSegment(P, closed)).distance;
 }
 
 HausdorffDistance hausdorff_distance(const Points& A, const Points& B, const HausdorffOptions& options) {
