@@ -9,7 +9,7 @@
 # level, does not change.
 set(EK_PCH_HEADERS <Eigen/Core> <Eigen/Dense> <Eigen/Sparse> <algorithm> <cmath> <functional> <map> <memory>
                    <string> <vector>)
-if(CMAKE_BUILD_TYPE STREQUAL "Release" AND CMAKE_CXX_COMPILER_ID STREQUAL "GNU" AND NOT EK_PARSERS_ONLY)
+if((CMAKE_BUILD_TYPE STREQUAL "Release" AND CMAKE_CXX_COMPILER_ID STREQUAL "GNU" AND NOT EK_PARSERS_ONLY) OR EK_FUZZ)
   add_library(ek_lib_pch STATIC ${PROJECT_SOURCE_DIR}/cmake/pch_owner.cpp)
   target_link_libraries(ek_lib_pch PRIVATE Eigen3::Eigen ek_warnings)
   target_precompile_headers(ek_lib_pch PRIVATE ${EK_PCH_HEADERS})
