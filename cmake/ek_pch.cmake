@@ -1,5 +1,6 @@
-# Precompiled headers in Release builds with GCC, to shorten the build that
-# `make test` starts with (docs/performance.md, "Build time"). The module
+# Precompiled headers in Release builds with GCC and in the Clang build of the
+# fuzz targets (EK_FUZZ), to shorten the builds that `make test` starts with
+# (docs/performance.md, "Build time"). The module
 # libraries reuse one precompiled header of Eigen and the standard headers
 # most of their sources include (ek_lib_pch, compiled as a library's sources
 # are), the programs on top of them (knots, the experiments) another one

@@ -22,6 +22,9 @@ std::string temp_dir(const std::string& name);
 /// The lines of a text file (none when it cannot be read).
 std::vector<std::string> lines_of(const std::string& file);
 
+/// The number of newline characters in `text` (a message's line count).
+size_t newline_count(const std::string& text);
+
 /// 3_1 embedded from its braid (96 vertices, DIR/embedded.obj) and relaxed
 /// by the command (DIR/trefoil.obj); returns that path. Throws
 /// std::runtime_error with the command's message when either fails.

@@ -5,16 +5,12 @@
 
 #include "ek/core/errors.hpp"
 #include "ek/lattice/bfacf.hpp"
+#include "lattice_test_util.hpp"
 
 using namespace ek;
+using ek::latticetest::unit_square;
 
 namespace {
-
-LatticePoints unit_square() {
-  LatticePoints L(4, 3);
-  L << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0;
-  return L;
-}
 
 using SiteTuple = std::array<int, 3>;
 

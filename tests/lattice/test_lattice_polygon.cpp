@@ -4,18 +4,10 @@
 #include <unordered_set>
 
 #include "ek/lattice/lattice_polygon.hpp"
+#include "lattice_test_util.hpp"
 
 using namespace ek;
-
-namespace {
-
-LatticePoints unit_square() {
-  LatticePoints L(4, 3);
-  L << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0;
-  return L;
-}
-
-}  // namespace
+using ek::latticetest::unit_square;
 
 TEST(SiteSet, AgreesWithStdSetUnderRandomInsertAndErase) {
   // Keys of a small box so that collisions, long probe runs and wrap-around

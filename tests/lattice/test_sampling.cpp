@@ -3,16 +3,12 @@
 #include "ek/core/errors.hpp"
 #include "ek/knots/alexander.hpp"
 #include "ek/lattice/sampling.hpp"
+#include "lattice_test_util.hpp"
 
 using namespace ek;
+using ek::latticetest::unit_square;
 
 namespace {
-
-LatticePoints unit_square() {
-  LatticePoints L(4, 3);
-  L << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0;
-  return L;
-}
 
 // Exactly n vertices, integer coordinates (by type), unit edges, no repeated
 // site, centred.

@@ -16,12 +16,12 @@
 #include "ek/lattice/sampling.hpp"
 #include "ek/transitions/connect.hpp"
 #include "testing.hpp"
+#include "transitions_test_util.hpp"
 
 using namespace ek;
+using namespace ek::transitionstest;
 
 namespace {
-
-constexpr int kVertices = 120;
 
 Points square(double shift) {
   Points P(4, 3);
@@ -47,12 +47,6 @@ TransitionGraph small_graph() {
     g.edges.push_back({s.from, s.to, k, s.energy, s.energy - g.states[s.from].energy, s.energy - g.states[s.to].energy});
   }
   return g;
-}
-
-double sim(const Points& a, const Points& b) {
-  SimilarityOptions o;
-  o.reversal = true;
-  return similarity(a, b, o);
 }
 
 /// A graph of three relaxed BFACF samples of 4_1 (seed 1, unit edges), the

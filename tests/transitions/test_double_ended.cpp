@@ -17,12 +17,12 @@
 #include "ek/lattice/sampling.hpp"
 #include "ek/transitions/double_ended.hpp"
 #include "testing.hpp"
+#include "transitions_test_util.hpp"
 
 using namespace ek;
+using namespace ek::transitionstest;
 
 namespace {
-
-constexpr int kVertices = 120;
 
 /// The stable states of `count` BFACF samples of a knot (seed 1, unit edges).
 std::vector<Points> relaxed_samples(const std::string& knot, int count) {
@@ -42,14 +42,6 @@ std::vector<Points> relaxed_samples(const std::string& knot, int count) {
 const std::vector<Points>& states41() {
   static const std::vector<Points> s = relaxed_samples("4_1", 3);
   return s;
-}
-
-VecX unit_rest() { return VecX::Ones(kVertices); }
-
-double sim(const Points& a, const Points& b) {
-  SimilarityOptions o;
-  o.reversal = true;
-  return similarity(a, b, o);
 }
 
 /// p reversed, re-indexed by `shift`, rotated about an oblique axis and moved.

@@ -15,12 +15,12 @@
 #include "ek/lattice/sampling.hpp"
 #include "ek/transitions/saddles.hpp"
 #include "testing.hpp"
+#include "transitions_test_util.hpp"
 
 using namespace ek;
+using namespace ek::transitionstest;
 
 namespace {
-
-constexpr int kVertices = 120;
 
 /// The stable states of three BFACF samples of 4_1 (seed 1, unit edges).
 const std::vector<Points>& states() {
@@ -38,14 +38,6 @@ const std::vector<Points>& states() {
     return s;
   }();
   return out;
-}
-
-VecX unit_rest() { return VecX::Ones(kVertices); }
-
-double sim(const Points& a, const Points& b) {
-  SimilarityOptions o;
-  o.reversal = true;
-  return similarity(a, b, o);
 }
 
 struct SearchRun {

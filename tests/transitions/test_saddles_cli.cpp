@@ -28,8 +28,6 @@ std::string state_41(const std::string& dir) {
   return dir + "/state.obj";
 }
 
-size_t lines(const std::string& s) { return static_cast<size_t>(std::count(s.begin(), s.end(), '\n')); }
-
 }  // namespace
 
 TEST(SaddlesCli, BadInputIsOneLineAndExitTwo) {
@@ -43,7 +41,7 @@ TEST(SaddlesCli, BadInputIsOneLineAndExitTwo) {
         "saddles " + lattice + " --rest-length 0 -o " + dir + "/e", "saddles " + lattice}) {
     const auto r = run(args);
     EXPECT_EQ(r.status, 2) << args;
-    EXPECT_EQ(lines(r.err), 1u) << args << ": " << r.err;
+    EXPECT_EQ(ek::clitest::newline_count(r.err), 1u) << args << ": " << r.err;
     EXPECT_TRUE(r.out.empty()) << args;
   }
   for (const char* sub : {"a", "b", "c", "d", "e"}) EXPECT_FALSE(fs::exists(dir + "/" + sub)) << sub;
@@ -83,7 +81,7 @@ TEST(SaddlesCli, WritesVerifiedSaddlesAndKeepsAnExistingFolder) {
   std::ofstream(out + "/mine.txt") << "keep";
   r = run("saddles " + state + " --modes 1 -o " + out);
   EXPECT_EQ(r.status, 2);
-  EXPECT_EQ(lines(r.err), 1u) << r.err;
+  EXPECT_EQ(ek::clitest::newline_count(r.err), 1u) << r.err;
   EXPECT_TRUE(fs::exists(out + "/mine.txt"));
   // ... and replaced as a whole with it
   r = run("saddles " + state + " --modes 1 -o " + out + " --overwrite --json");

@@ -38,8 +38,6 @@ std::pair<std::string, std::string> states_41(const std::string& dir) {
   return {dir + "/state1.obj", dir + "/state2.obj"};
 }
 
-size_t lines(const std::string& s) { return static_cast<size_t>(std::count(s.begin(), s.end(), '\n')); }
-
 }  // namespace
 
 TEST(TransitionCli, BadInputIsOneLineAndExitTwo) {
@@ -57,7 +55,7 @@ TEST(TransitionCli, BadInputIsOneLineAndExitTwo) {
         "path " + dir + "/missing.h5 4_1 0 1 -o " + dir + "/p.obj"}) {
     const auto r = run(args);
     EXPECT_EQ(r.status, 2) << args;
-    EXPECT_EQ(lines(r.err), 1u) << args << ": " << r.err;
+    EXPECT_EQ(ek::clitest::newline_count(r.err), 1u) << args << ": " << r.err;
     EXPECT_TRUE(r.out.empty()) << args;
   }
   for (const char* sub : {"o1", "o2", "o3", "t.h5", "p.obj"}) EXPECT_FALSE(fs::exists(dir + "/" + sub)) << sub;

@@ -10,22 +10,13 @@
 
 namespace ek {
 
-namespace {
-
-void check_curve(const Points& P, const char* who) {
-  require(P.rows() >= 3, std::string(who) + ": a closed polygon needs at least 3 vertices");
-  require(P.allFinite(), std::string(who) + ": non-finite coordinates");
-}
-
-}  // namespace
-
 void AttributeOptions::validate() const {
   require_input(std::isfinite(radius) && radius > 0.0, "--radius must be positive");
   require_input(std::isfinite(young_modulus) && young_modulus > 0.0, "--young must be positive");
 }
 
 Points curvature_binormals(const Points& P) {
-  check_curve(P, "curvature_binormals");
+  require_closed_polygon(P, "curvature_binormals");
   const Points E = edge_vectors(P);
   const auto n = P.rows();
   Points KB(n, 3);
@@ -46,13 +37,13 @@ double max_bending_stress(const Points& P, double radius, double young_modulus) 
 }
 
 double threedim(const Points& P) {
-  check_curve(P, "threedim");
+  require_closed_polygon(P, "threedim");
   const OrientedBox box = min_volume_bounding_box(P);
   return box.extents(0) > 0.0 ? box.extents(2) / box.extents(0) : 0.0;
 }
 
 double sphericity(const Points& P) {
-  check_curve(P, "sphericity");
+  require_closed_polygon(P, "sphericity");
   const Vec3 c = centroid(P);
   const VecX d = (P.rowwise() - c.transpose()).rowwise().norm();
   const double mean = d.mean();
@@ -62,7 +53,7 @@ double sphericity(const Points& P) {
 }
 
 Diameter diameter(const Points& P) {
-  check_curve(P, "diameter");
+  require_closed_polygon(P, "diameter");
   const auto n = P.rows();
   Diameter best;
   double best_d2 = -1.0;
@@ -83,7 +74,7 @@ Diameter diameter(const Points& P) {
 }
 
 GeometricAttributes geometric_attributes(const Points& P) {
-  check_curve(P, "geometric_attributes");
+  require_closed_polygon(P, "geometric_attributes");
   require(edge_lengths(P).minCoeff() > 0.0, "geometric_attributes: zero-length edge");
   GeometricAttributes g;
   g.total_curvature = total_curvature(P);

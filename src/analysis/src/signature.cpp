@@ -11,11 +11,6 @@ namespace ek {
 
 namespace {
 
-void check_curve(const Points& P, const char* who) {
-  require(P.rows() >= 3, std::string(who) + ": a closed polygon needs at least 3 vertices");
-  require(P.allFinite(), std::string(who) + ": non-finite coordinates");
-}
-
 /// Unit binormals per node; `defined[i]` false where the incident edges are
 /// (anti)parallel; err[i] estimates the rounding error of b_i (see the header).
 void binormals(const Points& E, const VecX& len, double coord_scale, Points& B, std::vector<char>& defined,
@@ -42,7 +37,7 @@ void binormals(const Points& E, const VecX& len, double coord_scale, Points& B, 
 }  // namespace
 
 VecX discrete_curvature(const Points& P) {
-  check_curve(P, "discrete_curvature");
+  require_closed_polygon(P, "discrete_curvature");
   const auto n = P.rows();
   const VecX len = edge_lengths(P);
   require(len.minCoeff() > 0.0, "discrete_curvature: zero-length edge");
@@ -53,7 +48,7 @@ VecX discrete_curvature(const Points& P) {
 }
 
 VecX discrete_torsion(const Points& P) {
-  check_curve(P, "discrete_torsion");
+  require_closed_polygon(P, "discrete_torsion");
   const auto n = P.rows();
   const Points E = edge_vectors(P);
   const VecX len = E.rowwise().norm();

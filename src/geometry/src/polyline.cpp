@@ -12,6 +12,11 @@
 
 namespace ek {
 
+void require_closed_polygon(const Points& P, const char* who) {
+  require(P.rows() >= 3, std::string(who) + ": a closed polygon needs at least 3 vertices");
+  require(P.allFinite(), std::string(who) + ": non-finite coordinates");
+}
+
 Points edge_vectors(const Points& P) {
   const auto n = P.rows();
   Points E(n, 3);

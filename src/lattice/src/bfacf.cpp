@@ -23,7 +23,7 @@ inline int dir_code(int axis, int sign) { return 2 * axis + (sign < 0 ? 1 : 0); 
 // Per vertex: the hot record read by every attempt (8 bytes, so that the
 // records of a polygon of a few thousand vertices stay in the L1 cache) and
 // the cold data read only by moves that can apply.
-struct Link {
+struct VertexLink {
   std::int32_t next;
   std::int8_t in, out;  // codes of the edges prev -> this and this -> next
   std::int16_t comp;    // the polygon (component) the vertex is on
@@ -43,7 +43,7 @@ int step_code(const std::int32_t* from, const std::int32_t* to) {
 }  // namespace
 
 struct BfacfWalk::Impl {
-  std::vector<Link> link;
+  std::vector<VertexLink> link;
   std::vector<Site3> pos;
   std::vector<std::int32_t> prev;
   std::vector<std::int32_t> slot;  // index in live[comp]

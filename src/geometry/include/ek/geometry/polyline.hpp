@@ -7,6 +7,11 @@
 
 namespace ek {
 
+/// Throws std::invalid_argument naming `who` unless P is a closed polygon
+/// of at least 3 vertices with finite coordinates (a caller's misuse, not
+/// bad input: input is validated on reading).
+void require_closed_polygon(const Points& P, const char* who);
+
 /// Edge vectors e_i = x_{i+1} - x_i (cyclic), n by 3.
 Points edge_vectors(const Points& P);
 
