@@ -15,8 +15,8 @@
 namespace ek {
 namespace {
 
-constexpr const char* kFormat = "elastic-knots-ledger";
-constexpr std::int64_t kFormatVersion = 1;
+constexpr const char* kLedgerFormat = "elastic-knots-ledger";
+constexpr std::int64_t kLedgerFormatVersion = 1;
 constexpr const char* kStable = "converged-stable";
 
 using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
@@ -193,8 +193,8 @@ void write_ledger(const std::string& path, const Ledger& ledger) {
   const std::string tmp = temporary_path(path);
   try {
     h5::Handle f = h5::create_file(tmp);
-    h5::set_attr(f.id(), "format", std::string(kFormat));
-    h5::set_attr(f.id(), "format_version", kFormatVersion);
+    h5::set_attr(f.id(), "format", std::string(kLedgerFormat));
+    h5::set_attr(f.id(), "format_version", kLedgerFormatVersion);
     detail::write_parameters(f.id(), ledger.parameters);
     write_provenance(f.id(), ledger.provenance);
     // status names, in order of first appearance
@@ -299,12 +299,12 @@ class LedgerFileReader {
   }
 
   Ledger read() {
-    if (!h5::has_attr(f_, "format") || h5::get_attr_string(f_, "format") != kFormat)
+    if (!h5::has_attr(f_, "format") || h5::get_attr_string(f_, "format") != kLedgerFormat)
       throw InputError("'" + path_ + "' is an HDF5 file but not an elastic-knots ledger");
     const auto version = h5::get_attr_int(f_, "format_version");
-    if (version != kFormatVersion)
+    if (version != kLedgerFormatVersion)
       throw InputError("'" + path_ + "' has ledger format version " + std::to_string(version) + ", expected " +
-                       std::to_string(kFormatVersion));
+                       std::to_string(kLedgerFormatVersion));
     Ledger out;
     out.parameters = detail::read_parameters(f_, path_);
     out.provenance = read_provenance(f_);
@@ -484,7 +484,7 @@ bool is_ledger_file(const std::string& path) {
   if (!std::filesystem::exists(path, error)) return false;  // the data-set reader names what is missing
   if (!h5::verify(path, "data set or ledger")) return false;  // a data set written before checksums
   h5::Handle f = h5::open_file(path, false);
-  return h5::has_attr(f.id(), "format") && h5::get_attr_string(f.id(), "format") == kFormat;
+  return h5::has_attr(f.id(), "format") && h5::get_attr_string(f.id(), "format") == kLedgerFormat;
 }
 
 Ledger merge_ledgers(const std::vector<Ledger>& ledgers) {
