@@ -185,17 +185,17 @@ struct PointToLine {
 
 /// One point-to-line Gauss-Newton step of the polishing: Csym and
 /// Cres are the original and the resampled candidate under the best
-/// symmetry. Updates best's motion; returns false once the step is below
-/// rounding (relative to `scale`).
-bool polish_step(const Points& query, const Points& Q, const Points& Csym, const Points& Cres, double scale,
-                 Alignment& best) {
+/// symmetry, `to_query` the segments of `query`. Updates best's motion;
+/// returns false once the step is below rounding (relative to `scale`).
+bool polish_step(const Points& query, const NearestSegment& to_query, const Points& Q, const Points& Csym,
+                 const Points& Cres, double scale, Alignment& best) {
   const int m = static_cast<int>(Q.rows());
   const Points Corig = (Csym * best.rotation.transpose()).rowwise() + best.translation.transpose();
   const Points Cmoved = (Cres * best.rotation.transpose()).rowwise() + best.translation.transpose();
   PointToLine ne;
   ne.c = Q.colwise().mean().transpose();
   const Vec3& c = ne.c;
-  const NearestSegment to_candidate(Corig), to_query(query);
+  const NearestSegment to_candidate(Corig);
   for (int k = 0; k < m; ++k) {
     Vec3 tg;
     const Vec3 y = closest_on_polygon(Q.row(k).transpose(), Corig, to_candidate, &tg);
@@ -261,8 +261,9 @@ Alignment align_curves(const Points& query, const Points& candidate, const Align
   const Points Csym = apply_symmetry(candidate, sym);
   const Points Cres = apply_symmetry(C, sym);
   const double scale = std::max(Qc.cwiseAbs().maxCoeff(), 1e-300);
+  const NearestSegment to_query(query);
   for (int it = 0; it < options.polish_iterations; ++it)
-    if (!polish_step(query, Q, Csym, Cres, scale, best)) break;
+    if (!polish_step(query, to_query, Q, Csym, Cres, scale, best)) break;
 
   // 4. the distance between the original polygons (vertices of each to the other)
   best.distance = symmetric_rms(query, aligned_candidate(candidate, best));

@@ -1,5 +1,6 @@
 #include "ek/geometry/hausdorff.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <queue>
@@ -110,7 +111,12 @@ void HausdorffOptions::validate() const {
 
 double point_polyline_distance(const Vec3& x, const Points& P, bool closed) {
   require(P.rows() >= 2, "point_polyline_distance: at least 2 vertices expected");
-  return nearest_segment(x, NearestSegment(P, closed)).distance;
+  // one query: a scan of the segments (a tree pays off over many queries)
+  const Eigen::Index n = P.rows(), segments = closed ? n : n - 1;
+  double best = std::numeric_limits<double>::infinity();
+  for (Eigen::Index j = 0; j < segments; ++j)
+    best = std::min(best, point_segment_distance_squared(x, P.row(j).transpose(), P.row((j + 1) % n).transpose()));
+  return std::sqrt(best);
 }
 
 HausdorffDistance hausdorff_distance(const Points& A, const Points& B, const HausdorffOptions& options) {
