@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "ek/analysis/attributes.hpp"
+#include "ek/analysis/bounding_box.hpp"
 #include "ek/analysis/clustering.hpp"
 #include "ek/analysis/mds.hpp"
 #include "ek/analysis/search.hpp"
@@ -121,6 +122,14 @@ void BM_MinVolumeBox(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(ek::threedim(P));
 }
 BENCHMARK(BM_MinVolumeBox)->Arg(400)->Unit(benchmark::kMillisecond);
+
+// The same search with every box evaluated over all points instead of the
+// convex hull's boundary points (the same box).
+void BM_MinVolumeBoxAllPoints(benchmark::State& state) {
+  const ek::Points P = random_curve(static_cast<int>(state.range(0)), 7);
+  for (auto _ : state) benchmark::DoNotOptimize(ek::min_volume_bounding_box_all_points(P));
+}
+BENCHMARK(BM_MinVolumeBoxAllPoints)->Arg(400)->Unit(benchmark::kMillisecond);
 
 void BM_AlignCurves(benchmark::State& state) {
   const ek::Points P = random_curve(400, 8), Q = random_curve(400, 9);

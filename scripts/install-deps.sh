@@ -9,6 +9,7 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config clang libclang-rt-dev
   libeigen3-dev libsuitesparse-dev libfftw3-dev libgsl-dev libhdf5-dev libspectra-dev
+  libqhull-dev                                    # convex hulls (the minimal bounding box)
   nlohmann-json3-dev libgtest-dev libbenchmark-dev
   python3 python3-matplotlib python3-numpy python3-h5py python3-pil
   povray                                          # figures: the wires as shaded tubes

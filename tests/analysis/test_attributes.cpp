@@ -2,10 +2,12 @@
 
 #include <cmath>
 #include <random>
+#include <vector>
 
 #include "ek/analysis/attributes.hpp"
 #include "ek/analysis/bounding_box.hpp"
 #include "ek/core/errors.hpp"
+#include "ek/geometry/curve_io.hpp"
 #include "ek/geometry/polyline.hpp"
 #include "testing.hpp"
 
@@ -143,6 +145,36 @@ TEST(Attributes, MinimalBoxContainsThePointsAndBeatsPca) {
         for (int k = 0; k < 3; ++k) EXPECT_LE(std::abs(y(k)), 0.5 * b->extents(k) + 1e-9) << seed;
       }
     }
+  }
+}
+
+TEST(Attributes, MinimalBoxFromTheHullBoundaryIsTheBoxFromEveryPoint) {
+  // Every box evaluation reads only the convex hull's boundary points; the
+  // result must be the all-points search's to the last bit, on smooth curves,
+  // a torus knot, a box polygon (coplanar points), integer lattice points
+  // (many coplanar and collinear ones), a planar curve and the peer's curves.
+  std::vector<Points> curves;
+  for (std::uint64_t seed = 1; seed <= 3; ++seed) curves.push_back(fixtures::random_fourier_curve(300, 4, seed));
+  curves.push_back(fixtures::torus_knot(400, 2, 3));
+  curves.push_back(fixtures::rigid_copy(box_polygon(4.0, 2.0, 1.0, 5), fixtures::random_rotation(2), Vec3(1, 2, 3), 0));
+  std::mt19937_64 rng(11);
+  std::uniform_int_distribution<int> step(0, 5);
+  Points walk(400, 3);
+  Vec3 x = Vec3::Zero();
+  for (Eigen::Index i = 0; i < walk.rows(); ++i) {
+    const int s = step(rng);
+    x(s % 3) += s < 3 ? 1.0 : -1.0;
+    walk.row(i) = x.transpose();
+  }
+  curves.push_back(walk);
+  curves.push_back(ellipse(100, 3.0, 1.0));
+  for (const char* name : {"4_1-smooth.obj", "12n_838-braid.obj", "9_47-cubiclattice.txt"})
+    curves.push_back(read_curve(fixtures::peer_dir() + "/" + name));
+  for (size_t c = 0; c < curves.size(); ++c) {
+    const OrientedBox a = min_volume_bounding_box(curves[c]), b = min_volume_bounding_box_all_points(curves[c]);
+    EXPECT_EQ(a.extents, b.extents) << c;
+    EXPECT_EQ(a.axes, b.axes) << c;
+    EXPECT_EQ(a.center, b.center) << c;
   }
 }
 

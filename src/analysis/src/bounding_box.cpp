@@ -1,5 +1,6 @@
 #include "ek/analysis/bounding_box.hpp"
 
+#include "ek/geometry/convex_hull.hpp"
 #include "ek/geometry/polyline.hpp"
 
 #include <Eigen/Eigenvalues>
@@ -187,9 +188,11 @@ OrientedBox pca_bounding_box(const Points& P) {
   return box;
 }
 
-OrientedBox min_volume_bounding_box(const Points& P) {
-  check_points(P, "min_volume_bounding_box");
-  const Mat3 A = proper_principal_axes(P);
+namespace {
+
+/// The search of min_volume_bounding_box(), from the principal axes A of all
+/// the points, with every box evaluated over the points P.
+OrientedBox search_min_volume_box(const Mat3& A, const Points& P) {
   // 1. global sampling: the PCA axes and kBoxDirections Fibonacci directions on
   //    the upper hemisphere (u and -u give the same box)
   struct Sample {
@@ -273,6 +276,22 @@ OrientedBox min_volume_bounding_box(const Points& P) {
       if (f.volume < best.volume) best = f;
   }
   return best.box;
+}
+
+}  // namespace
+
+OrientedBox min_volume_bounding_box(const Points& P) {
+  check_points(P, "min_volume_bounding_box");
+  const std::vector<Eigen::Index> boundary = convex_hull_boundary_points(P);
+  if (static_cast<Eigen::Index>(boundary.size()) == P.rows()) return search_min_volume_box(proper_principal_axes(P), P);
+  Points E(static_cast<Eigen::Index>(boundary.size()), 3);
+  for (size_t k = 0; k < boundary.size(); ++k) E.row(static_cast<Eigen::Index>(k)) = P.row(boundary[k]);
+  return search_min_volume_box(proper_principal_axes(P), E);
+}
+
+OrientedBox min_volume_bounding_box_all_points(const Points& P) {
+  check_points(P, "min_volume_bounding_box_all_points");
+  return search_min_volume_box(proper_principal_axes(P), P);
 }
 
 }  // namespace ek

@@ -29,8 +29,19 @@ OrientedBox pca_bounding_box(const Points& P);
 /// or 300 evaluations) refines u; the smallest box wins. The result's volume
 /// never exceeds the PCA box's (the PCA axes are sampled, and the box for a
 /// PCA axis is at most the PCA box). Measured on 400-vertex curves: the same
-/// aspect ratio to ~1e-8 for rotated copies; ~1000 evaluations, ~25 ms. For
+/// aspect ratio to ~1e-8 for rotated copies; ~1000 evaluations. For
 /// planar points the box has zero volume (one extent is 0 up to rounding).
+///
+/// Each evaluation reads only the points on the boundary of P's convex hull
+/// (convex_hull_boundary_points(), geometry/convex_hull.hpp): the box of an
+/// axis depends on the points only through their extremes, so the result is
+/// the same as from every point (tested to the last bit), and an evaluation
+/// costs O(h log h) for h boundary points instead of O(n log n).
 OrientedBox min_volume_bounding_box(const Points& P);
+
+/// The same, with every evaluation over all of P (no convex-hull filter):
+/// the reference that min_volume_bounding_box() must equal, for tests and
+/// benchmarks.
+OrientedBox min_volume_bounding_box_all_points(const Points& P);
 
 }  // namespace ek
