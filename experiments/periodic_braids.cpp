@@ -24,9 +24,11 @@
 // Writes periodic.csv, critical_points.csv, curves/<family>_p<p>*.obj and
 // summary.json (docs/results.md). The link scan of the coils (the paper's
 // Section 8.3 pipeline) is exp_periodic_links.
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <iostream>
+#include <numeric>
 #include <sstream>
 
 #include "ek/analysis/attributes.hpp"
@@ -209,10 +211,19 @@ results::PeriodicThreeDSearch search_3d(const Context& c, std::optional<Symmetri
   results::PeriodicThreeDSearch o;
   o.images = static_cast<int>(d.images.size());
   o.search_threedim = kSearchThreedim;
+  // the image of smallest gradient norm (the first among equals) that is at
+  // least that 3D: images in order of gradient norm, the first 3D one wins
+  // (a bounding box per image tried, not per image)
+  std::vector<size_t> order(d.images.size());
+  std::iota(order.begin(), order.end(), size_t{0});
+  std::stable_sort(order.begin(), order.end(),
+                   [&](size_t a, size_t b) { return d.gradient_norms[a] < d.gradient_norms[b]; });
   int best = -1;
-  for (size_t k = 0; k < d.images.size(); ++k)
-    if (threedim(d.images[k]) >= kSearchThreedim && (best < 0 || d.gradient_norms[k] < d.gradient_norms[size_t(best)]))
+  for (const size_t k : order)
+    if (threedim(d.images[k]) >= kSearchThreedim) {
       best = static_cast<int>(k);
+      break;
+    }
   if (best < 0) return o;  // the descent never was that 3D
   const Points& P = d.images[static_cast<size_t>(best)];
   o.image = best;
