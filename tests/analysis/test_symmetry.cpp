@@ -6,8 +6,11 @@
 
 #include <cmath>
 #include <random>
+#include <utility>
+#include <vector>
 
 #include "ek/analysis/symmetry.hpp"
+#include "ek/geometry/polyline.hpp"
 #include "ek/embedding/embedding.hpp"
 #include "ek/knots/codes.hpp"
 #include "testing.hpp"
@@ -78,6 +81,56 @@ TEST(Symmetry, AxisSearchOnThePrincipalAxes) {
   SymmetryAxisOptions bad;
   bad.step = 0.0;
   EXPECT_THROW(find_symmetry_axis(P, 3, bad), std::invalid_argument);
+}
+
+// The search tries the untilted axes first and stops an axis's error once it
+// exceeds the best so far; its answer must be the plain grid scan's (every
+// axis in order, rotational_symmetry_error() whole, the first smallest), to
+// the last bit: on symmetric, nearly symmetric and asymmetric curves, and on
+// a point (every error 0: the first axis of the grid).
+TEST(Symmetry, AxisSearchIsThePlainGridScan) {
+  auto scan = [](const Points& P, int p, const SymmetryAxisOptions& o) {
+    SymmetryAxis out;
+    out.center = centroid(P);
+    const Mat3 axes = principal_axes(P);
+    const int k = static_cast<int>(std::lround(o.max_tilt / o.step));
+    out.error = 1e300;
+    for (int axis = 0; axis < 3; ++axis) {
+      const Vec3 e0 = axes.col(axis), e1 = e0.unitOrthogonal(), e2 = e0.cross(e1);
+      for (int i = -k; i <= k; ++i)
+        for (int q = -k; q <= k; ++q) {
+          const Vec3 ax = (e0 + o.step * i * e1 + o.step * q * e2).normalized();
+          const double err = rotational_symmetry_error(P, out.center, ax, p);
+          if (err < out.error) {
+            out.error = err;
+            out.axis = ax;
+          }
+        }
+    }
+    return out;
+  };
+  std::mt19937_64 rng(12);
+  std::normal_distribution<double> N(0.0, 0.02);
+  Points noisy = fixtures::torus_knot(200, 2, 3);
+  for (Eigen::Index i = 0; i < noisy.rows(); ++i) noisy.row(i) += Vec3(N(rng), N(rng), N(rng)).transpose();
+  const Points point = Points::Ones(5, 3);
+  SymmetryAxisOptions coarse;
+  coarse.max_tilt = 0.05;
+  coarse.step = 0.01;
+  const std::vector<std::pair<Points, int>> cases = {
+      {rotated(fixtures::torus_knot(150, 2, 5), fixtures::random_rotation(3)), 5},
+      {noisy, 3},
+      {fixtures::random_fourier_curve(120, 4, 5), 2},
+      {fixtures::random_fourier_curve(120, 4, 6), 3},
+      {coil(2), 2},
+      {point, 2}};
+  for (size_t c = 0; c < cases.size(); ++c)
+    for (const SymmetryAxisOptions& o : {coarse, SymmetryAxisOptions{}}) {
+      const SymmetryAxis a = find_symmetry_axis(cases[c].first, cases[c].second, o), b = scan(cases[c].first, cases[c].second, o);
+      EXPECT_EQ(a.error, b.error) << c;
+      EXPECT_EQ(a.axis, b.axis) << c;
+      EXPECT_EQ(a.center, b.center) << c;
+    }
 }
 
 // symmetrize() keeps a symmetric closure of (σ1)^3 on 2 strands (T(2, 3))

@@ -3,8 +3,10 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <tuple>
 #include <utility>
+#include <vector>
 
 #include "ek/core/errors.hpp"
 #include "ek/geometry/polyline.hpp"
@@ -24,6 +26,38 @@ double wrap(double a, double period) {  // to [-period/2, period/2)
 
 }  // namespace
 
+namespace {
+
+/// r_g of the link's vertices about c, and their count.
+double radius_of_gyration(const Link& link, const Vec3& c, Eigen::Index& vertices) {
+  double rg = 0.0;
+  vertices = 0;
+  for (const Points& P : link)
+    for (Eigen::Index i = 0; i < P.rows(); ++i, ++vertices) rg += (P.row(i).transpose() - c).squaredNorm();
+  return std::sqrt(rg / static_cast<double>(vertices));
+}
+
+/// rotational_symmetry_error() with the link's segments, r_g (> 0) and vertex
+/// count given; +∞ as soon as the error of the vertices seen so far exceeds
+/// `bound`. The partial sums of the distances only grow (so do their
+/// rounded values), so the whole error would exceed the bound too: a search
+/// for the smallest error that passes its best so far gets the same answer.
+double bounded_symmetry_error(const Link& link, const NearestSegment& segments, const Vec3& c, const Vec3& axis, int p,
+                              double rg, Eigen::Index vertices, double bound) {
+  const Eigen::AngleAxisd R(2.0 * M_PI / p, axis.normalized());
+  const double n = static_cast<double>(vertices);
+  double sum = 0.0;
+  for (const Points& P : link)
+    for (Eigen::Index i = 0; i < P.rows(); ++i) {
+      const Vec3 q = c + R * (P.row(i).transpose() - c);
+      sum += std::sqrt(std::min(1e300, segments.nearest(q).distance_squared));
+      if (sum / n / rg > bound) return std::numeric_limits<double>::infinity();
+    }
+  return sum / n / rg;
+}
+
+}  // namespace
+
 double rotational_symmetry_error(const Points& P, const Vec3& c, const Vec3& axis, int p) {
   require(P.rows() >= 3, "rotational_symmetry_error: a curve needs at least 3 vertices");
   return rotational_symmetry_error(Link{P}, c, axis, p);
@@ -32,40 +66,48 @@ double rotational_symmetry_error(const Points& P, const Vec3& c, const Vec3& axi
 double rotational_symmetry_error(const Link& link, const Vec3& c, const Vec3& axis, int p) {
   require(p >= 2, "rotational_symmetry_error: p must be at least 2");
   require(!link.empty(), "rotational_symmetry_error: a link needs a component");
-  const Eigen::AngleAxisd R(2.0 * M_PI / p, axis.normalized());
-  double rg = 0.0, sum = 0.0;
   Eigen::Index vertices = 0;
-  for (const Points& P : link)
-    for (Eigen::Index i = 0; i < P.rows(); ++i, ++vertices) rg += (P.row(i).transpose() - c).squaredNorm();
-  rg = std::sqrt(rg / static_cast<double>(vertices));
+  const double rg = radius_of_gyration(link, c, vertices);
   if (rg == 0.0) return 0.0;
-  const NearestSegment segments(link);
-  for (const Points& P : link)
-    for (Eigen::Index i = 0; i < P.rows(); ++i) {
-      const Vec3 q = c + R * (P.row(i).transpose() - c);
-      sum += std::sqrt(std::min(1e300, segments.nearest(q).distance_squared));
-    }
-  return sum / static_cast<double>(vertices) / rg;
+  return bounded_symmetry_error(link, NearestSegment(link), c, axis, p, rg, vertices,
+                                std::numeric_limits<double>::infinity());
 }
 
 SymmetryAxis find_symmetry_axis(const Points& P, int p, const SymmetryAxisOptions& o) {
   require(o.step > 0.0 && o.max_tilt >= 0.0, "find_symmetry_axis: step must be > 0 and max_tilt >= 0");
+  require(P.rows() >= 3, "find_symmetry_axis: a curve needs at least 3 vertices");
+  require(p >= 2, "find_symmetry_axis: p must be at least 2");
   SymmetryAxis out;
   out.center = centroid(P);
   const Mat3 axes = principal_axes(P);
   const int k = static_cast<int>(std::lround(o.max_tilt / o.step));
-  out.error = 1e300;
-  for (int axis = 0; axis < 3; ++axis) {
+  const int side = 2 * k + 1;
+  const Link link{P};
+  Eigen::Index vertices = 0;
+  const double rg = radius_of_gyration(link, out.center, vertices);
+  const NearestSegment segments(link);
+  // The grid in its order (principal axis, then i, then q); the answer is the
+  // smallest error, the first in that order among equals. The three untilted
+  // axes are tried first: their small errors let the others stop early.
+  auto axis_at = [&](int g) {
+    const int axis = g / (side * side), i = (g / side) % side - k, q = g % side - k;
     const Vec3 e0 = axes.col(axis), e1 = e0.unitOrthogonal(), e2 = e0.cross(e1);
-    for (int i = -k; i <= k; ++i)
-      for (int q = -k; q <= k; ++q) {
-        const Vec3 ax = (e0 + o.step * i * e1 + o.step * q * e2).normalized();
-        const double err = rotational_symmetry_error(P, out.center, ax, p);
-        if (err < out.error) {
-          out.error = err;
-          out.axis = ax;
-        }
-      }
+    return Vec3((e0 + o.step * i * e1 + o.step * q * e2).normalized());
+  };
+  const int untilted = k * side + k;
+  std::vector<int> order = {untilted, side * side + untilted, 2 * side * side + untilted};
+  for (int g = 0; g < 3 * side * side; ++g)
+    if (g % (side * side) != untilted) order.push_back(g);
+  out.error = 1e300;
+  int best = -1;
+  for (const int g : order) {
+    const Vec3 ax = axis_at(g);
+    const double err = rg == 0.0 ? 0.0 : bounded_symmetry_error(link, segments, out.center, ax, p, rg, vertices, out.error);
+    if (err < out.error || (err == out.error && g < best)) {
+      out.error = err;
+      out.axis = ax;
+      best = g;
+    }
   }
   return out;
 }

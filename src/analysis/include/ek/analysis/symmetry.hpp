@@ -53,7 +53,11 @@ struct SymmetryAxis {
 /// with the given step ((e0, e1, e2) orthonormal), the direction of smallest
 /// rotational_symmetry_error(). The tilt makes the search robust where the
 /// principal axes are ill-conditioned (a nearly axisymmetric inertia).
-/// Cost: 3 (2k+1)² error evaluations, k = round(max_tilt/step).
+/// Cost: 3 (2k+1)² error evaluations, k = round(max_tilt/step), over one
+/// segment tree of P; the untilted axes are tried first, and an axis's error
+/// stops as soon as its partial sum exceeds the best so far (the answer is
+/// the plain scan's of the grid in its order, the first of equal errors, to
+/// the last bit), so most evaluations read a few vertices only.
 /// Throws std::invalid_argument for p < 2, n < 3 or a step <= 0.
 SymmetryAxis find_symmetry_axis(const Points& P, int p, const SymmetryAxisOptions& options = {});
 
