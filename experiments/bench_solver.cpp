@@ -21,7 +21,8 @@
 // multilevel relaxation and the block factorisation), hybrid (Direct with the
 // block factorisation), projected (hybrid without its exact region), exact (the
 // exact Hessian every iteration), paper (NewtonOptions::paper()), levels2
-// (the multilevel method with two coarse levels, n/4 and n/2). The
+// (the multilevel method with two coarse levels, n/4 and n/2), gauss-newton
+// (default with RelaxOptions::contact_gauss_newton). The
 // default is "default,hybrid-simplicial". --method M is --methods M.
 //
 // --peer DIR: instead of the lattice samples, every curve file of DIR (the
@@ -122,6 +123,11 @@ Method method_named(const std::string& name, const ek::RelaxOptions& base) {
   if (name == "levels2") {  // the multilevel method with two coarse levels (n/4, n/2)
     Method m{name, ek::with_method(base, "default")};
     m.options.coarse_levels = 2;
+    return m;
+  }
+  if (name == "gauss-newton") {  // the default method, contact pairs' Gauss-Newton Hessians in projected iterations
+    Method m{name, ek::with_method(base, "default")};
+    m.options.contact_gauss_newton = true;
     return m;
   }
   return Method{name, ek::with_method(base, name)};

@@ -368,3 +368,47 @@ TEST(Barrier, ProjectedHessianEqualsTheProjectionOfTheExactOne) {
   for (int c : types) kinds += c > 0;
   EXPECT_GE(kinds, 3);  // interior–interior and at least two endpoint cases
 }
+
+// The Gauss–Newton pair Hessian is w b''(d) ∇d ∇dᵀ with ∇d read from the
+// gradient (w b'(d) ∇d): rank one and positive semidefinite, for every
+// closest-feature type; in the nearly parallel band it is the projected
+// Hessian. Value and gradient are those of the exact call.
+TEST(Barrier, GaussNewtonHessianIsTheOuterProductOfTheDistanceGradient) {
+  std::mt19937_64 rng(22);
+  int band = 0, outside = 0;
+  for (int k = 0; k < 400; ++k) {
+    X12 x = join(rand_vec(rng), rand_vec(rng), rand_vec(rng), rand_vec(rng));
+    auto v = split(x);
+    if (k % 4 == 1) {
+      const Vec3 a = v[1] - v[0];
+      x = join(v[0], v[1], v[1] + 0.3 * a + 0.2 * rand_vec(rng), v[1] + 1.5 * a + rand_vec(rng));
+    } else if (k % 4 == 2) {
+      x = random_nearly_parallel(rng, v[0], v[1]);
+    }
+    v = split(x);
+    const double d = std::sqrt(edge_edge_closest(v[0], v[1], v[2], v[3]).distance_squared);
+    PairBarrierParams q;
+    q.dhat = 2.0 * d;
+    const double w = 3.0;
+    Vec12 g0, g1;
+    Mat12 H0, H1, Hp;
+    const double e0 = edge_edge_barrier_derivatives(v[0], v[1], v[2], v[3], q, &g0, &H0, w, PairHessian::Exact);
+    const double e1 = edge_edge_barrier_derivatives(v[0], v[1], v[2], v[3], q, &g1, &H1, w, PairHessian::GaussNewton);
+    edge_edge_barrier_derivatives(v[0], v[1], v[2], v[3], q, nullptr, &Hp, w, PairHessian::Projected);
+    EXPECT_EQ(e0, e1);
+    EXPECT_EQ(g0, g1);
+    EXPECT_GE(Eigen::SelfAdjointEigenSolver<Mat12>(H1).eigenvalues().minCoeff(), -1e-10 * H1.norm()) << k;
+    if (edge_edge_sin2(v[0], v[1], v[2], v[3]) < q.parallel_threshold) {
+      ++band;
+      EXPECT_EQ(H1, Hp) << k;
+      continue;
+    }
+    ++outside;
+    const double b1 = barrier_first_derivative(d, q.dhat), b2 = barrier_second_derivative(d, q.dhat);
+    ASSERT_GT(b2, 0.0);
+    const Mat12 expected = (b2 / (w * b1 * b1)) * g0 * g0.transpose();
+    EXPECT_LT((H1 - expected).norm(), 1e-9 * expected.norm()) << k;
+  }
+  EXPECT_GT(band, 50);
+  EXPECT_GT(outside, 250);
+}

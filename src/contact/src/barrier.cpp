@@ -272,9 +272,9 @@ void projected_structured_hessian(const DistanceStructure& d, const Mat3& K, dou
 }
 
 // weight · B(s(x)) with its gradient / Hessian written (not added) from the
-// structure; the Hessian projected to positive semidefinite when project_psd.
+// structure; the Hessian of the given kind (PairHessian).
 double structured_barrier(const Vec3* x, EdgeEdgeDistanceType type, double dhat, double weight, Vec12* grad,
-                          Mat12* hess, bool project_psd) {
+                          Mat12* hess, PairHessian kind) {
   const DistanceStructure d = distance_structure(x, type);
   const SquaredBarrier B = squared_barrier(d.s, dhat, grad || hess);
   const double b1 = weight * B.first, b2 = weight * B.second;
@@ -283,7 +283,13 @@ double structured_barrier(const Vec3* x, EdgeEdgeDistanceType type, double dhat,
   if (!hess) return weight * B.value;
   Mat3 K = (4.0 * b2) * d.w * d.w.transpose();
   K.diagonal().array() += 2.0 * b1;
-  if (project_psd) {
+  if (kind == PairHessian::GaussNewton) {
+    // b''(d) = nᵀ K n (K = 4B''wwᵀ + 2B'I, w = d n), times (c cᵀ) ⊗ (n nᵀ)
+    const Mat3 N = (d.w.dot(K * d.w) / (d.s * d.s)) * d.w * d.w.transpose();
+    for (int i = 0; i < 4; ++i)
+      for (int j = 0; j < 4; ++j)
+        hess->block<3, 3>(3 * i, 3 * j) = (d.c[static_cast<size_t>(i)] * d.c[static_cast<size_t>(j)]) * N;
+  } else if (kind == PairHessian::Projected) {
     projected_structured_hessian(d, K, b1, *hess);
   } else {
     for (int i = 0; i < 4; ++i)
@@ -312,6 +318,14 @@ double edge_edge_barrier_derivatives(const Vec3& ea0, const Vec3& ea1, const Vec
 double edge_edge_barrier_derivatives(const Vec3& ea0, const Vec3& ea1, const Vec3& eb0, const Vec3& eb1,
                                      const PairBarrierParams& params, Vec12* grad, Mat12* hess, double weight,
                                      bool project_psd) {
+  return edge_edge_barrier_derivatives(ea0, ea1, eb0, eb1, params, grad, hess, weight,
+                                       project_psd ? PairHessian::Projected : PairHessian::Exact);
+}
+
+double edge_edge_barrier_derivatives(const Vec3& ea0, const Vec3& ea1, const Vec3& eb0, const Vec3& eb1,
+                                     const PairBarrierParams& params, Vec12* grad, Mat12* hess, double weight,
+                                     PairHessian kind) {
+  const bool project_psd = kind != PairHessian::Exact;
   const EdgeEdgeClosest closest = edge_edge_closest(ea0, ea1, eb0, eb1);
   const double dhat = params.dhat;
   if (closest.distance_squared >= dhat * dhat || !(closest.distance_squared > 0.0)) {
@@ -323,7 +337,7 @@ double edge_edge_barrier_derivatives(const Vec3& ea0, const Vec3& ea1, const Vec
   const double eps = params.parallel_threshold;
   const double A = (ea1 - ea0).squaredNorm(), B = (eb1 - eb0).squaredNorm();
   const double c = (A > 0.0 && B > 0.0 && eps > 0.0) ? edge_edge_sin2(ea0, ea1, eb0, eb1) : 1.0;
-  if (c >= eps) return structured_barrier(x, closest.type, dhat, weight, grad, hess, project_psd);  // the common case: e = b(f)
+  if (c >= eps) return structured_barrier(x, closest.type, dhat, weight, grad, hess, kind);  // the common case: e = b(f)
   if (grad) grad->setZero();
   if (hess) hess->setZero();
 

@@ -246,7 +246,9 @@ void ContactPotential::add_hessian(const Points& x, SparseAssembler& A) const {
 }
 
 void ContactPotential::add_hessian(const Points& x, SparseAssembler& A, HessianKind kind) const {
-  const bool project_psd = kind == HessianKind::Projected;
+  const PairHessian pair_kind = kind == HessianKind::Exact ? PairHessian::Exact
+                                : options_.gauss_newton_projection ? PairHessian::GaussNewton
+                                                                   : PairHessian::Projected;
   if (x.rows() != n_) require(false, "ContactPotential::add_hessian: wrong number of points");
   if (plan_structure_ != structure_ || pair_blocks_.size() != pattern_.size()) build_hessian_plan();
   if (blocks_.empty()) return;
@@ -257,7 +259,7 @@ void ContactPotential::add_hessian(const Points& x, SparseAssembler& A, HessianK
   for (size_t p = 0; p < active_.size(); ++p) {
     const ContactPair& c = active_[p];
     edge_edge_barrier_derivatives(row(x, c.a0), row(x, c.a1), row(x, c.b0), row(x, c.b1), params, nullptr, &H, w,
-                                  project_psd);
+                                  pair_kind);
     const auto& plan = pair_blocks_[static_cast<size_t>(active_slot_[p])];
     int slot = 0;
     for (int k = 0; k < 4; ++k)

@@ -84,6 +84,7 @@ ContactOptions contact_options(const ResolvedModel& model, const RelaxOptions& o
   co.dhat = model.dhat;
   co.stiffness = model.contact_stiffness;
   co.hessian_margin = options.contact_hessian_margin;
+  co.gauss_newton_projection = options.contact_gauss_newton;
   return co;
 }
 

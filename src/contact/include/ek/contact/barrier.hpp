@@ -93,6 +93,25 @@ double edge_edge_barrier_derivatives(const Vec3& ea0, const Vec3& ea1, const Vec
                                      const PairBarrierParams& params, Vec12* grad, Mat12* hess, double weight,
                                      bool project_psd);
 
+/// Which Hessian of the pair energy edge_edge_barrier_derivatives() gives.
+enum class PairHessian {
+  Exact,      ///< the exact Hessian (indefinite in general)
+  Projected,  ///< the nearest positive semidefinite matrix (eigenvalues clamped at 0)
+  /// Gauss–Newton: b''(f) ∇f ∇fᵀ, positive semidefinite by construction (b'' > 0
+  /// on (0, d̂)), without the term b'(f) ∇²f of the distance's curvature, the
+  /// only one that can be indefinite. ∇f = c ⊗ n for the closest points'
+  /// weights c and the unit normal n between them, so it costs an outer
+  /// product and no eigen-decomposition. In the nearly parallel band the
+  /// projected Hessian is used instead.
+  GaussNewton,
+};
+
+/// The same with the Hessian chosen by `kind` (Exact and Projected as
+/// project_psd false and true).
+double edge_edge_barrier_derivatives(const Vec3& ea0, const Vec3& ea1, const Vec3& eb0, const Vec3& eb1,
+                                     const PairBarrierParams& params, Vec12* grad, Mat12* hess, double weight,
+                                     PairHessian kind);
+
 /// Projects a symmetric 12 by 12 matrix to the nearest positive semidefinite
 /// one (eigenvalues clamped at 0), in place.
 void project_to_psd(Mat12& H);

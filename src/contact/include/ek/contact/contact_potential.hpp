@@ -92,6 +92,10 @@ struct ContactOptions {
   /// setting that keeps the guarantee)
   int excluded_neighbors = 1;
   bool project_psd = false;    ///< project each pair's 12 by 12 barrier Hessian to positive semidefinite
+  /// [bool] the Hessian of HessianKind::Projected: each pair's Gauss–Newton
+  /// term b''∇d∇dᵀ (PairHessian::GaussNewton, barrier.hpp) instead of its
+  /// eigen-projection. The exact Hessian is unchanged.
+  bool gauss_newton_projection = false;
   double parallel_threshold = 1e-3;  ///< [1] ε: pairs with sin²(angle) < ε use the mollified energy (barrier.hpp)
   /// [1] CCD keeps every pair at >= this fraction of min(current distance, d̂); in (0, 1)
   double ccd_separation = 0.1;

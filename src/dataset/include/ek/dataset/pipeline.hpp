@@ -112,7 +112,7 @@ struct ExploreOptions {
 /// their defaults there): start, similarity, mirror_amphicheiral, and the
 /// solver's inner settings (relax.newton apart from the Hessian mode and the
 /// rigid-motion removal that the named methods of with_method() set,
-/// max_tangent_rotation, contact_hessian_margin, slab, the value of a
+/// max_tangent_rotation, contact_hessian_margin, contact_gauss_newton, slab, the value of a
 /// prescribed link); jobs does not change the results.
 DatasetMetadata dataset_metadata(const ExploreOptions& options);
 

@@ -96,6 +96,13 @@ struct RelaxOptions {
   /// holds the pairs within d̂ + margin and changes only when an active pair
   /// falls outside it (0: the active pairs; the same values either way).
   double contact_hessian_margin = 0.0;
+  /// [bool] ContactOptions::gauss_newton_projection: in the projected
+  /// iterations each contact pair's Hessian is its Gauss–Newton term
+  /// b''∇d∇dᵀ instead of its eigen-projection (docs/performance.md: median
+  /// time per equilibrium 30% lower on the solver benchmark, and other
+  /// equilibria for some samples). Off until the comparison of the states it
+  /// finds accepts it.
+  bool contact_gauss_newton = false;
   /// [1] Multilevel: levels below n, each with half the vertices of the next;
   /// a level is used while the count is even, the coarse curve has at least
   /// kMinCoarseVertices vertices and its coarsening is certified.
