@@ -157,16 +157,7 @@ TEST(Attributes, MinimalBoxFromTheHullBoundaryIsTheBoxFromEveryPoint) {
   for (std::uint64_t seed = 1; seed <= 3; ++seed) curves.push_back(fixtures::random_fourier_curve(300, 4, seed));
   curves.push_back(fixtures::torus_knot(400, 2, 3));
   curves.push_back(fixtures::rigid_copy(box_polygon(4.0, 2.0, 1.0, 5), fixtures::random_rotation(2), Vec3(1, 2, 3), 0));
-  std::mt19937_64 rng(11);
-  std::uniform_int_distribution<int> step(0, 5);
-  Points walk(400, 3);
-  Vec3 x = Vec3::Zero();
-  for (Eigen::Index i = 0; i < walk.rows(); ++i) {
-    const int s = step(rng);
-    x(s % 3) += s < 3 ? 1.0 : -1.0;
-    walk.row(i) = x.transpose();
-  }
-  curves.push_back(walk);
+  curves.push_back(fixtures::random_lattice_walk(400, 11));
   curves.push_back(ellipse(100, 3.0, 1.0));
   for (const char* name : {"4_1-smooth.obj", "12n_838-braid.obj", "9_47-cubiclattice.txt"})
     curves.push_back(read_curve(fixtures::peer_dir() + "/" + name));

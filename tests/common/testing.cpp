@@ -15,6 +15,19 @@ std::string peer_dir() {
   return config::kPeerDataDir;
 }
 
+Points random_lattice_walk(int n, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<int> step(0, 5);
+  Points walk(n, 3);
+  Vec3 x = Vec3::Zero();
+  for (Eigen::Index i = 0; i < walk.rows(); ++i) {
+    const int s = step(rng);
+    x(s % 3) += s < 3 ? 1.0 : -1.0;
+    walk.row(i) = x.transpose();
+  }
+  return walk;
+}
+
 Points random_fourier_curve(int n, int modes, std::uint64_t seed, double amplitude) {
   std::mt19937_64 rng(seed);
   std::normal_distribution<double> N(0.0, 1.0);

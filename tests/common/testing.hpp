@@ -30,6 +30,10 @@ std::string peer_dir();
 /// sampled at n points (not necessarily simple).
 Points random_fourier_curve(int n, int modes, std::uint64_t seed, double amplitude = 1.0);
 
+/// A random walk of n unit steps along the axes of the cubic lattice from
+/// the origin (open, not self-avoiding): many coplanar and collinear points.
+Points random_lattice_walk(int n, std::uint64_t seed);
+
 /// Circle of radius R in the xy-plane, n vertices, centred at the origin.
 Points circle(int n, double R);
 

@@ -112,16 +112,7 @@ TEST(ConvexHull, ExtremesOfTheBoundaryAreThoseOfEveryPoint) {
   std::vector<Points> curves;
   for (std::uint64_t seed = 1; seed <= 4; ++seed) curves.push_back(fixtures::random_fourier_curve(400, 4, seed));
   curves.push_back(fixtures::torus_knot(300, 2, 3));
-  std::mt19937_64 rng(8);
-  std::uniform_int_distribution<int> step(0, 5);
-  Points walk(600, 3);
-  Vec3 x = Vec3::Zero();
-  for (Eigen::Index i = 0; i < walk.rows(); ++i) {
-    const int s = step(rng);
-    x(s % 3) += s < 3 ? 1.0 : -1.0;
-    walk.row(i) = x.transpose();
-  }
-  curves.push_back(walk);
+  curves.push_back(fixtures::random_lattice_walk(600, 8));
   for (const char* name : {"4_1-smooth.obj", "12n_838-braid.obj", "9_47-cubiclattice.txt"})
     curves.push_back(read_curve(fixtures::peer_dir() + "/" + name));
   for (size_t c = 0; c < curves.size(); ++c) {
