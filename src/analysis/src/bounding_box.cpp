@@ -283,7 +283,6 @@ OrientedBox search_min_volume_box(const Mat3& A, const Points& P) {
 OrientedBox min_volume_bounding_box(const Points& P) {
   check_points(P, "min_volume_bounding_box");
   const std::vector<Eigen::Index> boundary = convex_hull_boundary_points(P);
-  if (static_cast<Eigen::Index>(boundary.size()) == P.rows()) return search_min_volume_box(proper_principal_axes(P), P);
   Points E(static_cast<Eigen::Index>(boundary.size()), 3);
   for (size_t k = 0; k < boundary.size(); ++k) E.row(static_cast<Eigen::Index>(k)) = P.row(boundary[k]);
   return search_min_volume_box(proper_principal_axes(P), E);
