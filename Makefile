@@ -28,7 +28,7 @@ help:
 	@echo "make stopping-truth  both adaptive stopping rules replayed on 30 knots of 500 samples each (docs/results/truth/)"
 	@echo "make ledger-far-end SCALE=sample12|paper10  Fig. 9's far end decided at the full budget: the knots it needs sampled 500 times, each piece's ledger committed"
 	@echo "make ledger-results  Fig. 9, planarity and the sampling summary of the committed ledgers (docs/results/), and their checks"
-	@echo "make compare-methods  the default relaxation method against the direct one (hybrid) on the SCALE data sets"
+	@echo "make compare-methods  the default relaxation method against METHOD=$(METHOD) (the direct one, hybrid, unless given) on the SCALE data sets"
 	@echo "make animation the jumping knot's release in time as figures/out/anim_jumping_dynamics.gif and .mp4 (runs exp_jumping_dynamics at SCALE if needed)"
 	@echo "make explorer  the data-set explorer of SCALE's data set in results/<scale>/explorer/ (docs/explorer.md)"
 	@echo "make serve     serve that data set's explorer on 127.0.0.1:8000"
@@ -293,11 +293,13 @@ ledger-results: build
 	  EK_PAPER_RESULTS=$(CURDIR)/$$d KNOT_TABLE=$(KNOT_TABLE) $(BUILD)/paper_checks/check_planarity || exit 1; \
 	done
 
-# The default relaxation method (multilevel) against the direct one (hybrid): both
+# The default relaxation method (multilevel) against another named method
+# (METHOD=hybrid, the direct one, unless given; gauss-newton, exact, paper): both
 # methods' data sets and their paper checks, then their comparison
 # (docs/reproducing.md). SCALE=default by default; SCALE=ci is a smoke run.
+METHOD ?= hybrid
 compare-methods: build
-	scripts/compare_methods.sh $(BUILD) $(SCALE) $(RESULTS) $(JOBS) $(KNOT_TABLE)
+	scripts/compare_methods.sh $(BUILD) $(SCALE) $(RESULTS) $(JOBS) $(KNOT_TABLE) $(METHOD)
 
 help-experiments:
 	@$(foreach e,$(PAPER_EXPERIMENTS) $(STUDY_EXPERIMENTS) $(BENCH_EXPERIMENTS),echo "$(e): minutes $(MINUTES_$(e))";)

@@ -125,11 +125,6 @@ Method method_named(const std::string& name, const ek::RelaxOptions& base) {
     m.options.coarse_levels = 2;
     return m;
   }
-  if (name == "gauss-newton") {  // the default method, contact pairs' Gauss-Newton Hessians in projected iterations
-    Method m{name, ek::with_method(base, "default")};
-    m.options.contact_gauss_newton = true;
-    return m;
-  }
   return Method{name, ek::with_method(base, name)};
 }
 

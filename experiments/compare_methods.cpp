@@ -1,7 +1,8 @@
 // exp_compare_methods: what the data sets of the default relaxation method
-// and of the method before it ("hybrid": Newton at n from the lattice
-// sample) say about the same knots, from the same samples (the equilibria a
-// start reaches may differ; what a user learns must not):
+// and of another named method (--against M: "hybrid", the method before it,
+// Newton at n from the lattice sample, unless given) say about the same
+// knots, from the same samples (the equilibria a start reaches may differ;
+// what a user learns must not):
 //  - every cluster holding at least 3% of a knot's equilibria in one data set
 //    has a counterpart (similarity >= 0.95) in the other;
 //  - the lowest energy per knot agrees within 1e-4 relative;
@@ -10,7 +11,7 @@
 // and puzzles experiments with each method into
 // results/<scale>/compare_methods/<method>/, runs their paper checks on both,
 // then this program with --out results/<scale>/compare_methods/comparison: it
-// reads ../default and ../hybrid.
+// reads ../default and ../M.
 //
 // Which local minimum a start reaches depends on the method, and a knot's
 // rare states and lowest energy over 40 samples depend on the samples: the
@@ -28,7 +29,9 @@
 #include <utility>
 
 #include "compare_methods_summary.hpp"
+#include "ek/core/errors.hpp"
 #include "ek/dataset/compare.hpp"
+#include "ek/solver/relax.hpp"
 #include "experiment.hpp"
 #include "scales.hpp"
 
@@ -104,8 +107,8 @@ bool within(const results::ComparisonTally& m, const results::ComparisonTally& n
 }
 
 void print_tallies(const std::vector<results::ComparisonTally>& methods,
-                   const std::vector<results::ComparisonTally>& noise) {
-  std::printf("disagreements (default vs hybrid | default seed 1 vs seed 2):\n");
+                   const std::vector<results::ComparisonTally>& noise, const std::string& against) {
+  std::printf("disagreements (default vs %s | default seed 1 vs seed 2):\n", against.c_str());
   std::printf("  %-15s %17s %17s %17s %17s\n", "data set", "knots differing", "clusters missing",
               "lowest energies", "planar share diff");
   for (size_t i = 0; i < methods.size(); ++i) {
@@ -132,9 +135,20 @@ void print(const results::DatasetMethodComparison& d, const std::string& a, cons
 
 int main(int argc, char** argv) {
   bool agree = true;
+  std::string against = "hybrid";
+  const ExtraOption against_option{"--against", "[--against M]",
+                                   [&](const std::string& v) {
+                                     const auto& names = method_names();
+                                     if (v == "default" || std::find(names.begin(), names.end(), v) == names.end())
+                                       throw InputError("expected a method other than default: gauss-newton, "
+                                                        "hybrid, exact or paper");
+                                     against = v;
+                                   },
+                                   {}};
   const int status = run_experiment(
       argc, argv, "exp_compare_methods",
-      "Compares the data sets of the default and the hybrid method (make compare-methods).", [&](const Args& a) {
+      "Compares the data sets of the default method and of --against M (hybrid unless given; make compare-methods).",
+      [&](const Args& a) {
         const CompareOptions o;  // 0.05 cut, 3% share, 0.95 similarity, 1e-4 energy, 0.05 planar share
         Csv csv(a.out + "/comparison.csv", {"against", "experiment", "knot", "equilibria_a", "equilibria_b",
                                             "clusters_a", "clusters_b", "missing_a_in_b", "missing_b_in_a",
@@ -142,7 +156,7 @@ int main(int argc, char** argv) {
         results::CompareMethodsSummary sum;
         sum.scale = a.scale_name;
         sum.method_a = "default";
-        sum.method_b = "hybrid";
+        sum.method_b = against;
         sum.cut = o.cut;
         sum.min_share = o.min_share;
         sum.counterpart = o.counterpart;
@@ -150,8 +164,8 @@ int main(int argc, char** argv) {
         sum.planar_tolerance = o.planar_tolerance;
         const std::vector<std::pair<std::string, std::string>> sets = {{"dataset", "dataset.h5"},
                                                                         {"multistability", "multistability.h5"}};
-        for (const auto& [e, f] : sets) sum.datasets.push_back(compare(a.results, "hybrid", e, f, o, csv));
-        for (const auto& d : sum.datasets) print(d, "default", "hybrid");
+        for (const auto& [e, f] : sets) sum.datasets.push_back(compare(a.results, against, e, f, o, csv));
+        for (const auto& d : sum.datasets) print(d, "default", against);
         sum.ok = std::all_of(sum.datasets.begin(), sum.datasets.end(), [](const auto& d) { return d.ok; });
         if (std::filesystem::exists(a.results + "/default-seed2")) {
           sum.noise_seed = 2;
@@ -165,7 +179,7 @@ int main(int argc, char** argv) {
             sum.within_noise = sum.within_noise && within(sum.tallies[i], sum.noise_tallies[i], o);
           }
           std::printf("\n");
-          print_tallies(sum.tallies, sum.noise_tallies);
+          print_tallies(sum.tallies, sum.noise_tallies, against);
         }
         sum.agree = sum.ok || sum.within_noise;
         agree = sum.agree;
@@ -175,6 +189,7 @@ int main(int argc, char** argv) {
                     sum.ok ? "agree by every rule"
                     : sum.within_noise ? "differ no more than the default method's data sets from other samples"
                                        : "DISAGREE");
-      });
+      },
+      {against_option});
   return status != 0 ? status : (agree ? 0 : 1);
 }

@@ -13,6 +13,7 @@
 
 #include "ek/core/atomic_file.hpp"
 #include "ek/core/errors.hpp"
+#include "ek/solver/relax.hpp"
 
 namespace ek::exp {
 
@@ -77,8 +78,9 @@ Args parse_args(int argc, char** argv, const std::string& name, const std::strin
       a.jobs = static_cast<int>(j);
     } else if (s == "--method") {
       a.method = value();
-      if (a.method != "default" && a.method != "hybrid" && a.method != "exact" && a.method != "paper")
-        fail("--method '" + a.method + "': expected default, hybrid, exact or paper");
+      const auto& names = method_names();
+      if (std::find(names.begin(), names.end(), a.method) == names.end())
+        fail("--method '" + a.method + "': expected default, gauss-newton, hybrid, exact or paper");
     } else if (s == "--seed") {
       const std::string v = value();
       char* end = nullptr;

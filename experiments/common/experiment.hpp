@@ -35,7 +35,8 @@ struct Args {
   std::string results;    ///< results root (parent of the experiments' folders)
   int jobs = 2;           ///< parallel relaxations
   /// The relaxation method of the twist-free data-set runs (`--method`, as
-  /// `knots relax --method`: default, hybrid, exact, paper; with_method()).
+  /// `knots relax --method`: default, gauss-newton, hybrid, exact, paper;
+  /// with_method()).
   std::string method = "default";
   /// The run seed of the data-set runs (`--seed`; every knot's walk and every
   /// sample derive from it, docs/models.md); 1 unless given.

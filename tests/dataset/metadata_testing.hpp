@@ -41,6 +41,7 @@ inline DatasetMetadata complete_metadata() {
   m.coarse_continuation = std::vector<double>{1e-2};
   m.newton_hessian = "exact";
   m.remove_rigid_motions = false;
+  m.contact_hessian = "gauss-newton";
   m.max_iterations = 3000;
   m.burn_in = 7;
   m.sampling = "fixed:3,burn-in=7";

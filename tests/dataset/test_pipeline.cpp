@@ -393,6 +393,7 @@ std::vector<Change> every_parameter_change() {
       {"coarse_continuation", [](ExploreOptions& o) { o.relax.coarse_continuation = {1e-2}; }},
       {"newton_hessian", [](ExploreOptions& o) { o.relax.newton.hessian = HessianMode::Exact; }},
       {"remove_rigid_motions", [](ExploreOptions& o) { o.relax.newton.remove_rigid_motions = false; }},
+      {"contact_hessian", [](ExploreOptions& o) { o.relax.contact_gauss_newton = true; }},
       {"max_iterations", [](ExploreOptions& o) { o.relax.max_iterations = 300; }},
       {"burn_in", [](ExploreOptions& o) { o.burn_in = 2; }},
       {"sampling", [](ExploreOptions& o) { o.samples = 2; }},
@@ -458,15 +459,19 @@ TEST(Pipeline, JournalKeyIsTheEarlierKeyForTheEarlierParameters) {
             std::string::npos);
   // every named method of with_method() has its own key and metadata
   std::set<std::string> keys;
-  for (const char* name : {"default", "hybrid", "exact", "paper"}) {
+  for (const std::string& name : method_names()) {
     ExploreOptions o = small_fixed_run(3, 1);
     o.relax = with_method(o.relax, name);
     keys.insert(journal_key(dataset_metadata(o)));
-    if (std::string(name) == "hybrid") {
+    if (name == "hybrid") {
       EXPECT_EQ(journal_key(dataset_metadata(o)), journal_key(dataset_metadata(direct)));
     }
+    if (name == "gauss-newton") {
+      EXPECT_EQ(dataset_metadata(o).contact_hessian, "gauss-newton");
+      EXPECT_NE(journal_key(dataset_metadata(o)).find(" contact=gauss-newton"), std::string::npos);
+    }
   }
-  EXPECT_EQ(keys.size(), 4u);
+  EXPECT_EQ(keys.size(), method_names().size());
   // the multilevel method (the default) names itself and its settings
   const std::string multilevel = journal_key(dataset_metadata(small_fixed_run(3, 1)));
   EXPECT_NE(multilevel.find(" dhat=0.40000000000000002 method=multilevel levels=1 coarse=0.001 iterations=5000 "),
@@ -526,7 +531,7 @@ TEST(Pipeline, OldFormatFileReadsAndExtends) {
   fs::rename(out + ".old", out);
   const hid_t f = H5Fopen(out.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
   ASSERT_GE(f, 0);
-  for (const char* name : {"relax_method", "newton_hessian", "remove_rigid_motions", "grow_fugacity",
+  for (const char* name : {"relax_method", "newton_hessian", "remove_rigid_motions", "contact_hessian", "grow_fugacity",
                            "shrink_fugacity", "growth_factor", "decorrelation_moves", "burn_in", "compute_stiffness",
                            "contact_continuation", "max_iterations"})
     ASSERT_GE(H5Adelete(f, name), 0) << name;
@@ -546,6 +551,7 @@ TEST(Pipeline, OldFormatFileReadsAndExtends) {
     EXPECT_EQ(m.growth_factor, 10.0);
     EXPECT_EQ(m.decorrelation_moves, 0);
     EXPECT_EQ(m.contact_continuation, std::vector<double>{});
+    EXPECT_EQ(m.contact_hessian, "eigen-projected");
     EXPECT_FALSE(m.max_iterations || m.burn_in || m.compute_stiffness);
     EXPECT_EQ(m.difference(dataset_metadata(base)), "");
   }

@@ -207,10 +207,19 @@ ResolvedModel resolve_model(const RelaxOptions& options, double mean_edge_length
   return r;
 }
 
+const std::vector<std::string>& method_names() {
+  static const std::vector<std::string> names = {"default", "gauss-newton", "hybrid", "exact", "paper"};
+  return names;
+}
+
 RelaxOptions with_method(RelaxOptions o, const std::string& name) {
   if (name == "default") return o;
+  if (name == "gauss-newton") {
+    o.contact_gauss_newton = true;
+    return o;
+  }
   if (name != "hybrid" && name != "exact" && name != "paper")
-    throw InputError("the method must be default, hybrid, exact or paper, not '" + name + "'");
+    throw InputError("the method must be default, gauss-newton, hybrid, exact or paper, not '" + name + "'");
   o.method = RelaxMethod::Direct;
   if (name == "exact") o.newton.hessian = HessianMode::Exact;
   if (name == "paper") {

@@ -44,6 +44,9 @@ struct DatasetMetadata {
   std::optional<std::vector<double>> coarse_continuation;
   std::optional<std::string> newton_hessian;  ///< NewtonOptions::hessian: "hybrid" or "exact"
   std::optional<bool> remove_rigid_motions;   ///< NewtonOptions::remove_rigid_motions
+  /// The contact pairs' Hessian in the projected iterations:
+  /// "eigen-projected" or "gauss-newton" (RelaxOptions::contact_gauss_newton).
+  std::optional<std::string> contact_hessian;
   std::optional<int> max_iterations;        ///< [1] Newton iterations per relaxation phase
   std::optional<int> burn_in;               ///< [samples] walk samples discarded before sample 0
   /// ExploreOptions::sampling_description(): "fixed:50" or

@@ -249,11 +249,15 @@ struct RelaxResult {
 
 /// The named methods of `knots relax --method` (and of explore, dataset and
 /// the experiments) applied to `options`: "default" (RelaxMethod::Multilevel
-/// with the hybrid Hessian: `options` as they are), "hybrid" (Direct: the
+/// with the hybrid Hessian: `options` as they are), "gauss-newton" (the
+/// default with RelaxOptions::contact_gauss_newton), "hybrid" (Direct: the
 /// default before the multilevel relaxation), "exact" (Direct with the exact
 /// Hessian every iteration) or "paper" (Direct with NewtonOptions::paper()).
 /// The trace and verbosity settings are kept. Throws InputError for another name.
 RelaxOptions with_method(RelaxOptions options, const std::string& name);
+
+/// The names with_method() accepts, in the order above.
+const std::vector<std::string>& method_names();
 
 /// Relaxes `curve` (n by 3, a simple closed polygon; rest lengths are its edge
 /// lengths unless options.rest_lengths gives them). Throws InputError for a curve that is not simple or has a

@@ -27,7 +27,7 @@ struct RelaxRequest {
   std::optional<double> contact_stiffness;  ///< [energy/length²] --contact-stiffness ω; unset: 1e3·(E/2000)·(r/0.2)³
   std::vector<double> continuation;    ///< [1] --continuation F[,F...]: factors in (0, 1); empty: off
   bool full_model = false;             ///< --full-model: positions, θ and Θ even when Θ is free
-  std::string method = "default";      ///< --method: default, hybrid, exact or paper (with_method())
+  std::string method = "default";      ///< --method: a name of method_names() (with_method())
   int coarse_levels = kDefaultCoarseLevels;  ///< [1] --coarse-levels: multilevel levels below n
   std::string factorization = "block"; ///< --factorization: block or cholmod
   bool eigen = false;                  ///< --eigen: also the smallest non-rigid Hessian eigenvalue
