@@ -16,6 +16,9 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
+// The round-off of an energy E: changes of E smaller than this are noise.
+double energy_roundoff(double E) { return 64.0 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::fabs(E)); }
+
 }  // namespace
 
 std::string to_string(SolverStatus status) {
@@ -193,10 +196,12 @@ bool NewtonSolver::factorize(Objective& f, Run& run, bool exact, bool converged)
 }
 
 // At ||g|| <= tolerance with H + ε λ_min I not positive definite: leaves the
-// saddle along the eigenvector of the most negative eigenvalue. True when it
-// moved; false when the point is a minimum to working precision (the
-// negative eigenvalue is noise on a neutral mode: report.marginal) or the
-// eigen-solve finds no negative eigenvalue.
+// saddle along the eigenvector of the most negative eigenvalue. True when a
+// step along it lowers E by more than its round-off; false when none does
+// (the point is a minimum to working precision, the negative eigenvalue
+// noise on a neutral mode: report.marginal) or the eigen-solve finds no
+// negative eigenvalue. A decrease within round-off is no escape: taking it
+// would repeat the eigen-solve at a point no different in energy.
 bool NewtonSolver::stability_test(Objective& f, Run& run, const VecX& g) {
   NewtonReport& report = run.report;
   const double base_shift = options_.shift_epsilon * options_.lambda_min;
@@ -215,13 +220,14 @@ bool NewtonSolver::stability_test(Objective& f, Run& run, const VecX& g) {
   report.time_collision += since(tc);
   run.rec.max_step = t;
   const auto tl = Clock::now();
+  const double below = run.E - energy_roundoff(run.E);
   for (; t >= options_.min_step; t *= options_.backtrack) {
     const VecX trial = run.x + t * v;
     f.set_dofs(trial);
     ++report.line_search_trials;
     ++run.rec.line_search_trials;
     const double Et = f.energy();
-    if (std::isfinite(Et) && Et < run.E) {
+    if (std::isfinite(Et) && Et < below) {
       run.x = trial;
       run.E = Et;
       run.rec.step = t;
@@ -257,7 +263,7 @@ bool NewtonSolver::line_search(Objective& f, Run& run, const VecX& d, double gd)
   run.report.time_collision += since(t0);
   run.rec.max_step = t_max;
   t0 = Clock::now();
-  const double roundoff = 64.0 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::fabs(run.E));
+  const double roundoff = energy_roundoff(run.E);
   bool accepted = false;
   for (double t = std::min(1.0, t_max); t >= o.min_step && !accepted; t *= o.backtrack) {
     const VecX trial = run.x + t * d;
