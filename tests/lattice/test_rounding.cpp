@@ -86,7 +86,7 @@ TEST(Rounding, APrioriBoundForAdjacentEdges) {
       const double c2 = clearance(e.points).distance;
       const double s = 1.01 * std::max(2.0 * bound / c2, 4.0 * kHalfDiagonal / edge_lengths(e.points).maxCoeff());
       const RoundingResult r = lattice_walk_of(e.points, s);
-      SCOPED_TRACE(std::string(name) + " " + e.method);
+      SCOPED_TRACE(std::string(name) + " " + to_string(e.method));
       EXPECT_LE(r.displacement, bound + 1e-12);
       EXPECT_GT(s * c2, 2.0 * r.displacement);
       EXPECT_EQ(alexander(to_points(r.points)), alexander(e.points));

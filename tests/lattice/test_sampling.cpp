@@ -186,12 +186,12 @@ TEST(Sampling, BadOptions) {
 // both keep the curve's polynomial.
 TEST(Sampling, LatticeStartOfACurve) {
   const LatticeStart square = lattice_start(to_points(lattice_start(KnotTable::global().at("3_1")).points));
-  EXPECT_EQ(square.method, "lattice");
+  EXPECT_EQ(square.method, StartMethod::Lattice);
   EXPECT_FALSE(square.rounding_scale());
   EXPECT_EQ(square.alexander, (AlexanderPolynomial{{1, -1, 1}}));
   const Points coil = embed_knot(KnotTable::global().at("4_1"), EmbeddingSource::Braid, {}).points;
   const LatticeStart rounded = lattice_start(coil);
-  EXPECT_EQ(rounded.method, "rounded");
+  EXPECT_EQ(rounded.method, StartMethod::Rounded);
   ASSERT_TRUE(rounded.rounding_scale());
   EXPECT_GT(*rounded.rounding_scale(), 0.0);
   EXPECT_EQ(alexander(to_points(rounded.points)), (AlexanderPolynomial{{-1, 3, -1}}));

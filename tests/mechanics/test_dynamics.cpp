@@ -376,7 +376,7 @@ TEST(Dynamics, FullModelKeepsItsLink) {
   o.duration = 20.0;
   const DynamicsResult r = simulate(ring_mode2(n, 0.01 * R), VecX::Ones(n), o);
   EXPECT_EQ(r.status, DynamicsStatus::Duration) << (r.failed_status ? to_string(*r.failed_status) : "");
-  EXPECT_EQ(r.model, "fixed-link");
+  EXPECT_EQ(r.model, TwistModel::FixedLink);
   EXPECT_NEAR(r.link, 1.0, 1e-6);
 }
 

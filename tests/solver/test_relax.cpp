@@ -92,7 +92,7 @@ TEST(Relax, FastPathAndFullModelReachTheSameEnergy) {
   full_options.rest_lengths = edge_lengths(P);
   const RelaxResult full = relax(fast.positions, full_options);
   ASSERT_EQ(full.status(), RelaxStatus::ConvergedStable);
-  EXPECT_EQ(full.model, "free-theta");
+  EXPECT_EQ(full.model, TwistModel::FreeTheta);
   EXPECT_NEAR(full.energy.twist, 0.0, 1e-12);
   // same rest lengths: equal to 1e-8 relative (gradient tolerance 1e-8 times displacements of order 1)
   EXPECT_NEAR(full.energy.total, fast.energy.total, 1e-8 * fast.energy.total);

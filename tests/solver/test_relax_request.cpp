@@ -129,7 +129,7 @@ TEST(CurveEnergy, RegularPolygonHasTheDiscreteBendingEnergy) {
   EXPECT_EQ(e.energy.contact, 0.0);
   EXPECT_EQ(e.contacts, 0);
   EXPECT_EQ(e.energy.total, e.energy.bend);
-  EXPECT_EQ(e.model, "twist-free");
+  EXPECT_EQ(e.model, TwistModel::TwistFree);
   EXPECT_NEAR(e.writhe, 0.0, 1e-12);
   // not an equilibrium: at its own rest lengths the bending energy pushes the polygon outwards
   EXPECT_GT(e.gradient_norm, 0.0);
@@ -140,7 +140,7 @@ TEST(CurveEnergy, PrescribedLinkAndRestLength) {
   CurveEnergyOptions o;
   o.link = 1.25;
   const CurveEnergy e = curve_energy(P, o);
-  EXPECT_EQ(e.model, "fixed-link");
+  EXPECT_EQ(e.model, TwistModel::FixedLink);
   EXPECT_NEAR(e.link, 1.25, 1e-12);
   EXPECT_NEAR(e.twist, 1.25, 1e-12);  // a planar circle has no writhe
   // uniform twist density Tw = 1.25 over length L: E_twist = GJ/2 (2π·Tw)² / L

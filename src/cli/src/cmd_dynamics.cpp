@@ -146,7 +146,7 @@ int cmd_dynamics(int argc, char** argv) {
     print_json(summary);
     return r.status == DynamicsStatus::StepFailed ? 1 : 0;
   }
-  std::cout << r.model << ", " << r.status << (r.failed_status ? " (" + to_string(*r.failed_status) + ")" : "") << " at t = "
+  std::cout << to_string(r.model) << ", " << r.status << (r.failed_status ? " (" + to_string(*r.failed_status) + ")" : "") << " at t = "
             << fmt(r.time) << " after " << r.steps << " steps (" << r.newton_iterations << " Newton iterations, "
             << fmt(seconds, 3) << " s)\n"
             << "elastic energy " << fmt(summary["start_energy"].get<double>()) << " -> "

@@ -135,7 +135,7 @@ int cmd_embed(int argc, char** argv) {
   }
   const KnotRecord& knot = KnotTable::global().at(name);
   const Embedding e = embed_knot(knot, parse_embedding_source(from), opt);
-  return write_embedded_knot(e, knot.name, knot.name + " from " + e.method, out, json);
+  return write_embedded_knot(e, knot.name, knot.name + " from " + to_string(e.method), out, json);
 }
 
 }  // namespace ek::cli

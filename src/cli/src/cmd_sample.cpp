@@ -133,7 +133,7 @@ void print_summary(const SampleArgs& a, const SampleSource& src, const LatticeSt
     Json j;
     j["name"] = src.name;
     j["input"] = src.from_file ? Json(a.input) : Json(nullptr);
-    j["start"] = start.method;
+    j["start"] = to_string(start.method);
     j["start_vertices"] = start.points.rows();
     const std::optional<double> scale = start.rounding_scale();
     j["rounding_scale"] = scale ? number(*scale) : Json(nullptr);
@@ -148,7 +148,7 @@ void print_summary(const SampleArgs& a, const SampleSource& src, const LatticeSt
   } else {
     std::cout << "wrote " << a.count << " sample" << (a.count > 1 ? "s" : "") << " of " << src.name << " ("
               << a.opt.vertices << " vertices, Alexander " << start.alexander.to_string() << ") from a "
-              << start.points.rows() << "-vertex " << start.method << " lattice polygon: " << files.front();
+              << start.points.rows() << "-vertex " << to_string(start.method) << " lattice polygon: " << files.front();
     if (a.count > 1) std::cout << " ... " << files.back();
     std::cout << "\n";
   }

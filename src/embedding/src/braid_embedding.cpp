@@ -181,7 +181,7 @@ Embedding embed_braid(const BraidWord& word, const EmbeddingOptions& o) {
   require_input(closure_components(word) == 1, "braid embedding: the closure is not a knot");
   const Points dense = dense_components(word, o, {1}).front();
   const AlexanderPolynomial expected = alexander(word);
-  return finish_embedding(dense, o, "braid", &expected);
+  return finish_embedding(dense, o, EmbeddingMethod::Braid, &expected);
 }
 
 }  // namespace ek

@@ -13,7 +13,7 @@ void validate(const EmbeddingOptions& options);
 /// Resamples a dense closed polyline to options.vertices equal edges scaled
 /// to options.edge_length, measures the clearance and, when options.verify,
 /// checks the Alexander polynomial against `expected`.
-Embedding finish_embedding(const Points& dense, const EmbeddingOptions& options, const std::string& method,
+Embedding finish_embedding(const Points& dense, const EmbeddingOptions& options, EmbeddingMethod method,
                            const AlexanderPolynomial* expected);
 
 /// The link of dense closed polylines: about options.vertices vertices in

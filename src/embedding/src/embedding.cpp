@@ -12,6 +12,15 @@
 
 namespace ek {
 
+std::string to_string(EmbeddingMethod method) {
+  switch (method) {
+    case EmbeddingMethod::Braid: return "braid";
+    case EmbeddingMethod::PD: return "pd";
+    case EmbeddingMethod::Circle: return "circle";
+  }
+  return "?";
+}
+
 EmbeddingSource parse_embedding_source(const std::string& text) {
   if (text == "braid") return EmbeddingSource::Braid;
   if (text == "pd") return EmbeddingSource::PD;
@@ -56,8 +65,9 @@ LinkEmbedding finish_link_embedding(const std::vector<Points>& dense, const Embe
   return e;
 }
 
-Embedding finish_embedding(const Points& dense, const EmbeddingOptions& o, const std::string& method,
+Embedding finish_embedding(const Points& dense, const EmbeddingOptions& o, EmbeddingMethod how,
                            const AlexanderPolynomial* expected) {
+  const std::string method = to_string(how);
   EquilateralResult eq;
   try {
     eq = resample_equilateral(dense, o.vertices);
@@ -70,7 +80,7 @@ Embedding finish_embedding(const Points& dense, const EmbeddingOptions& o, const
   e.points = eq.points * scale;
   e.edge_length = o.edge_length;
   e.max_edge_deviation = eq.max_deviation * scale;
-  e.method = method;
+  e.method = how;
   e.clearance = clearance(e.points).distance;
   if (o.verify && expected) {
     AlexanderPolynomial got;
@@ -98,7 +108,7 @@ Embedding embed_knot(const KnotRecord& knot, EmbeddingSource source, const Embed
       dense.row(i) << std::cos(s), std::sin(s), 0.0;
     }
     const AlexanderPolynomial one;
-    return finish_embedding(dense, options, "circle", &one);
+    return finish_embedding(dense, options, EmbeddingMethod::Circle, &one);
   }
   if (source == EmbeddingSource::Braid) {
     if (!knot.braid) throw InputError("knot " + knot.name + " has no braid word in the table");

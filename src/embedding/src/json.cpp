@@ -5,7 +5,7 @@ namespace ek {
 Json embedding_json(const std::string& name, const Embedding& e, const std::optional<std::string>& output) {
   Json j;
   j["name"] = name;
-  j["from"] = e.method;
+  j["from"] = to_string(e.method);
   if (output) j["output"] = *output;
   j["vertices"] = e.points.rows();
   j["edge_length"] = json_number(e.edge_length);

@@ -336,7 +336,7 @@ Embedding embed_pd(const PDCode& pd, const EmbeddingOptions& o) {
   const AlexanderPolynomial expected = alexander(pd);
   const PDLinkCode code = knot_code(pd);
   const auto finish = [&](int rounds) {
-    return finish_embedding(pd_dense_curves(code, o, rounds).front(), o, "pd", &expected);
+    return finish_embedding(pd_dense_curves(code, o, rounds).front(), o, EmbeddingMethod::PD, &expected);
   };
   if (!o.verify) return finish(o.pd_reweighting_rounds);
   // The resampled polygon can miss the drawing's tightest places when n is

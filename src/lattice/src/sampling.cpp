@@ -58,6 +58,17 @@ SampleBatch sample_lattice_polygons(const LatticePoints& start, const SampleOpti
   return batch;
 }
 
+std::string to_string(StartMethod method) {
+  switch (method) {
+    case StartMethod::PD: return "pd";
+    case StartMethod::Braid: return "braid";
+    case StartMethod::Square: return "square";
+    case StartMethod::Lattice: return "lattice";
+    case StartMethod::Rounded: return "rounded";
+  }
+  return "?";
+}
+
 LatticeStart lattice_start(const KnotRecord& knot, const LatticeStartOptions& o) {
   require(!o.candidates.empty(), "lattice_start: no embedding candidates");
   LatticeStart best;
@@ -65,7 +76,7 @@ LatticeStart lattice_start(const KnotRecord& knot, const LatticeStartOptions& o)
   if (knot.crossing_number == 0) {
     best.points.resize(4, 3);
     best.points << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0;
-    best.method = "square";
+    best.method = StartMethod::Square;
     best.rounding.points = best.points;
     return best;
   }
@@ -92,7 +103,7 @@ LatticeStart lattice_start(const KnotRecord& knot, const LatticeStartOptions& o)
         why = std::string("crosses itself (") + err.what() + ")";
       }
     if (!why.empty()) {
-      skipped += std::string(skipped.empty() ? "" : "; ") + e.method + " embedding with " + std::to_string(m) +
+      skipped += std::string(skipped.empty() ? "" : "; ") + to_string(e.method) + " embedding with " + std::to_string(m) +
                  " vertices " + why;
       continue;
     }
@@ -108,7 +119,7 @@ LatticeStart lattice_start(const KnotRecord& knot, const LatticeStartOptions& o)
     if (best.points.rows() == 0 || r.points.rows() < best.points.rows()) {
       best.points = r.points;
       best.rounding = std::move(r);
-      best.method = e.method;
+      best.method = e.method == EmbeddingMethod::Braid ? StartMethod::Braid : StartMethod::PD;
       best.embedding_vertices = m;
     }
   }
@@ -128,18 +139,18 @@ LatticeStart lattice_start(const Points& curve, const RoundingOptions& rounding)
   start.alexander = alexander(curve);
   start.embedding_vertices = static_cast<int>(curve.rows());
   if (as_lattice_polygon(curve, &start.points)) {
-    start.method = "lattice";
+    start.method = StartMethod::Lattice;
     start.rounding.points = start.points;
     return start;
   }
   start.rounding = round_to_lattice(curve, rounding, start.alexander);
   start.points = start.rounding.points;
-  start.method = "rounded";
+  start.method = StartMethod::Rounded;
   return start;
 }
 
 std::optional<double> LatticeStart::rounding_scale() const {
-  if (method == "square" || method == "lattice") return std::nullopt;
+  if (method == StartMethod::Square || method == StartMethod::Lattice) return std::nullopt;
   return rounding.scale;
 }
 

@@ -309,7 +309,7 @@ DynamicsResult simulate(const Points& start, const VecX& rest, const DynamicsOpt
   const AlexanderPolynomial a0 = input_alexander(start, "dynamics: the start");
 
   DynamicsResult r;
-  r.model = to_string(model.model);
+  r.model = model.model;
   Points x = start, v = velocity.size() ? velocity : Points(Points::Zero(n, 3));
   r.frames.push_back(m.frame(0.0, x, v, masses, 0));
   r.max_speed = r.frames.back().max_speed;

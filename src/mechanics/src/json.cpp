@@ -56,7 +56,7 @@ Json dynamics_json(const DynamicsOptions& o, const DynamicsResult& r, const Json
   for (const DynamicsFrame& f : r.frames) max_threedim = std::max(max_threedim, threedim(f.positions));
   const auto total = [](const DynamicsFrame& f) { return f.kinetic + f.elastic + f.gravity; };
   Json j;
-  j["model"] = r.model;
+  j["model"] = to_string(r.model);
   j["link"] = o.model.link ? json_number(*o.model.link) : Json(nullptr);
   j["time_step"] = json_number(o.time_step);
   j["duration"] = json_number(o.duration);

@@ -27,7 +27,7 @@ CurveEnergy curve_energy(const Points& P, const CurveEnergyOptions& options) {
   ElasticRod rod = model_rod(P, rest, model_options, resolved);
   CurveEnergy e;
   e.vertices = n;
-  e.model = to_string(resolved.model);
+  e.model = resolved.model;
   e.energy.stretch = rod.energy(EnergyTerm::Stretch);
   e.energy.bend = rod.energy(EnergyTerm::Bend);
   e.energy.twist = rod.energy(EnergyTerm::Twist);

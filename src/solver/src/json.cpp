@@ -45,7 +45,7 @@ Json newton_report_json(const NewtonReport& r) {
 Json curve_energy_json(const CurveEnergy& e) {
   Json j;
   j["vertices"] = e.vertices;
-  j["model"] = e.model;
+  j["model"] = to_string(e.model);
   j["energy"] = json_number(e.energy.total);
   j["energy_stretch"] = json_number(e.energy.stretch);
   j["energy_bend"] = json_number(e.energy.bend);
@@ -77,7 +77,7 @@ Json relax_json(const RelaxResult& r, const std::string& method) {
   j["writhe"] = json_number(r.writhe);
   j["alexander_preserved"] = r.alexander_preserved;
   j["alexander"] = r.alexander.coefficients;
-  j["model"] = r.model;
+  j["model"] = to_string(r.model);
   j["vertices"] = r.positions.rows();
   j["smallest_eigenvalue"] = r.smallest_eigenvalue ? json_number(*r.smallest_eigenvalue) : Json(nullptr);
   j["method"] = method;

@@ -330,7 +330,7 @@ void relax_level(const Points& curve, const VecX& rest, const RelaxOptions& opti
                  RelaxResult& result) {
   const int n = static_cast<int>(curve.rows());
   const ResolvedModel model = resolve_model(options, rest.mean());
-  result.model = to_string(model.model);
+  result.model = model.model;
   result.lambda_min = cached_lambda_min(n, rest.mean(), options.material, model.model);
   const NewtonOptions no = newton_options(options, model, result.lambda_min);
   const ContactOptions co = contact_options(model, options);

@@ -70,13 +70,18 @@ struct EmbeddingOptions {
   bool verify = true;
 };
 
+/// How an embedding was drawn: from a braid word (embed_braid()), a PD code
+/// (embed_pd()), or as a circle (the unknot).
+enum class EmbeddingMethod { Braid, PD, Circle };
+std::string to_string(EmbeddingMethod method);  ///< "braid", "pd", "circle"
+
 /// An embedding and what was measured on it.
 struct Embedding {
   Points points;             ///< n by 3, edge i joins vertex i to i + 1 (cyclic)
   double edge_length = 0.0;  ///< [length] common edge length
   double max_edge_deviation = 0.0;  ///< [length] max | |e_i| - edge_length |
   double clearance = 0.0;    ///< [length] smallest distance between non-adjacent edges
-  std::string method;        ///< "braid", "pd" or "circle" (the unknot)
+  EmbeddingMethod method = EmbeddingMethod::Braid;  ///< what it was drawn from
   /// The polygon's Alexander polynomial, checked against the code's (set
   /// when EmbeddingOptions::verify).
   std::optional<AlexanderPolynomial> alexander;

@@ -94,13 +94,19 @@ struct LatticeStartOptions {
   RoundingOptions rounding;         ///< How each embedding is rounded onto Z³ (rounding.hpp).
 };
 
+/// How a lattice start was obtained: a table knot's PD or braid embedding
+/// rounded onto the lattice, or the square (the unknot); a curve that was
+/// already a lattice polygon (Lattice) or was rounded (Rounded).
+enum class StartMethod { PD, Braid, Square, Lattice, Rounded };
+std::string to_string(StartMethod method);  ///< "pd", "braid", "square", "lattice", "rounded"
+
 /// A table knot's initial lattice polygon and how it was obtained.
 struct LatticeStart {
   LatticePoints points;           ///< self-avoiding lattice polygon of the knot type
   RoundingResult rounding;        ///< the rounding (its points are `points`)
-  /// "pd", "braid" or "square" (the unknot) for a table knot; "lattice" or
-  /// "rounded" for a curve (lattice_start(const Points&)).
-  std::string method;
+  /// PD, Braid or Square (the unknot) for a table knot; Lattice or Rounded
+  /// for a curve (lattice_start(const Points&)).
+  StartMethod method = StartMethod::PD;
   int embedding_vertices = 0;     ///< [1] vertex count of the rounded embedding (the curve's)
   AlexanderPolynomial alexander;  ///< the table's (or the curve's) polynomial (checked on `points`)
 

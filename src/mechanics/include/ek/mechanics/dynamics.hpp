@@ -203,7 +203,7 @@ struct DynamicsResult {
   int newton_iterations = 0;         ///< [1] over all steps
   std::optional<SolverStatus> failed_status;  ///< the solver status of a failed step
   bool alexander_preserved = true;   ///< the end's Alexander polynomial is the start's
-  std::string model;                 ///< "twist-free", "free-theta" or "fixed-link"
+  TwistModel model = TwistModel::TwistFree;  ///< the unknowns of the rod
 };
 
 /// Integrates from `start` (n by 3, simple, not touching itself; inside the

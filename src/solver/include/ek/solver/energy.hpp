@@ -35,7 +35,7 @@ struct CurveEnergyOptions {
 /// contacts, and twist, writhe and link.
 struct CurveEnergy {
   int vertices = 0;                  ///< [1] n
-  std::string model;                 ///< "twist-free" or "fixed-link"
+  TwistModel model = TwistModel::TwistFree;  ///< twist-free, or fixed-link with a prescribed link
   /// [energy] total = stretch + bend + twist + contact (slab 0).
   EnergyParts energy;
   double gradient_norm = 0.0;        ///< [energy/length] ‖∇E‖₂ over every unknown of the model

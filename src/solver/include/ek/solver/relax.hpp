@@ -232,7 +232,7 @@ struct RelaxResult {
   AlexanderPolynomial result_alexander;   ///< of the result
   std::optional<double> smallest_eigenvalue;  ///< of H without rigid modes, when asked
   double lambda_min = 0.0;          ///< straight-rod λ_min used for the shift
-  std::string model;                ///< "twist-free", "free-theta" or "fixed-link"
+  TwistModel model = TwistModel::TwistFree;  ///< the unknowns the rod was relaxed with
 
   /// The report of all phases (coarse levels, continuation, slab, final) together:
   /// iterations, factorisations, line-search trials, saddle escapes and the
