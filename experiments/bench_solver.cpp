@@ -425,7 +425,7 @@ int skips(const Config& c) {
     for (const Run& r : runs[v]) sel.push_back(&r);
     const Summary sm = summarize(variants[v], variants[v], sel);
     const double total = sm.mean_seconds * sm.runs;
-    kept = kept && !sm.statuses.count("topology-changed");
+    kept = kept && !sm.statuses.count(to_string(ek::RelaxStatus::TopologyChanged));
     std::printf("%-11s %5d %7d %9.3f %9.3f %7.0f\n", sm.name.c_str(), sm.runs, sm.stable, total, sm.median_seconds,
                 sm.median_iterations);
     csv << sm.name << "," << sm.runs << "," << sm.stable << "," << fmt(total, "%.6g") << ","

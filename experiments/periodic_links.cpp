@@ -136,7 +136,7 @@ std::optional<results::PeriodicLinkedSymmetric> linked_symmetric(const Args& a, 
     y.relative_rotation_deg = gs.rotation;
     y.curve = "curves/" + m.family + "_p" + std::to_string(m.p) + "_lk_symmetric.obj";
     const auto good = [](const results::PeriodicLinkedSymmetric& z) {
-      return z.status == "converged-stable" && z.threedim >= kPlanarThreedim && z.symmetry_error <= kSymmetricError;
+      return z.status == to_string(RelaxStatus::ConvergedStable) && z.threedim >= kPlanarThreedim && z.symmetry_error <= kSymmetricError;
     };
     const auto better = [&](const results::PeriodicLinkedSymmetric& u, const results::PeriodicLinkedSymmetric& v) {
       if (good(u) != good(v)) return good(u);

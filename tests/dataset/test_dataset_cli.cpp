@@ -61,7 +61,7 @@ TEST(DatasetCli, ContinuationIsRecorded) {
   EXPECT_EQ(d.metadata().max_iterations, 4000);
   const ek::KnotEntry k = d.read("3_1");
   ASSERT_EQ(k.runs.size(), 2u);
-  for (const auto& run : k.runs) EXPECT_EQ(run.status, "converged-stable") << run.message;
+  for (const auto& run : k.runs) EXPECT_EQ(run.status, ek::RunStatus::ConvergedStable) << run.message;
   fs::remove_all(dir);
 }
 

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <functional>
 #include <nlohmann/json.hpp>
+#include <set>
 #include <sstream>
 
 #include "ek/core/errors.hpp"
@@ -38,7 +39,7 @@ KnotEntry sample_entry(const std::string& name, int m, int n) {
     RunRecord run;
     run.sample = r;
     run.seed = 1000 + r;
-    run.status = r < m ? "converged-stable" : "stalled";
+    run.status = r < m ? RunStatus::ConvergedStable : RunStatus::Stalled;
     run.equilibrium = r < m ? r : -1;
     run.iterations = 10 + r;
     run.seconds = 0.5 * r;
@@ -84,7 +85,7 @@ TEST(DatasetFile, RoundTrip) {
   EXPECT_EQ(a.attribute_names, b.attribute_names);
   EXPECT_EQ(a.alexander, b.alexander);
   ASSERT_EQ(a.runs.size(), 4u);
-  EXPECT_EQ(a.runs[3].status, "stalled");
+  EXPECT_EQ(a.runs[3].status, RunStatus::Stalled);
   EXPECT_EQ(a.runs[3].equilibrium, -1);
   EXPECT_EQ(a.runs[3].message, "line search cannot progress");
   EXPECT_EQ(a.runs[2].seed, 1002u);
@@ -95,6 +96,25 @@ TEST(DatasetFile, RoundTrip) {
   EXPECT_THROW(a.attribute_column("colour"), InputError);
   EXPECT_THROW(r.read("5_1"), InputError);
   std::remove(path.c_str());
+}
+
+// Run statuses are text only in the file: every status reads back as itself,
+// and a text no version wrote is an input error naming it.
+TEST(DatasetFile, RunStatusTexts) {
+  std::set<std::string> texts;
+  for (RunStatus s : {RunStatus::ConvergedStable, RunStatus::ConvergedUnstable, RunStatus::MaxIterations,
+                      RunStatus::Stalled, RunStatus::TopologyChanged, RunStatus::Error}) {
+    EXPECT_EQ(parse_run_status(to_string(s)), s);
+    texts.insert(to_string(s));
+  }
+  EXPECT_EQ(texts, (std::set<std::string>{"converged-stable", "converged-unstable", "max-iterations", "stalled",
+                                          "topology-changed", "error"}));
+  try {
+    parse_run_status("converged");
+    ADD_FAILURE() << "an unknown status was read";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("'converged'"), std::string::npos) << e.what();
+  }
 }
 
 TEST(DatasetFile, UncommittedWriterLeavesExistingFileAlone) {

@@ -20,7 +20,7 @@ const std::string kOptions = "knot=3_1 n=4 test";
 JournalRun run(int sample, bool stable) {
   JournalRun r;
   r.record.sample = sample;
-  r.record.status = stable ? "converged-stable" : "stalled";
+  r.record.status = stable ? RunStatus::ConvergedStable : RunStatus::Stalled;
   if (stable) r.positions = fixtures::circle(4, 1.0);
   r.energy.total = 2.5 + sample;
   return r;
@@ -74,7 +74,7 @@ TEST(Journal, EveryCutKeepsTheCompleteRecords) {
   const JournalContents all = parse_journal(bytes, head, "j");
   EXPECT_EQ(all.runs.at(2).positions, fixtures::circle(4, 1.0));
   EXPECT_EQ(all.runs.at(1).positions.rows(), 0);
-  EXPECT_EQ(all.runs.at(1).record.status, "stalled");
+  EXPECT_EQ(all.runs.at(1).record.status, RunStatus::Stalled);
 }
 
 // A flipped byte in a record ends the journal there (CRC); a record whose

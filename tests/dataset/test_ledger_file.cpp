@@ -40,7 +40,7 @@ LedgerEntry sample_entry(const std::string& name, int m, int states, int n) {
   for (int s = 0; s < states; ++s)
     e.states.push_back({s, (m - s + states - 1) / states, fixtures::random_fourier_curve(n, 3, 20 + s)});
   for (int r = 0; r <= m; ++r)
-    e.runs.push_back({r, r < m ? "converged-stable" : "max-iterations", r < m ? r : -1, 100 + r, 0.25 * r, true});
+    e.runs.push_back({r, r < m ? RunStatus::ConvergedStable : RunStatus::MaxIterations, r < m ? r : -1, 100 + r, 0.25 * r, true});
   return e;
 }
 
@@ -119,7 +119,7 @@ TEST(LedgerFile, RoundTrip) {
   EXPECT_EQ(b.entries[0].representative_sample(1), 1);
   EXPECT_EQ(b.provenance.curves_per_knot, a.provenance.curves_per_knot);
   EXPECT_EQ(b.provenance.curve_quantum, a.provenance.curve_quantum);
-  EXPECT_EQ(b.entries[0].status_counts().at("max-iterations"), 1);
+  EXPECT_EQ(b.entries[0].status_counts().at(RunStatus::MaxIterations), 1);
 }
 
 // A state's spread over its members: state 0 of 5_2 holds rows 0, 3, 6.

@@ -118,7 +118,7 @@ TEST(Pipeline, ExploreKnotStoresRunsEquilibriaAndClusters) {
   int stable = 0;
   for (const auto& r : e.runs) {
     EXPECT_TRUE(r.alexander_preserved);
-    if (r.status == "converged-stable") {
+    if (r.status == RunStatus::ConvergedStable) {
       ASSERT_GE(r.equilibrium, 0);
       ++stable;
     } else {

@@ -58,7 +58,7 @@ KnotEntry entry(const std::string& name) {
   for (int s = 0; s < 5; ++s) {
     RunRecord r;
     r.sample = s;
-    r.status = s < 4 ? "converged-stable" : "stalled";
+    r.status = s < 4 ? RunStatus::ConvergedStable : RunStatus::Stalled;
     r.equilibrium = s < 4 ? s : -1;
     e.runs.push_back(r);
   }

@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <numeric>
+#include <ostream>
 #include <sstream>
 #include <thread>
 #include <variant>
@@ -72,7 +73,26 @@ FieldValue read_value(hid_t f, const MetadataField& field, const std::string& pa
   return std::monostate{};
 }
 
+const std::pair<RunStatus, const char*> kRunStatusNames[] = {
+    {RunStatus::ConvergedStable, "converged-stable"}, {RunStatus::ConvergedUnstable, "converged-unstable"},
+    {RunStatus::MaxIterations, "max-iterations"},     {RunStatus::Stalled, "stalled"},
+    {RunStatus::TopologyChanged, "topology-changed"}, {RunStatus::Error, "error"}};
+
 }  // namespace
+
+std::string to_string(RunStatus status) {
+  for (const auto& [s, name] : kRunStatusNames)
+    if (s == status) return name;
+  return "?";
+}
+
+std::ostream& operator<<(std::ostream& out, RunStatus status) { return out << to_string(status); }
+
+RunStatus parse_run_status(const std::string& text) {
+  for (const auto& [s, name] : kRunStatusNames)
+    if (text == name) return s;
+  throw InputError("unknown run status '" + text + "'");
+}
 
 void detail::write_parameters(hid_t f, const DatasetMetadata& m) {
   for (const auto& field : metadata_fields()) {
@@ -168,7 +188,8 @@ struct RunRealColumn {
 };
 struct RunTextColumn {
   const char* name;
-  std::string RunRecord::*field;
+  std::string (*get)(const RunRecord&);
+  void (*set)(RunRecord&, const std::string&);
 };
 const RunIntColumn kRunIntColumns[] = {
     {"sample", [](const RunRecord& r) -> std::int64_t { return r.sample; },
@@ -186,7 +207,10 @@ const RunIntColumn kRunIntColumns[] = {
 };
 const RunRealColumn kRunRealColumns[] = {
     {"seconds", &RunRecord::seconds}, {"energy", &RunRecord::energy}, {"gradient_norm", &RunRecord::gradient_norm}};
-const RunTextColumn kRunTextColumns[] = {{"status", &RunRecord::status}, {"message", &RunRecord::message}};
+const RunTextColumn kRunTextColumns[] = {
+    {"status", [](const RunRecord& r) { return to_string(r.status); },
+     [](RunRecord& r, const std::string& v) { r.status = parse_run_status(v); }},
+    {"message", [](const RunRecord& r) { return r.message; }, [](RunRecord& r, const std::string& v) { r.message = v; }}};
 
 void write_runs(hid_t knot, const std::vector<RunRecord>& runs) {
   h5::Handle g = h5::create_group(knot, "runs");
@@ -203,7 +227,7 @@ void write_runs(hid_t knot, const std::vector<RunRecord>& runs) {
   }
   for (const RunTextColumn& c : kRunTextColumns) {
     std::vector<std::string> v;
-    for (const RunRecord& run : runs) v.push_back(run.*c.field);
+    for (const RunRecord& run : runs) v.push_back(c.get(run));
     h5::write_strings(g.id(), c.name, v);
   }
 }
@@ -366,7 +390,7 @@ class KnotGroupReader {
     for (const RunTextColumn& c : kRunTextColumns) {
       const auto v = h5::read_strings(g.id(), c.name);
       rows(v.size());
-      for (size_t k = 0; k < v.size(); ++k) out[k].*c.field = v[k];
+      for (size_t k = 0; k < v.size(); ++k) c.set(out[k], v[k]);
     }
     for (size_t k = 0; k < out.size(); ++k)
       if (out[k].equilibrium < -1 || out[k].equilibrium >= static_cast<int>(equilibria))

@@ -65,7 +65,7 @@ std::vector<char> encode(const JournalRun& r) {
   Writer w;
   w.put(static_cast<std::int32_t>(r.record.sample));
   w.put(static_cast<std::uint64_t>(r.record.seed));
-  w.str(r.record.status);
+  w.str(to_string(r.record.status));
   w.put(static_cast<std::int32_t>(r.record.equilibrium));
   w.put(static_cast<std::int32_t>(r.record.iterations));
   w.put(r.record.seconds);
@@ -88,7 +88,11 @@ JournalRun decode(const char* p, size_t n) {
   JournalRun r;
   r.record.sample = rd.get<std::int32_t>();
   r.record.seed = rd.get<std::uint64_t>();
-  r.record.status = rd.str();
+  try {
+    r.record.status = parse_run_status(rd.str());
+  } catch (const InputError&) {
+    throw std::runtime_error("bad record");
+  }
   r.record.equilibrium = rd.get<std::int32_t>();
   r.record.iterations = rd.get<std::int32_t>();
   r.record.seconds = rd.get<double>();

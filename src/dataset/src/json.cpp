@@ -53,6 +53,13 @@ Json describe_json(const DatasetReader& reader) {
 
 namespace {
 
+/// Runs per status, by the statuses' names (JSON keys).
+std::map<std::string, int> status_texts(const std::map<RunStatus, int>& counts) {
+  std::map<std::string, int> out;
+  for (const auto& [status, count] : counts) out[to_string(status)] = count;
+  return out;
+}
+
 template <class T>
 Json optional_json(const std::optional<T>& v) {
   return v ? Json(*v) : Json(nullptr);
@@ -94,7 +101,7 @@ Json ledger_json(const Ledger& l) {
     k["braid_index"] = e.braid_index;
     k["samples_used"] = e.samples_used;
     k["stable"] = e.stable_runs();
-    k["statuses"] = e.status_counts();
+    k["statuses"] = status_texts(e.status_counts());
     k["run_seconds"] = json_number(e.run_seconds());
     k["equilibria"] = e.equilibria();
     k["unseen"] = unseen_json(ledger_unseen(e));
@@ -124,7 +131,7 @@ Json ledger_summary_json(const Ledger& l) {
     equilibria += e.equilibria();
     states += static_cast<long>(e.states.size());
     runs += static_cast<long>(e.runs.size());
-    for (const auto& [status, count] : e.status_counts()) statuses[status] += count;
+    for (const auto& [status, count] : e.status_counts()) statuses[to_string(status)] += count;
     if (e.is_link()) {
       ++links;
       continue;

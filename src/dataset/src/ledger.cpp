@@ -17,7 +17,6 @@ namespace {
 
 constexpr const char* kLedgerFormat = "elastic-knots-ledger";
 constexpr std::int64_t kLedgerFormatVersion = 1;
-constexpr const char* kStable = "converged-stable";
 
 using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
 
@@ -150,11 +149,11 @@ int LedgerEntry::attribute_column(const std::string& attribute) const {
 }
 
 int LedgerEntry::stable_runs() const {
-  return static_cast<int>(std::count_if(runs.begin(), runs.end(), [](const LedgerRun& r) { return r.status == kStable; }));
+  return static_cast<int>(std::count_if(runs.begin(), runs.end(), [](const LedgerRun& r) { return r.status == RunStatus::ConvergedStable; }));
 }
 
-std::map<std::string, int> LedgerEntry::status_counts() const {
-  std::map<std::string, int> out;
+std::map<RunStatus, int> LedgerEntry::status_counts() const {
+  std::map<RunStatus, int> out;
   for (const LedgerRun& r : runs) ++out[r.status];
   return out;
 }
@@ -198,7 +197,7 @@ void write_ledger(const std::string& path, const Ledger& ledger) {
     detail::write_parameters(f.id(), ledger.parameters);
     write_provenance(f.id(), ledger.provenance);
     // status names, in order of first appearance
-    std::vector<std::string> statuses;
+    std::vector<RunStatus> statuses;
     for (const LedgerEntry& e : ledger.entries)
       for (const LedgerRun& r : e.runs)
         if (std::find(statuses.begin(), statuses.end(), r.status) == statuses.end()) statuses.push_back(r.status);
@@ -249,7 +248,9 @@ void write_ledger(const std::string& path, const Ledger& ledger) {
       rows.push_back(r);
     }
     h5::write_strings(f.id(), "knot_names", names);
-    h5::write_strings(f.id(), "status_names", statuses);
+    std::vector<std::string> status_names;
+    for (RunStatus s : statuses) status_names.push_back(to_string(s));
+    h5::write_strings(f.id(), "status_names", status_names);
     {
       h5::Handle g = h5::create_group(f.id(), "runs");
       runs.write(g.id());
@@ -331,7 +332,13 @@ class LedgerFileReader {
   }
 
   void read_tables() {
-    statuses_ = h5::read_strings(f_, "status_names");
+    for (const std::string& name : h5::read_strings(f_, "status_names")) {
+      try {
+        statuses_.push_back(parse_run_status(name));
+      } catch (const InputError&) {
+        damaged("its status names hold '" + name + "'");
+      }
+    }
     {
       h5::Handle g = h5::open_group(f_, "runs");
       seconds_ = h5::read_doubles(g.id(), "seconds");
@@ -457,7 +464,8 @@ class LedgerFileReader {
   std::string path_;
   double quantum_ = 1.0;
   std::vector<std::int64_t> origins_, steps_, curve_;
-  std::vector<std::string> statuses_, columns_;
+  std::vector<RunStatus> statuses_;
+  std::vector<std::string> columns_;
   std::vector<std::vector<std::int64_t>> runs_;
   std::vector<double> seconds_, attributes_, linkage_;
   std::vector<std::int64_t> state_, representative_, members_;

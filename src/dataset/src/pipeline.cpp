@@ -25,7 +25,6 @@
 namespace ek {
 namespace {
 
-
 /// Rest edge length of the lattice samples (unit edges).
 constexpr double kLatticeEdgeLength = 1.0;
 
@@ -44,7 +43,7 @@ JournalRun run_one(const Points& sample, int index, std::uint64_t seed, const Ex
     RelaxOptions ro = o.relax;
     ro.smallest_eigenvalue = o.stiffness;
     const RelaxResult r = relax(sample, ro);
-    out.record.status = to_string(r.status());
+    out.record.status = run_status(r.status());
     const NewtonReport all = r.all_phases();
     out.record.iterations = all.iterations;
     out.record.seconds = all.seconds;
@@ -60,7 +59,7 @@ JournalRun run_one(const Points& sample, int index, std::uint64_t seed, const Ex
       out.record.message = "Alexander polynomial changed from " + r.alexander.to_string() + " to " +
                            r.result_alexander.to_string();
   } catch (const std::exception& e) {
-    out.record.status = "error";
+    out.record.status = RunStatus::Error;
     out.record.message = e.what();
   }
   return out;
@@ -107,6 +106,17 @@ std::string ExploreOptions::sampling_description() const {
     s << "fixed:" << samples;
   if (burn_in > 0) s << ",burn-in=" << burn_in;
   return s.str();
+}
+
+RunStatus run_status(RelaxStatus status) {
+  switch (status) {
+    case RelaxStatus::ConvergedStable: return RunStatus::ConvergedStable;
+    case RelaxStatus::ConvergedUnstable: return RunStatus::ConvergedUnstable;
+    case RelaxStatus::MaxIterations: return RunStatus::MaxIterations;
+    case RelaxStatus::Stalled: return RunStatus::Stalled;
+    case RelaxStatus::TopologyChanged: return RunStatus::TopologyChanged;
+  }
+  return RunStatus::Error;
 }
 
 DatasetMetadata dataset_metadata(const ExploreOptions& o) {
@@ -663,7 +673,7 @@ JournalRun run_link_one(const Link& sample, int index, std::uint64_t seed, const
   out.stiffness = std::numeric_limits<double>::quiet_NaN();
   try {
     const LinkRelaxResult r = relax_link(sample, o.relax);
-    out.record.status = to_string(r.status());
+    out.record.status = run_status(r.status());
     out.record.iterations = r.report.iterations;
     out.record.seconds = r.report.seconds;
     for (const NewtonReport& c : r.continuation_reports) {
@@ -683,7 +693,7 @@ JournalRun run_link_one(const Link& sample, int index, std::uint64_t seed, const
     if (r.report.status == SolverStatus::ConvergedStable && r.topology_preserved()) out.positions = all_vertices(r.positions);
     if (!r.topology_preserved()) out.record.message = "the link type changed (components' Alexander polynomials, linking numbers or Conway polynomial)";
   } catch (const std::exception& e) {
-    out.record.status = "error";
+    out.record.status = RunStatus::Error;
     out.record.message = e.what();
   }
   return out;

@@ -207,7 +207,7 @@ DatasetRunSummary run_dataset(const DatasetRunOptions& o) {
     const std::string journal = work + "/" + subject->name + ".journal";
     KnotEntry entry = subject->explore(o.explore, journal, [&](const RunRecord& r) {
       ++summary.runs;
-      const bool stable = r.status == "converged-stable";
+      const bool stable = r.status == RunStatus::ConvergedStable;
       if (stable) ++summary.equilibria;
       progress.run_finished(stable);
     });

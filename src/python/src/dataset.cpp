@@ -69,7 +69,7 @@ Result runs_columns(const KnotEntry& e) {
   for (const RunRecord& r : e.runs) {
     sample.push_back(r.sample);
     seed.push_back(static_cast<std::int64_t>(r.seed));
-    status.push_back(r.status);
+    status.push_back(to_string(r.status));
     equilibrium.push_back(r.equilibrium);
     iterations.push_back(r.iterations);
     seconds.push_back(r.seconds);

@@ -35,6 +35,7 @@
 ///
 /// Files are always written to a temporary name and renamed into place.
 #include <cstdint>
+#include <iosfwd>
 #include <memory>
 #include <string>
 #include <vector>
@@ -45,11 +46,22 @@
 
 namespace ek {
 
+/// How a run ended: its relaxation's status (RelaxStatus: the solver's, or
+/// TopologyChanged), or Error when the run threw (RunRecord::message says
+/// why). Stored as text: "converged-stable", "converged-unstable",
+/// "max-iterations", "stalled", "topology-changed", "error".
+enum class RunStatus { ConvergedStable, ConvergedUnstable, MaxIterations, Stalled, TopologyChanged, Error };
+std::string to_string(RunStatus status);  ///< the texts above
+/// The status of a text written by to_string; InputError for any other text.
+RunStatus parse_run_status(const std::string& text);
+/// Prints to_string(status) (messages, test failures).
+std::ostream& operator<<(std::ostream& out, RunStatus status);
+
 /// One relaxation run (successful or not).
 struct RunRecord {
   int sample = 0;                ///< index of the lattice sample within the knot
   std::uint64_t seed = 0;        ///< seed of the walk that produced it
-  std::string status;            ///< solver status, or "topology-changed", "error"
+  RunStatus status = RunStatus::Error;  ///< how it ended
   int equilibrium = -1;          ///< row in `equilibria`, -1 when not stored
   int iterations = 0;            ///< [1] Newton iterations of the relaxation
   double seconds = 0.0;          ///< [s]

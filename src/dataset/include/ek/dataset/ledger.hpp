@@ -39,7 +39,7 @@ namespace ek {
 /// One relaxation run, as the ledger keeps it.
 struct LedgerRun {
   int sample = 0;             ///< [1] index of the lattice sample within the knot
-  std::string status;         ///< RunRecord::status
+  RunStatus status = RunStatus::Error;  ///< RunRecord::status
   int equilibrium = -1;       ///< [1] row of the knot's attribute table, -1 when not stored
   int iterations = 0;         ///< [1]
   double seconds = 0.0;       ///< [s] wall time of the relaxation (one thread)
@@ -80,7 +80,7 @@ struct LedgerEntry : KnotHeader {
   /// Runs that ended converged-stable.
   int stable_runs() const;
   /// Runs per status.
-  std::map<std::string, int> status_counts() const;
+  std::map<RunStatus, int> status_counts() const;
   /// [s] summed relaxation time of the runs (one thread each).
   double run_seconds() const;
   /// min, median (the mean of the middle two for an even count) and max of

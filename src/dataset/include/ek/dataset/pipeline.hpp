@@ -116,6 +116,9 @@ struct ExploreOptions {
 /// value of a prescribed link); jobs does not change the results.
 DatasetMetadata dataset_metadata(const ExploreOptions& options);
 
+/// The run status of a relaxation that ended with `status` (the same name).
+RunStatus run_status(RelaxStatus status);
+
 /// Seed of a knot's walk: splitmix64 of the run seed and a hash of the name.
 std::uint64_t knot_seed(std::uint64_t run_seed, const std::string& name);
 /// Seed of sample k of a knot: the walk continues from sample k - 1 with
