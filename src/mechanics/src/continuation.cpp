@@ -1,13 +1,13 @@
 #include "ek/mechanics/continuation.hpp"
 
 #include <Eigen/Geometry>
-#include <Eigen/SparseLU>
 #include <chrono>
 #include <cmath>
 #include <limits>
 
 #include "ek/core/errors.hpp"
 #include "ek/solver/eigen_analysis.hpp"
+#include "ek/solver/rigid_solve.hpp"
 #include "ek/solver/saddle.hpp"
 
 namespace ek {
@@ -115,37 +115,22 @@ Eigen::MatrixXd LoadedKnot::rigid_modes() {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-using SpMat = Eigen::SparseMatrix<double>;
 
-/// The exact Hessian with the rigid directions made regular (H + κ QQᵀ, κ
-/// the mean |H_ii|), factorised by a sparse LU; solutions have no rigid part.
+/// The exact Hessian with the rigid directions made regular (H + κ QQᵀ,
+/// ek/solver/rigid_solve.hpp); solutions have no rigid part.
 class HessianSolver {
  public:
-  explicit HessianSolver(ParameterizedObjective& f) {
-    SparseAssembler A;
-    f.assemble_hessian(A, HessianKind::Exact);
-    upper_ = A.matrix();
-    SpMat H = upper_.selfadjointView<Eigen::Upper>();
-    Q_ = f.rigid_modes();
-    if (Q_.cols() > 0) H += (H.diagonal().cwiseAbs().mean() * Q_ * Q_.transpose()).sparseView();
-    H.makeCompressed();
-    lu_.compute(H);
-    ok_ = lu_.info() == Eigen::Success;
-  }
-  bool ok() const { return ok_; }
-  VecX solve(const VecX& r) {
-    VecX x = lu_.solve(r);
-    if (Q_.cols() > 0) x -= Q_ * (Q_.transpose() * x);
-    return x;
-  }
-  const Eigen::SparseMatrix<double, Eigen::ColMajor, int>& upper() const { return upper_; }
-  const Eigen::MatrixXd& rigid() const { return Q_; }
+  explicit HessianSolver(ParameterizedObjective& f) : solver_(assemble(f), f.rigid_modes()) {}
+  bool ok() const { return solver_.ok(); }
+  VecX solve(const VecX& r) const { return solver_.solve(r); }
 
  private:
-  Eigen::SparseMatrix<double, Eigen::ColMajor, int> upper_;
-  Eigen::MatrixXd Q_;
-  Eigen::SparseLU<SpMat> lu_;
-  bool ok_ = false;
+  static Eigen::SparseMatrix<double, Eigen::ColMajor, int> assemble(ParameterizedObjective& f) {
+    SparseAssembler A;
+    f.assemble_hessian(A, HessianKind::Exact);
+    return A.matrix();
+  }
+  RigidRegularizedSolver solver_;
 };
 
 /// The RMS distance per vertex from the predictor xp to the landing x after

@@ -2,9 +2,9 @@
 
 #include "ek/core/errors.hpp"
 #include "ek/knots/alexander.hpp"
+#include "ek/solver/rigid_solve.hpp"
 #include "ek/solver/saddle.hpp"
 
-#include <Eigen/SparseLU>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -164,23 +164,15 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
-/// The Newton–Raphson direction: (H + κ Q Qᵀ) d = −g, d ⊥ Q. Empty when the
-/// matrix is singular.
+/// The Newton–Raphson direction: (H + κ Q Qᵀ) d = −g, d ⊥ Q
+/// (rigid_solve.hpp). Empty when the matrix is singular.
 VecX root_direction(Objective& f, const VecX& g) {
   SparseAssembler A;
   f.assemble_hessian(A, HessianKind::Exact);
-  Eigen::SparseMatrix<double> H = A.matrix().selfadjointView<Eigen::Upper>();
-  const Eigen::MatrixXd Q = f.rigid_modes();
-  if (Q.cols() > 0) {
-    const double kappa = H.diagonal().cwiseAbs().mean();
-    H += (kappa * Q * Q.transpose()).sparseView();
-  }
-  H.makeCompressed();
-  Eigen::SparseLU<Eigen::SparseMatrix<double>> lu(H);
-  if (lu.info() != Eigen::Success) return {};
-  VecX d = lu.solve(-g);
-  if (lu.info() != Eigen::Success || !d.allFinite()) return {};
-  if (Q.cols() > 0) d -= Q * (Q.transpose() * d);
+  const RigidRegularizedSolver H(A.matrix(), f.rigid_modes());
+  if (!H.ok()) return {};
+  VecX d = H.solve(-g);
+  if (!d.allFinite()) return {};
   return d;
 }
 
