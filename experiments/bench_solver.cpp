@@ -61,7 +61,6 @@
 #include <string>
 #include <vector>
 
-#include "ek/core/atomic_file.hpp"
 #include "ek/core/errors.hpp"
 #include "ek/core/parse.hpp"
 #include "ek/geometry/curve_io.hpp"
@@ -103,10 +102,12 @@ std::string fmt(double x, const char* f = "%.4g") {
   return buf;
 }
 
-void write_file(const std::string& path, const std::string& text) {
-  ek::AtomicFile f(path);
-  f.stream() << text;
-  f.commit();
+/// A cell as a stream prints it (integers, names, and the medians of iteration counts).
+template <class T>
+std::string cell(const T& value) {
+  std::ostringstream s;
+  s << value;
+  return s.str();
 }
 
 Method method_named(const std::string& name, const ek::RelaxOptions& base) {
@@ -232,10 +233,11 @@ std::vector<Summary> summary_table(const std::vector<Run>& runs, const std::vect
 }
 
 void print_summary_table(const std::vector<Summary>& table, int count, const std::string& out) {
-  std::ostringstream csv;
-  csv << "knot,method,runs,converged_stable,statuses,median_seconds,mean_seconds,max_seconds,median_cpu_seconds,"
-         "median_iterations,symbolic_per_run,numeric_per_run,frac_assembly,frac_factorization,frac_collision,"
-         "frac_line_search,frac_eigen,frac_other,failed_per_run\n";
+  ek::exp::Csv csv(out + "/solver_macro.csv",
+                   {"knot", "method", "runs", "converged_stable", "statuses", "median_seconds", "mean_seconds",
+                    "max_seconds", "median_cpu_seconds", "median_iterations", "symbolic_per_run", "numeric_per_run",
+                    "frac_assembly", "frac_factorization", "frac_collision", "frac_line_search", "frac_eigen",
+                    "frac_other", "failed_per_run"});
   std::printf("solver macro benchmark (n = 400, %d samples per knot)\n", count);
   std::printf("%-9s %-9s %5s %6s %8s %8s %8s %8s %6s %7s %7s %8s | %6s %6s %6s %6s %6s %6s | %s\n", "knot", "method",
               "runs", "stable", "median s", "mean s", "max s", "cpu s", "med it", "sym/run", "num/run", "fail/run", "asm",
@@ -247,14 +249,13 @@ void print_summary_table(const std::vector<Summary>& table, int count, const std
                 s.median_cpu, s.median_iterations, s.symbolic, s.numeric, s.failed, 100 * s.assembly,
                 100 * s.factorization, 100 * s.collision, 100 * s.line_search, 100 * s.eigen, 100 * s.other,
                 statuses_text(s).c_str());
-    csv << s.name << "," << s.method << "," << s.runs << "," << s.stable << "," << statuses_text(s) << ","
-        << fmt(s.median_seconds, "%.6g") << "," << fmt(s.mean_seconds, "%.6g") << "," << fmt(s.max_seconds, "%.6g")
-        << "," << fmt(s.median_cpu, "%.6g") << "," << s.median_iterations << "," << fmt(s.symbolic, "%.6g") << ","
-        << fmt(s.numeric, "%.6g") << "," << fmt(s.assembly, "%.4f") << "," << fmt(s.factorization, "%.4f") << ","
-        << fmt(s.collision, "%.4f") << "," << fmt(s.line_search, "%.4f") << "," << fmt(s.eigen, "%.4f") << ","
-        << fmt(s.other, "%.4f") << "," << fmt(s.failed, "%.6g") << "\n";
+    csv.row({s.name, s.method, cell(s.runs), cell(s.stable), statuses_text(s), fmt(s.median_seconds, "%.6g"),
+             fmt(s.mean_seconds, "%.6g"), fmt(s.max_seconds, "%.6g"), fmt(s.median_cpu, "%.6g"),
+             cell(s.median_iterations), fmt(s.symbolic, "%.6g"), fmt(s.numeric, "%.6g"), fmt(s.assembly, "%.4f"),
+             fmt(s.factorization, "%.4f"), fmt(s.collision, "%.4f"), fmt(s.line_search, "%.4f"),
+             fmt(s.eigen, "%.4f"), fmt(s.other, "%.4f"), fmt(s.failed, "%.6g")});
   }
-  write_file(out + "/solver_macro.csv", csv.str());
+  csv.commit();
 }
 
 /// With two or more methods: each method's median time and iterations over
@@ -262,8 +263,8 @@ void print_summary_table(const std::vector<Summary>& table, int count, const std
 void print_ratio_table(const std::vector<Summary>& table, const std::vector<Method>& methods,
                        const std::string& out) {
   if (methods.size() < 2) return;
-  std::ostringstream csv;
-  csv << "knot,method,reference,time_ratio,cpu_ratio,iteration_ratio\n";
+  ek::exp::Csv csv(out + "/solver_ratio.csv",
+                   {"knot", "method", "reference", "time_ratio", "cpu_ratio", "iteration_ratio"});
   std::printf("ratios to %s (median time and iterations of the method / of %s)\n", methods[0].name.c_str(),
               methods[0].name.c_str());
   std::printf("%-9s %-9s %9s %9s %9s\n", "knot", "method", "time", "cpu", "iters");
@@ -275,35 +276,36 @@ void print_ratio_table(const std::vector<Summary>& table, const std::vector<Meth
       const double t = s.median_seconds / ref.median_seconds, c = s.median_cpu / ref.median_cpu;
       const double it = s.median_iterations / std::max(1.0, ref.median_iterations);
       std::printf("%-9s %-9s %8.2fx %8.2fx %8.2fx\n", s.name.c_str(), s.method.c_str(), t, c, it);
-      csv << s.name << "," << s.method << "," << ref.method << "," << fmt(t, "%.4f") << "," << fmt(c, "%.4f") << ","
-          << fmt(it, "%.4f") << "\n";
+      csv.row({s.name, s.method, ref.method, fmt(t, "%.4f"), fmt(c, "%.4f"), fmt(it, "%.4f")});
     }
-  write_file(out + "/solver_ratio.csv", csv.str());
+  csv.commit();
 }
 
 void write_runs_csv(const std::vector<Run>& runs, const std::string& out) {
-  std::ostringstream csv;
-  csv << "knot,sample,method,status,seconds,cpu_seconds,iterations,energy,gradient_norm,contacts,min_distance,writhe,"
-         "symbolic,numeric,line_search_trials,saddle_escapes,marginal,failed\n";
+  ek::exp::Csv csv(out + "/solver_macro_runs.csv",
+                   {"knot", "sample", "method", "status", "seconds", "cpu_seconds", "iterations", "energy",
+                    "gradient_norm", "contacts", "min_distance", "writhe", "symbolic", "numeric", "line_search_trials",
+                    "saddle_escapes", "marginal", "failed"});
   for (const Run& r : runs) {
     const ek::NewtonReport rep = r.result.all_phases();
-    csv << r.knot << "," << r.sample << "," << r.method << "," << to_string(r.result.status()) << "," << fmt(r.seconds, "%.6g")
-        << "," << fmt(r.cpu_seconds, "%.6g") << "," << rep.iterations << "," << fmt(r.result.energy.total, "%.15g")
-        << "," << fmt(rep.gradient_norm, "%.3e") << "," << r.result.contacts << ","
-        << fmt(r.result.min_distance, "%.6g") << "," << fmt(r.result.writhe, "%.6g") << ","
-        << rep.symbolic_factorizations << "," << rep.numeric_factorizations << "," << rep.line_search_trials << ","
-        << rep.saddle_escapes << "," << (rep.marginal ? 1 : 0) << "," << rep.failed_factorizations << "\n";
+    csv.row({r.knot, cell(r.sample), r.method, to_string(r.result.status()), fmt(r.seconds, "%.6g"),
+             fmt(r.cpu_seconds, "%.6g"), cell(rep.iterations), fmt(r.result.energy.total, "%.15g"),
+             fmt(rep.gradient_norm, "%.3e"), cell(r.result.contacts), fmt(r.result.min_distance, "%.6g"),
+             fmt(r.result.writhe, "%.6g"), cell(rep.symbolic_factorizations), cell(rep.numeric_factorizations),
+             cell(rep.line_search_trials), cell(rep.saddle_escapes), rep.marginal ? "1" : "0",
+             cell(rep.failed_factorizations)});
   }
-  write_file(out + "/solver_macro_runs.csv", csv.str());
+  csv.commit();
 }
 
 /// Where the iterations and the time went, per method and knot (from the traces).
 void print_trace_summary(const std::vector<Run>& runs, const std::vector<Method>& methods,
                          const std::vector<std::string>& knots, const std::string& out) {
-  std::ostringstream csv;
-  csv << "knot,method,iterations,excess_above_1e-1,excess_1e-2_1e-1,excess_1e-3_1e-2,excess_1e-4_1e-3,"
-         "excess_below_1e-4,full_steps,short_steps,collision_limited,exact_iterations,factorizations,"
-         "failed_factorizations,pattern_changes,seconds,seconds_exact\n";
+  ek::exp::Csv csv(out + "/solver_trace_summary.csv",
+                   {"knot", "method", "iterations", "excess_above_1e-1", "excess_1e-2_1e-1", "excess_1e-3_1e-2",
+                    "excess_1e-4_1e-3", "excess_below_1e-4", "full_steps", "short_steps", "collision_limited",
+                    "exact_iterations", "factorizations", "failed_factorizations", "pattern_changes", "seconds",
+                    "seconds_exact"});
   std::printf("where the iterations went (%% of iterations; excess energy over the end of the phase)\n");
   std::printf("%-9s %-9s %7s | %6s %6s %6s %6s %6s | %6s %6s %6s %6s | %7s %7s\n", "knot", "method", "iters", ">1e-1",
               ">1e-2", ">1e-3", ">1e-4", "<1e-4", "t=1", "t<1/64", "ccd<1", "exact", "fail/fc", "exact s");
@@ -316,11 +318,14 @@ void print_trace_summary(const std::vector<Run>& runs, const std::vector<Method>
                 100 * s.full_steps / it, 100 * s.short_steps / it, 100 * s.collision_limited / it,
                 100 * s.exact_iterations / it, 100.0 * s.failed_factorizations / std::max(1, s.factorizations),
                 100 * s.seconds_exact / std::max(1e-300, s.seconds));
-    csv << name << "," << method << "," << s.iterations;
-    for (int b : s.by_excess) csv << "," << b;
-    csv << "," << s.full_steps << "," << s.short_steps << "," << s.collision_limited << "," << s.exact_iterations << ","
-        << s.factorizations << "," << s.failed_factorizations << "," << s.pattern_changes << ","
-        << fmt(s.seconds, "%.6g") << "," << fmt(s.seconds_exact, "%.6g") << "\n";
+    std::vector<std::string> cells = {name, method, cell(s.iterations)};
+    for (int b : s.by_excess) cells.push_back(cell(b));
+    for (int v : {s.full_steps, s.short_steps, s.collision_limited, s.exact_iterations, s.factorizations,
+                  s.failed_factorizations, s.pattern_changes})
+      cells.push_back(cell(v));
+    cells.push_back(fmt(s.seconds, "%.6g"));
+    cells.push_back(fmt(s.seconds_exact, "%.6g"));
+    csv.row(cells);
   };
   for (const Method& m : methods) {
     ek::TraceSummary all;
@@ -332,13 +337,13 @@ void print_trace_summary(const std::vector<Run>& runs, const std::vector<Method>
     }
     row("all", m.name, all);
   }
-  write_file(out + "/solver_trace_summary.csv", csv.str());
+  csv.commit();
 }
 
 void write_trace(const std::string& out, const Run& run) {
   std::ostringstream text;
   ek::write_trace_csv(text, run.result.trace, run.result.phases);
-  write_file(out + "/traces/" + run.method + "-" + run.knot + "-" + std::to_string(run.sample) + ".csv", text.str());
+  ek::exp::write_text(out + "/traces/" + run.method + "-" + run.knot + "-" + std::to_string(run.sample) + ".csv", text.str());
 }
 
 // ---------------------------------------------------------------------------
@@ -414,8 +419,8 @@ int skips(const Config& c) {
         print_run(runs[v].back());
       }
   }
-  std::ostringstream csv;
-  csv << "variant,runs,converged_stable,total_seconds,median_seconds,median_iterations\n";
+  ek::exp::Csv csv(c.out + "/solver_skips.csv",
+                   {"variant", "runs", "converged_stable", "total_seconds", "median_seconds", "median_iterations"});
   std::printf("solver skips (n = 400, %d samples each of %zu knots, method %s)\n", c.count, c.knots.size(),
               c.methods.front().name.c_str());
   std::printf("%-11s %5s %7s %9s %9s %7s\n", "variant", "runs", "stable", "total s", "median s", "med it");
@@ -428,10 +433,10 @@ int skips(const Config& c) {
     kept = kept && !sm.statuses.count(to_string(ek::RelaxStatus::TopologyChanged));
     std::printf("%-11s %5d %7d %9.3f %9.3f %7.0f\n", sm.name.c_str(), sm.runs, sm.stable, total, sm.median_seconds,
                 sm.median_iterations);
-    csv << sm.name << "," << sm.runs << "," << sm.stable << "," << fmt(total, "%.6g") << ","
-        << fmt(sm.median_seconds, "%.6g") << "," << sm.median_iterations << "\n";
+    csv.row({sm.name, cell(sm.runs), cell(sm.stable), fmt(total, "%.6g"), fmt(sm.median_seconds, "%.6g"),
+             cell(sm.median_iterations)});
   }
-  write_file(c.out + "/solver_skips.csv", csv.str());
+  csv.commit();
   std::printf("wrote %s/solver_skips.csv\n", c.out.c_str());
   return kept ? 0 : 1;
 }
@@ -445,8 +450,7 @@ int peer(const Config& c) {
   }
   std::sort(files.begin(), files.end());
   if (files.empty()) throw ek::InputError("--peer: no .obj or .txt curve in " + c.peer);
-  std::ostringstream csv;
-  csv << "file,method,vertices,status,seconds,iterations,energy\n";
+  ek::exp::Csv csv(c.out + "/solver_peer.csv", {"file", "method", "vertices", "status", "seconds", "iterations", "energy"});
   std::printf("peer curves (knots relax FILE, fastest of 3 runs)\n%-28s %-9s %6s %-18s %9s %7s %14s\n", "file",
               "method", "n", "status", "seconds", "iters", "energy");
   bool kept = true;
@@ -463,11 +467,11 @@ int peer(const Config& c) {
       const int it = best.result.all_phases().iterations;
       std::printf("%-28s %-9s %6d %-18s %9.4f %7d %14.10f\n", name.c_str(), m.name.c_str(), static_cast<int>(P.rows()),
                   to_string(best.result.status()).c_str(), best.seconds, it, best.result.energy.total);
-      csv << name << "," << m.name << "," << P.rows() << "," << to_string(best.result.status()) << ","
-          << fmt(best.seconds, "%.6g") << "," << it << "," << fmt(best.result.energy.total, "%.15g") << "\n";
+      csv.row({name, m.name, cell(P.rows()), to_string(best.result.status()), fmt(best.seconds, "%.6g"), cell(it),
+               fmt(best.result.energy.total, "%.15g")});
     }
   }
-  write_file(c.out + "/solver_peer.csv", csv.str());
+  csv.commit();
   std::printf("wrote %s/solver_peer.csv\n", c.out.c_str());
   return kept ? 0 : 1;
 }
@@ -490,8 +494,8 @@ double fitted_exponent(const std::vector<double>& n, const std::vector<double>& 
 /// Median time per equilibrium at n = 200, 400, 800 for 4_1 and 8_19.
 int scaling(const Config& c) {
   const std::vector<int> sizes = {200, 400, 800};
-  std::ostringstream csv;
-  csv << "knot,method,vertices,runs,converged_stable,median_seconds,median_iterations,exponent\n";
+  ek::exp::Csv csv(c.out + "/solver_scaling.csv", {"knot", "method", "vertices", "runs", "converged_stable",
+                                                   "median_seconds", "median_iterations", "exponent"});
   std::printf("cost against n (median per equilibrium, %d samples per knot and n)\n", c.count);
   std::printf("%-9s %-9s %9s %9s %9s %9s\n", "knot", "method", "n=200 s", "n=400 s", "n=800 s", "exponent");
   bool kept = true;
@@ -509,11 +513,11 @@ int scaling(const Config& c) {
       std::printf("%-9s %-9s %9.3f %9.3f %9.3f %9.2f\n", knot.c_str(), m.name.c_str(), s[0].median_seconds,
                   s[1].median_seconds, s[2].median_seconds, p);
       for (size_t i = 0; i < sizes.size(); ++i)
-        csv << knot << "," << m.name << "," << sizes[i] << "," << s[i].runs << "," << s[i].stable << ","
-            << fmt(s[i].median_seconds, "%.6g") << "," << s[i].median_iterations << "," << fmt(p, "%.4f") << "\n";
+        csv.row({knot, m.name, cell(sizes[i]), cell(s[i].runs), cell(s[i].stable), fmt(s[i].median_seconds, "%.6g"),
+                 cell(s[i].median_iterations), fmt(p, "%.4f")});
     }
   }
-  write_file(c.out + "/solver_scaling.csv", csv.str());
+  csv.commit();
   std::printf("wrote %s/solver_scaling.csv\n", c.out.c_str());
   return kept ? 0 : 1;
 }
