@@ -47,49 +47,27 @@ std::string to_string(PathStatus s) {
 
 // ---- the loaded knot -----------------------------------------------------------
 
-LoadedKnot::LoadedKnot(Objective& knot, ControlledLoad& load) : knot_(knot), load_(load) {
+namespace {
+
+std::vector<Potential*> with_load(const CompositeObjective& knot, ControlledLoad& load) {
+  std::vector<Potential*> terms = knot.terms();
+  terms.push_back(&load);
+  return terms;
+}
+
+}  // namespace
+
+LoadedKnot::LoadedKnot(CompositeObjective& knot, ControlledLoad& load)
+    : knot_(knot),
+      load_(load),
+      sum_({[&knot] { return knot.num_dofs(); }, [&knot] { return knot.dofs(); }, {}}, with_load(knot, load)) {
   x_ = knot_.dofs();
   load_.set_dofs(x_);
 }
 
 void LoadedKnot::set_dofs(const VecX& x) {
   x_ = x;
-  knot_.set_dofs(x);
-  load_.set_dofs(x);
-}
-
-VecX LoadedKnot::gradient() {
-  VecX g = knot_.gradient();
-  load_.add_gradient(g);
-  return g;
-}
-
-void LoadedKnot::assemble_hessian(SparseAssembler& A, HessianKind kind) {
-  knot_.assemble_hessian(inner_, kind);
-  const auto& K = inner_.matrix();
-  A.begin(num_dofs());
-  A.segment(0, inner_.pattern_version());  // the copy's positions follow the knot's pattern
-  for (int col = 0; col < K.outerSize(); ++col)
-    for (Eigen::SparseMatrix<double, Eigen::ColMajor, int>::InnerIterator it(K, col); it; ++it)
-      A.add(it.row(), col, it.value());
-  A.segment(1, load_.hessian_structure());
-  load_.add_hessian(A, kind);
-  A.end();
-}
-
-double LoadedKnot::max_step(const VecX& x, const VecX& dx) {
-  return std::min(knot_.max_step(x, dx), load_.max_step(x, dx));
-}
-
-void LoadedKnot::accept() {
-  knot_.accept();
-  load_.accept();
-}
-
-std::vector<EnergyPart> LoadedKnot::energy_parts() {
-  std::vector<EnergyPart> parts = knot_.energy_parts();
-  load_.add_energy_parts(parts);
-  return parts;
+  sum_.set_dofs(x);
 }
 
 void LoadedKnot::set_parameter(double mu) { load_.set_parameter(mu); }

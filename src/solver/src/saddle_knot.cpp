@@ -29,7 +29,7 @@ KnotSystem::KnotSystem(const Points& x, const VecX& rest, const RelaxOptions& op
 
 KnotSystem::~KnotSystem() = default;
 
-Objective& KnotSystem::objective() { return *impl_->objective; }
+CompositeObjective& KnotSystem::objective() { return *impl_->objective; }
 ElasticRod& KnotSystem::rod() { return impl_->rod; }
 
 Points KnotSystem::positions(const VecX& dofs) const {

@@ -159,23 +159,25 @@ struct LoadPath {
 LoadPath follow_path(ParameterizedObjective& f, const ContinuationOptions& options,
                      const std::function<bool(const PathPoint&)>& on_point = {});
 
-/// The knot model (KnotSystem: rod and contact, twist-free) plus a load: a
-/// ParameterizedObjective whose parameter is the load's. Its rigid modes are
-/// those the load keeps. The system and the load must outlive it.
+/// The knot model (KnotSystem: rod and contact, twist-free) plus a load: the
+/// sum of the knot's potentials and the load (a CompositeObjective: each term
+/// one Hessian segment), a ParameterizedObjective whose parameter is the
+/// load's. Its rigid modes are those the load keeps. The system and the load
+/// must outlive it.
 class LoadedKnot : public ParameterizedObjective {
  public:
-  LoadedKnot(Objective& knot, ControlledLoad& load);  ///< At the knot's current dofs (the load is moved there).
-  int num_dofs() const override { return knot_.num_dofs(); }
-  VecX dofs() const override { return knot_.dofs(); }
+  LoadedKnot(CompositeObjective& knot, ControlledLoad& load);  ///< At the knot's current dofs (the load is moved there).
+  int num_dofs() const override { return sum_.num_dofs(); }
+  VecX dofs() const override { return sum_.dofs(); }
   void set_dofs(const VecX& x) override;
-  double energy() override { return knot_.energy() + load_.energy(); }
-  VecX gradient() override;
-  void assemble_hessian(SparseAssembler& A, HessianKind kind) override;
-  double max_step(const VecX& x, const VecX& dx) override;
-  void accept() override;
+  double energy() override { return sum_.energy(); }
+  VecX gradient() override { return sum_.gradient(); }
+  void assemble_hessian(SparseAssembler& A, HessianKind kind) override { sum_.assemble_hessian(A, kind); }
+  double max_step(const VecX& x, const VecX& dx) override { return sum_.max_step(x, dx); }
+  void accept() override { sum_.accept(); }
   Eigen::MatrixXd rigid_modes() override;
-  std::vector<EnergyPart> energy_parts() override;
-  int active_pairs() const override { return knot_.active_pairs(); }
+  std::vector<EnergyPart> energy_parts() override { return sum_.energy_parts(); }
+  int active_pairs() const override { return sum_.active_pairs(); }
   double parameter() const override { return load_.parameter(); }
   void set_parameter(double mu) override;
   VecX parameter_gradient() override { return load_.parameter_gradient(num_dofs()); }
@@ -187,9 +189,9 @@ class LoadedKnot : public ParameterizedObjective {
   ControlledLoad& load() { return load_; }  ///< The load (not owned).
 
  private:
-  Objective& knot_;
+  CompositeObjective& knot_;
   ControlledLoad& load_;
-  SparseAssembler inner_;
+  CompositeObjective sum_;  ///< the knot's terms, then the load
   VecX x_;
 };
 

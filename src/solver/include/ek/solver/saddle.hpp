@@ -184,7 +184,7 @@ class KnotSystem {
   KnotSystem(const KnotSystem&) = delete;             ///< Not copyable.
   KnotSystem& operator=(const KnotSystem&) = delete;  ///< Not copyable.
 
-  Objective& objective();  ///< E_rod + ω E_contact over the rod's dofs (owned by the system).
+  CompositeObjective& objective();  ///< E_rod + ω E_contact over the rod's dofs (owned by the system).
   ElasticRod& rod();       ///< The rod (owned by the system); its dofs are the objective's.
   /// The Newton options of relax() for this model (tolerance, λ_min, cap).
   const NewtonOptions& newton() const { return newton_; }
