@@ -6,32 +6,11 @@
 
 #include "ek/core/errors.hpp"
 #include "ek/solver/cholesky.hpp"
+#include "shift_invert.hpp"
 
 namespace ek {
-namespace {
 
-/// y = P (H + sI)^{-1} P x, P = I - Q Qᵀ.
-class ShiftInvertOp {
- public:
-  using Scalar = double;
-  ShiftInvertOp(const CholeskySolver& chol, const Eigen::MatrixXd& Q, Eigen::Index n) : chol_(chol), Q_(Q), n_(n) {}
-  Eigen::Index rows() const { return n_; }
-  Eigen::Index cols() const { return n_; }
-  void perform_op(const double* x_in, double* y_out) const {
-    VecX x = Eigen::Map<const VecX>(x_in, n_);
-    if (Q_.cols() > 0) x -= Q_ * (Q_.transpose() * x);
-    VecX y = chol_.solve(x);
-    if (Q_.cols() > 0) y -= Q_ * (Q_.transpose() * y);
-    Eigen::Map<VecX>(y_out, n_) = y;
-  }
-
- private:
-  const CholeskySolver& chol_;
-  const Eigen::MatrixXd& Q_;
-  Eigen::Index n_;
-};
-
-}  // namespace
+using detail::ShiftInvertOp;
 
 namespace {
 

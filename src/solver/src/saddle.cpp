@@ -11,6 +11,7 @@
 #include "ek/core/errors.hpp"
 #include "ek/core/sparse_assembler.hpp"
 #include "ek/solver/cholesky.hpp"
+#include "shift_invert.hpp"
 
 namespace ek {
 namespace {
@@ -23,27 +24,6 @@ using Ldlt = Eigen::SimplicialLDLT<SpMat, Eigen::Upper, Eigen::AMDOrdering<int>>
 constexpr int kMaxBacktracks = 40;
 
 double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
-
-/// y = P (H − τI)⁻¹ P x, P = I − Q Qᵀ.
-class ShiftInvert {
- public:
-  using Scalar = double;
-  ShiftInvert(const CholeskySolver& chol, const Eigen::MatrixXd& Q, Eigen::Index n) : chol_(chol), Q_(Q), n_(n) {}
-  Eigen::Index rows() const { return n_; }
-  Eigen::Index cols() const { return n_; }
-  void perform_op(const double* in, double* out) const {
-    VecX x = Eigen::Map<const VecX>(in, n_);
-    if (Q_.cols() > 0) x -= Q_ * (Q_.transpose() * x);
-    VecX y = chol_.solve(x);
-    if (Q_.cols() > 0) y -= Q_ * (Q_.transpose() * y);
-    Eigen::Map<VecX>(out, n_) = y;
-  }
-
- private:
-  const CholeskySolver& chol_;
-  const Eigen::MatrixXd& Q_;
-  Eigen::Index n_;
-};
 
 /// The complement step of the file comment of saddle.hpp (item 3). The
 /// shift ladder starts one rung below `shift` (in/out: the rung used).
@@ -170,10 +150,10 @@ LowestModes lowest_modes(const SpMat& upper, const Eigen::MatrixXd& Q, int count
   }
   if (!ok) return out;
   out.tau = tau;
-  ShiftInvert op(chol, Q, n);
+  detail::ShiftInvertOp op(chol, Q, n);
   const int ncv = static_cast<int>(std::min<Eigen::Index>(n - Q.cols(), std::max(2 * count + 8, 20)));
   if (ncv <= count) return out;
-  Spectra::SymEigsSolver<ShiftInvert> solver(op, count, ncv);
+  Spectra::SymEigsSolver<detail::ShiftInvertOp> solver(op, count, ncv);
   solver.init();
   solver.compute(Spectra::SortRule::LargestAlge, 1000, tolerance, Spectra::SortRule::LargestAlge);
   if (solver.info() != Spectra::CompInfo::Successful) return out;
