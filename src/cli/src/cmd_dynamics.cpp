@@ -17,6 +17,7 @@
 #include "ek/analysis/attributes.hpp"
 #include "ek/core/atomic_file.hpp"
 #include "ek/core/errors.hpp"
+#include "ek/core/stopwatch.hpp"
 #include "ek/dataset/dataset_file.hpp"
 #include "ek/dataset/json.hpp"
 #include "ek/geometry/curve_io.hpp"
@@ -134,9 +135,9 @@ int cmd_dynamics(int argc, char** argv) {
                                           : edge_lengths(read_curve(c.rest_from));
   std::optional<DatasetReader> reader;
   if (!c.dataset.empty()) reader.emplace(c.dataset);
-  const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch t0;
   const DynamicsResult r = simulate(state, rest, c.options, velocity);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double seconds = t0.seconds();
   if (!r.alexander_preserved) throw TopologyError("dynamics: the knot type changed; nothing is written");
   const Json summary = framed_summary(
       c.file, dynamics_json(c.options, r, closest_equilibrium_json(reader ? &*reader : nullptr, r.positions), seconds),

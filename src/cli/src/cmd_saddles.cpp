@@ -14,6 +14,7 @@
 #include "ek/analysis/similarity.hpp"
 #include "ek/core/atomic_file.hpp"
 #include "ek/core/errors.hpp"
+#include "ek/core/stopwatch.hpp"
 #include "ek/geometry/curve_io.hpp"
 #include "ek/transitions/saddles.hpp"
 #include "folder_output.hpp"
@@ -114,7 +115,7 @@ int cmd_saddles(int argc, char** argv) {
   require_input(c.rest_length > 0.0 && std::isfinite(c.rest_length), "--rest-length must be positive");
   c.options.validate();
   check_output_folder(c.out, c.overwrite);
-  const auto t0 = std::chrono::steady_clock::now();
+  const Stopwatch t0;
   const Points state = read_curve(c.file);
   const VecX rest = VecX::Constant(state.rows(), c.rest_length);
   const SaddleStart start = prepare_start(state, rest, c.options);
@@ -122,7 +123,7 @@ int cmd_saddles(int argc, char** argv) {
   so.reversal = true;
   const CurveSimilarity sim = [so](const Points& a, const Points& b) { return similarity(a, b, so); };
   const std::vector<SaddleRecord> records = find_knot_saddles(start, rest, c.options, sim);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double seconds = t0.seconds();
   const Json summary = summary_json(c, start, records, seconds);
   write_outputs(c, start, records, summary);
   if (c.json) print_json(summary);

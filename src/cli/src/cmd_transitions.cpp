@@ -11,6 +11,7 @@
 #include "commands.hpp"
 #include "ek/core/atomic_file.hpp"
 #include "ek/core/errors.hpp"
+#include "ek/core/stopwatch.hpp"
 #include "ek/dataset/dataset_file.hpp"
 #include "ek/transitions/graph.hpp"
 #include "ek/transitions/run.hpp"
@@ -21,7 +22,6 @@
 namespace ek::cli {
 namespace {
 
-using Clock = std::chrono::steady_clock;
 
 struct TransitionsCommand {
   std::string dataset, name, out;
@@ -73,12 +73,12 @@ std::optional<TransitionResume> read_checkpoint(const std::string& work, const s
 /// "progress: <what>, <done>/<total> units, <elapsed> s, ETA <s> s" on stderr;
 /// the ETA extrapolates this process's units (resumed ones are not timed).
 std::function<void(const std::string&, int, int)> progress_lines(bool show) {
-  const auto t0 = Clock::now();
+  const Stopwatch t0;
   auto first = std::make_shared<int>(-1);
   return [show, t0, first](const std::string& what, int done, int total) {
     if (!show) return;
     if (*first < 0) *first = done;
-    const double elapsed = std::chrono::duration<double>(Clock::now() - t0).count();
+    const double elapsed = t0.seconds();
     std::string eta = "ETA unknown";
     if (done > *first) eta = "ETA " + fmt(elapsed / (done - *first) * (total - done), 3) + " s";
     std::fprintf(stderr, "progress: %s, %d/%d units done, %.0f s, %s\n", what.c_str(), done, total, elapsed,
@@ -95,7 +95,7 @@ int cmd_transitions(int argc, char** argv) {
   refuse_existing_output(c.out, c.overwrite);
   c.run.validate();
   check_writable(c.out);
-  const auto t0 = Clock::now();
+  const Stopwatch t0;
   const DatasetReader reader(c.dataset);
   const KnotEntry entry = reader.read(c.name);
   const std::string key = transition_run_key(c.name, c.run, reader.metadata().edge_length.value_or(1.0));
@@ -115,7 +115,7 @@ int cmd_transitions(int argc, char** argv) {
   const TransitionGraph g = knot_transitions(entry, reader.metadata(), c.run, resume ? &*resume : nullptr);
   write_transitions(c.out, g, c.dataset, key, true, states_searched);
   std::filesystem::remove_all(work, ec);
-  const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  const double seconds = t0.seconds();
   if (c.json) {
     Json j = graph_json(g);
     j["output"] = c.out;

@@ -1,3 +1,4 @@
+#include "ek/core/stopwatch.hpp"
 #include "ek/dataset/run.hpp"
 
 #include <unistd.h>
@@ -11,15 +12,14 @@
 #include <map>
 
 #include "ek/core/atomic_file.hpp"
-#include "ek/core/paths.hpp"
 #include "ek/core/errors.hpp"
+#include "ek/core/paths.hpp"
 #include "ek/knots/table.hpp"
 
 namespace ek {
 namespace {
 
 namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
 
 std::string hms(double seconds) {
   if (!std::isfinite(seconds) || seconds < 0) return "--:--:--";
@@ -33,7 +33,7 @@ std::string hms(double seconds) {
 /// plain line at most every 30 seconds.
 class Progress {
  public:
-  Progress(bool enabled, int knots) : enabled_(enabled), tty_(::isatty(2) != 0), knots_(knots), t0_(Clock::now()) {}
+  Progress(bool enabled, int knots) : enabled_(enabled), tty_(::isatty(2) != 0), knots_(knots) {}
   void knot_started(const std::string& name) { current_ = name; }
   void run_finished(bool stable) {
     ++runs_;
@@ -51,7 +51,7 @@ class Progress {
  private:
   void show(bool knot_event) {
     if (!enabled_) return;
-    const double elapsed = std::chrono::duration<double>(Clock::now() - t0_).count();
+    const double elapsed = t0_.seconds();
     const double rate = elapsed > 0 ? runs_ / elapsed : 0.0;
     const double eta = knots_done_ > 0 ? elapsed / knots_done_ * (knots_ - knots_done_) : NAN;
     if (tty_) {
@@ -72,7 +72,7 @@ class Progress {
   bool enabled_, tty_;
   int knots_, knots_done_ = 0, runs_ = 0, equilibria_ = 0;
   std::string current_;
-  Clock::time_point t0_;
+  Stopwatch t0_;
   double last_line_ = -1e9;
 };
 
@@ -146,7 +146,7 @@ DatasetRunSummary run_dataset(const DatasetRunOptions& o) {
   o.explore.validate();
   require_input(o.shard_count >= 1 && o.shard_index >= 0 && o.shard_index < o.shard_count, "bad shard");
   check_writable(o.output);
-  const auto t0 = Clock::now();
+  const Stopwatch t0;
   DatasetMetadata meta = dataset_metadata(o.explore);
   meta.created = now_iso8601();
   // An existing output must have the same parameters; its knots are kept.
@@ -243,7 +243,7 @@ DatasetRunSummary run_dataset(const DatasetRunOptions& o) {
   // is needed any more, whatever an earlier killed run left there (a part, a
   // journal or a temporary whose writer's PID the system has reused).
   fs::remove_all(work, ec);
-  summary.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  summary.seconds = t0.seconds();
   return summary;
 }
 

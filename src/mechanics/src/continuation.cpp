@@ -1,3 +1,4 @@
+#include "ek/core/stopwatch.hpp"
 #include "ek/mechanics/continuation.hpp"
 
 #include <Eigen/Geometry>
@@ -92,7 +93,6 @@ Eigen::MatrixXd LoadedKnot::rigid_modes() {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
 
 /// The exact Hessian with the rigid directions made regular (H + κ QQᵀ,
 /// ek/solver/rigid_solve.hpp); solutions have no rigid part.
@@ -341,14 +341,14 @@ Step stable_step(const Tangent& t, const VecX& xk, double muk, double ds, const 
 LoadPath follow_path(ParameterizedObjective& f, const ContinuationOptions& o,
                      const std::function<bool(const PathPoint&)>& on_point) {
   o.validate();
-  const auto t0 = Clock::now();
+  const Stopwatch t0;
   LoadPath path;
   Tracer tr(f, o);
   const double mu0 = f.parameter();
   const double first = o.step.value_or(std::max(std::abs(o.target - mu0), 1e-12) / 40.0);
   const auto finish = [&](PathStatus s) {
     path.status = s;
-    path.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    path.seconds = t0.seconds();
     return path;
   };
   const auto record = [&](PathPoint p) {  // false: the caller stops the path

@@ -5,9 +5,10 @@
 #include <limits>
 
 #include "common.hpp"
-#include "ek/core/errors.hpp"
-#include "ek/dataset/json.hpp"
 #include "ek/analysis/attributes.hpp"
+#include "ek/core/errors.hpp"
+#include "ek/core/stopwatch.hpp"
+#include "ek/dataset/json.hpp"
 #include "ek/geometry/polyline.hpp"
 #include "ek/mechanics/json.hpp"
 #include "ek/mechanics/knot_loading.hpp"
@@ -178,9 +179,9 @@ Result dynamics_state(const py::handle& state, std::optional<double> link, doubl
   double seconds = 0.0;
   {
     py::gil_scoped_release release;
-    const auto t0 = std::chrono::steady_clock::now();
+    const Stopwatch t0;
     r = simulate(P, rest, o, v);
-    seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    seconds = t0.seconds();
     if (r.alexander_preserved) end_match = closest_equilibrium_json(reader ? &*reader : nullptr, r.positions);
   }
   if (!r.alexander_preserved) throw TopologyError("dynamics: the knot type changed");

@@ -1,3 +1,4 @@
+#include "ek/core/stopwatch.hpp"
 #include "ek/solver/cholesky.hpp"
 
 #include <cholmod.h>
@@ -38,7 +39,6 @@ struct CholeskySolver::Cholmod {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
 
 /// A cholmod_sparse header over compressed column arrays (no copy).
 cholmod_sparse view(int n, const int* p, const int* i, const double* x, int stype) {
@@ -179,11 +179,11 @@ bool CholeskySolver::factorize(const Matrix& upper, double shift, std::uint64_t 
   if (options_.mode == CholeskyMode::Block) return factorize_block(upper, shift, pattern_version);
   if (pattern_version != analysed_version_ || upper.rows() != analysed_size_ ||
       static_cast<size_t>(nnz) != slot_.size()) {
-    const auto t0 = Clock::now();
+    const Stopwatch t0;
     analyse(upper);
     analysed_version_ = pattern_version;
     analysed_size_ = upper.rows();
-    symbolic_seconds_ += std::chrono::duration<double>(Clock::now() - t0).count();
+    symbolic_seconds_ += t0.seconds();
   }
   for (Eigen::Index k = 0; k < nnz; ++k) Bx_[static_cast<size_t>(slot_[static_cast<size_t>(k)])] = v[k];
   cholmod_common& c = cm_->c;
@@ -203,7 +203,7 @@ bool CholeskySolver::factorize(const Matrix& upper, double shift, std::uint64_t 
 bool CholeskySolver::factorize_block(const Matrix& upper, double shift, std::uint64_t pattern_version) {
   if (pattern_version != analysed_version_ || upper.rows() != analysed_size_ || upper.rows() != block_.size() ||
       static_cast<size_t>(upper.nonZeros()) != block_.pattern_nonzeros()) {
-    const auto t0 = Clock::now();
+    const Stopwatch t0;
     const int symbolic = block_.symbolic_count(), orderings = block_.ordering_count();
     block_.analyse(upper, options_.reuse_ordering, options_.reorder_fill_growth);
     symbolic_count_ += block_.symbolic_count() - symbolic;
@@ -211,7 +211,7 @@ bool CholeskySolver::factorize_block(const Matrix& upper, double shift, std::uin
     good_ = false;
     analysed_version_ = pattern_version;
     analysed_size_ = upper.rows();
-    symbolic_seconds_ += std::chrono::duration<double>(Clock::now() - t0).count();
+    symbolic_seconds_ += t0.seconds();
   }
   ++numeric_count_;
   ok_ = block_.factorize(upper, shift);

@@ -1,3 +1,4 @@
+#include "ek/core/stopwatch.hpp"
 #include "ek/solver/newton.hpp"
 
 #include <algorithm>
@@ -13,8 +14,6 @@
 namespace ek {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 // The round-off of an energy E: changes of E smaller than this are noise.
 double energy_roundoff(double E) { return 64.0 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::fabs(E)); }
@@ -124,7 +123,7 @@ struct NewtonSolver::Run {
         numeric0(c.numeric_count()),
         orderings0(c.ordering_count()),
         symbolic_seconds0(c.symbolic_seconds()) {}
-  Clock::time_point t_start = Clock::now();
+  Stopwatch t_start;
   NewtonReport report;
   HessianSchedule schedule;
   VecX x;
@@ -133,7 +132,7 @@ struct NewtonSolver::Run {
   double shift = 0.0;
   bool exact = false;
   IterationRecord rec;
-  Clock::time_point t_iteration;
+  Stopwatch t_iteration;
   int symbolic0, numeric0, orderings0;
   double symbolic_seconds0;
 };
@@ -158,14 +157,14 @@ NewtonReport NewtonSolver::finish(Run& run, SolverStatus status) {
   r.numeric_factorizations = c.numeric_count() - run.numeric0;
   r.orderings = c.ordering_count() - run.orderings0;
   r.time_symbolic = c.symbolic_seconds() - run.symbolic_seconds0;
-  r.seconds = since(run.t_start);
+  r.seconds = run.t_start.seconds();
   ++phase_;
   return r;
 }
 
 void NewtonSolver::record(Run& run) {
   IterationRecord& rec = run.rec;
-  rec.seconds = since(run.t_iteration);
+  rec.seconds = run.t_iteration.seconds();
   if (options_.verbose)
     std::fprintf(stderr, "newton %d:%5d %-13s E %.12g  |g| %.3e  shift %.2e  ccd %.3e  t %.3e  %s%s\n", rec.phase,
                  rec.iteration, to_string(rec.kind).c_str(), rec.energy, rec.gradient_norm, rec.shift, rec.max_step,
@@ -176,14 +175,14 @@ void NewtonSolver::record(Run& run) {
 // Assembles the Hessian of the kind asked for and factorises it with the
 // shift search. False when no rung factorises.
 bool NewtonSolver::factorize(Objective& f, Run& run, bool exact, bool converged) {
-  auto t0 = Clock::now();
+  Stopwatch t0;
   f.assemble_hessian(state_->assembler, exact ? HessianKind::Exact : HessianKind::Projected);
-  run.report.time_assembly += since(t0);
-  t0 = Clock::now();
+  run.report.time_assembly += t0.seconds();
+  t0.restart();
   const SparseAssembler& A = state_->assembler;
   const ShiftSearch::Result s = state_->shifts.factorize(state_->cholesky, A.matrix(), A.pattern_version(), exact,
                                                          converged);
-  run.report.time_factorization += since(t0);
+  run.report.time_factorization += t0.seconds();
   run.report.failed_factorizations += s.failed;
   run.report.hessian_psd = s.base_ok;
   run.rec.factorizations = s.attempts;
@@ -205,21 +204,21 @@ bool NewtonSolver::factorize(Objective& f, Run& run, bool exact, bool converged)
 bool NewtonSolver::stability_test(Objective& f, Run& run, const VecX& g) {
   NewtonReport& report = run.report;
   const double base_shift = options_.shift_epsilon * options_.lambda_min;
-  const auto te = Clock::now();
+  const Stopwatch te;
   EigenOptions eo;
   eo.count = 1;
   eo.exclude_rigid = false;
   const EigenResult eig = smallest_eigenpairs(state_->assembler.matrix(), Eigen::MatrixXd(), base_shift, eo);
-  report.time_eigen += since(te);
+  report.time_eigen += te.seconds();
   if (eig.converged) report.smallest_eigenvalue = eig.values(0);
   if (!eig.converged || eig.values(0) >= 0.0) return false;  // failed only by a hair: stable within the shift
   VecX v = eig.vectors.col(0);
   if (g.dot(v) > 0.0) v = -v;
-  const auto tc = Clock::now();
+  const Stopwatch tc;
   double t = std::min(1.0, f.max_step(run.x, v));
-  report.time_collision += since(tc);
+  report.time_collision += tc.seconds();
   run.rec.max_step = t;
-  const auto tl = Clock::now();
+  const Stopwatch tl;
   const double below = run.E - energy_roundoff(run.E);
   for (; t >= options_.min_step; t *= options_.backtrack) {
     const VecX trial = run.x + t * v;
@@ -231,11 +230,11 @@ bool NewtonSolver::stability_test(Objective& f, Run& run, const VecX& g) {
       run.x = trial;
       run.E = Et;
       run.rec.step = t;
-      report.time_line_search += since(tl);
+      report.time_line_search += tl.seconds();
       return true;
     }
   }
-  report.time_line_search += since(tl);
+  report.time_line_search += tl.seconds();
   f.set_dofs(run.x);
   report.marginal = true;
   return false;
@@ -243,9 +242,9 @@ bool NewtonSolver::stability_test(Objective& f, Run& run, const VecX& g) {
 
 // The Newton direction -(H + shift·I)⁻¹ g without its rigid-motion part.
 VecX NewtonSolver::direction(Objective& f, Run& run, const VecX& g) {
-  const auto t0 = Clock::now();
+  const Stopwatch t0;
   VecX d = -state_->cholesky.solve(g);
-  run.report.time_factorization += since(t0);
+  run.report.time_factorization += t0.seconds();
   if (options_.remove_rigid_motions) {
     const Eigen::MatrixXd Q = f.rigid_modes();
     if (Q.cols() > 0) d -= Q * (Q.transpose() * d);
@@ -258,11 +257,11 @@ VecX NewtonSolver::direction(Objective& f, Run& run, const VecX& g) {
 // of E; then a step that lowers the gradient norm is accepted instead.
 bool NewtonSolver::line_search(Objective& f, Run& run, const VecX& d, double gd) {
   const NewtonOptions& o = options_;
-  auto t0 = Clock::now();
+  Stopwatch t0;
   const double t_max = f.max_step(run.x, d);
-  run.report.time_collision += since(t0);
+  run.report.time_collision += t0.seconds();
   run.rec.max_step = t_max;
-  t0 = Clock::now();
+  t0.restart();
   const double roundoff = energy_roundoff(run.E);
   bool accepted = false;
   for (double t = std::min(1.0, t_max); t >= o.min_step && !accepted; t *= o.backtrack) {
@@ -280,7 +279,7 @@ bool NewtonSolver::line_search(Objective& f, Run& run, const VecX& d, double gd)
       run.rec.step = t;
     }
   }
-  run.report.time_line_search += since(t0);
+  run.report.time_line_search += t0.seconds();
   return accepted;
 }
 
@@ -291,11 +290,11 @@ bool NewtonSolver::line_search(Objective& f, Run& run, const VecX& d, double gd)
 void NewtonSolver::expand(Objective& f, Run& run, const VecX& x0, double E0, const VecX& d, double gd) {
   const NewtonOptions& o = options_;
   if (!(run.rec.step == 1.0 && o.max_expansion > 1.0 && E0 - run.E >= -o.expansion_ratio * gd)) return;
-  const auto t0 = Clock::now();
+  const Stopwatch t0;
   const double T = o.max_expansion;
   const double t_ext = T * f.max_step(x0, T * d);
-  run.report.time_collision += since(t0);
-  const auto tl = Clock::now();
+  run.report.time_collision += t0.seconds();
+  const Stopwatch tl;
   double tb = 1.0, Eb = run.E;
   for (double tt = 2.0; tt <= t_ext && tt <= T; tt *= 2.0) {
     f.set_dofs(x0 + tt * d);
@@ -313,7 +312,7 @@ void NewtonSolver::expand(Objective& f, Run& run, const VecX& x0, double E0, con
     ++run.report.expansions;
   }
   f.set_dofs(run.x);
-  run.report.time_line_search += since(tl);
+  run.report.time_line_search += tl.seconds();
 }
 
 NewtonReport NewtonSolver::minimize(Objective& f) {
@@ -325,7 +324,7 @@ NewtonReport NewtonSolver::minimize(Objective& f) {
   require(std::isfinite(run.E), "minimize: the starting point is infeasible (energy is not finite)");
   NewtonReport& report = run.report;
   for (;;) {
-    run.t_iteration = Clock::now();
+    run.t_iteration.restart();
     run.rec = IterationRecord{};
     run.rec.phase = phase_;
     run.rec.iteration = report.iterations;
@@ -334,9 +333,9 @@ NewtonReport NewtonSolver::minimize(Objective& f) {
       run.rec.parts = f.energy_parts();
       run.rec.active_pairs = f.active_pairs();
     }
-    auto t0 = Clock::now();
+    Stopwatch t0;
     const VecX g = f.gradient();
-    report.time_assembly += since(t0);
+    report.time_assembly += t0.seconds();
     run.gnorm = report.gradient_norm = run.rec.gradient_norm = g.norm();
     require(std::isfinite(run.gnorm), "minimize: the gradient is not finite");
     const bool converged = run.gnorm <= o.gradient_tolerance;

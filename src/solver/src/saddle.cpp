@@ -1,3 +1,4 @@
+#include "ek/core/stopwatch.hpp"
 #include "ek/solver/saddle.hpp"
 
 #include <Eigen/SparseCholesky>
@@ -16,14 +17,12 @@
 namespace ek {
 namespace {
 
-using Clock = std::chrono::steady_clock;
 using SpMat = Eigen::SparseMatrix<double, Eigen::ColMajor, int>;
 using Ldlt = Eigen::SimplicialLDLT<SpMat, Eigen::Upper, Eigen::AMDOrdering<int>>;
 
 /// Halvings of the complement step before it is given up (relax_complement).
 constexpr int kMaxBacktracks = 40;
 
-double seconds_since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 /// The complement step of the file comment of saddle.hpp (item 3). The
 /// shift ladder starts one rung below `shift` (in/out: the rung used).
@@ -323,7 +322,7 @@ struct Search {
 
 SaddleSearchResult search_saddle(Objective& f, const VecX& direction, const SaddleSearchOptions& o) {
   o.validate();
-  const auto t0 = Clock::now();
+  const Stopwatch t0;
   require(direction.size() == f.num_dofs(), "search_saddle: the direction must have one entry per dof");
   require(direction.allFinite() && direction.norm() > 0.0, "search_saddle: the direction must be finite and nonzero");
   Search s{f, o, {}, {}, {}, f.dofs(), direction.normalized()};
@@ -346,7 +345,7 @@ SaddleSearchResult search_saddle(Objective& f, const VecX& direction, const Sadd
   s.result.x = s.x;
   s.result.eigenvalue = s.lambda;
   s.result.mode = s.v;
-  s.result.seconds = seconds_since(t0);
+  s.result.seconds = t0.seconds();
   return s.result;
 }
 

@@ -1,3 +1,4 @@
+#include "ek/core/stopwatch.hpp"
 #include "ek/solver/symmetric.hpp"
 
 #include "ek/core/errors.hpp"
@@ -161,8 +162,6 @@ void CriticalPointOptions::validate() const {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
 
 /// The Newton–Raphson direction: (H + κ Q Qᵀ) d = −g, d ⊥ Q
 /// (rigid_solve.hpp). Empty when the matrix is singular.
@@ -180,14 +179,14 @@ VecX root_direction(Objective& f, const VecX& g) {
 
 CriticalPointReport solve_critical_point(Objective& f, const CriticalPointOptions& o) {
   o.validate();
-  const auto t0 = Clock::now();
+  const Stopwatch t0;
   CriticalPointReport r;
   VecX x = f.dofs(), g = f.gradient();
   const auto done = [&](SolverStatus status) {
     r.status = status;
     r.energy = f.energy();
     r.gradient_norm = g.norm();
-    r.seconds = since(t0);
+    r.seconds = t0.seconds();
     return r;
   };
   for (r.iterations = 0; r.iterations < o.max_iterations; ++r.iterations) {
@@ -356,7 +355,7 @@ SymmetricDescent descend_symmetric(const Points& start, const VecX& rest, const 
 SymmetricCriticalPoint find_symmetric_critical_point(const Points& start, const VecX& rest,
                                                      const CyclicSymmetry& symmetry,
                                                      const SymmetricSearchOptions& options) {
-  const auto t0 = Clock::now();
+  const Stopwatch t0;
   options.validate();
   Restricted model(start, rest, symmetry, options);
   SymmetricCriticalPoint out;
@@ -387,7 +386,7 @@ SymmetricCriticalPoint find_symmetric_critical_point(const Points& start, const 
   out.threshold = options.index_threshold.value_or(1e3 * model.newton.shift_epsilon * model.system.lambda_min());
   morse_index(full, out.symmetry, options.max_modes, out.threshold, out);
   out.subspace_index = subspace_index(model.reduced, options.max_modes, symmetry.order * out.threshold);
-  out.seconds = since(t0);
+  out.seconds = t0.seconds();
   return out;
 }
 

@@ -1,3 +1,4 @@
+#include "ek/core/stopwatch.hpp"
 #include "ek/transitions/connect.hpp"
 
 #include <algorithm>
@@ -42,7 +43,6 @@ std::vector<int> connected_states(const TransitionGraph& g, int state) {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
 using Pair = std::pair<int, int>;
 
 Pair key(int u, int v) { return {std::min(u, v), std::max(u, v)}; }
@@ -114,7 +114,7 @@ ConnectAttempt attempt(TransitionGraph& g, int u, int v, const VecX& rest, const
   ConnectAttempt at;
   at.u = u;
   at.v = v;
-  const auto t0 = Clock::now();
+  const Stopwatch t0;
   const size_t states = g.states.size();
   const auto inter_edges = [&g] {
     return static_cast<int>(std::count_if(g.edges.begin(), g.edges.end(), inter_state));
@@ -126,7 +126,7 @@ ConnectAttempt attempt(TransitionGraph& g, int u, int v, const VecX& rest, const
   at.path_barrier = t.reached ? t.path_barrier : 0.0;
   at.edges_added = inter_edges() - edges;
   at.states_added = static_cast<int>(g.states.size() - states);
-  at.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  at.seconds = t0.seconds();
   return at;
 }
 
@@ -150,7 +150,7 @@ ConnectResult connect_states(TransitionGraph& g, int a, int b, const VecX& rest,
   require(a >= 0 && a < n && b >= 0 && b < n, "connect_states: a and b must be states of the graph");
   require(a != b, "connect_states: a and b must be two different states");
   o.validate();
-  const auto t0 = Clock::now();
+  const Stopwatch t0;
   ConnectResult r;  // status Budget unless joined or exhausted
   std::set<Pair> tried;
   for (const PairSearch& p : g.pairs) tried.insert(key(p.a, p.b));  // searched before this call
@@ -178,7 +178,7 @@ ConnectResult connect_states(TransitionGraph& g, int a, int b, const VecX& rest,
   } else if (r.upper_bound) {
     r.upper_bound_scaled = *r.upper_bound / g.energy_scale;
   }
-  r.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  r.seconds = t0.seconds();
   return r;
 }
 

@@ -1,3 +1,4 @@
+#include "ek/core/stopwatch.hpp"
 #include "ek/transitions/double_ended.hpp"
 
 #include <algorithm>
@@ -13,7 +14,6 @@
 namespace ek {
 namespace {
 
-using Clock = std::chrono::steady_clock;
 
 /// c re-indexed cyclically: row i = c_{(i+s) mod n}.
 Points shifted(const Points& c, Eigen::Index s) {
@@ -335,7 +335,7 @@ class DoubleEndedSearch {
   /// Step 3 from one seed: the search along `tangent`, the checks, and the
   /// A/B test of the minima (to_b: their similarities to B).
   SaddleRecord seed_search(const Points& seed, const VecX& tangent, std::array<double, 2>& to_b) const {
-    const auto t0 = Clock::now();
+    const Stopwatch t0;
     KnotSystem sys(seed, rest_, detail::direct(o_.saddle));
     SaddleSearchOptions so = o_.saddle.search;
     so.max_iterations = o_.search_iterations;
@@ -345,7 +345,7 @@ class DoubleEndedSearch {
     if (s.status == SaddleStatus::Converged)
       r.status = classify(r, detail::descend_saddle(a_.alexander, rest_, o_.saddle, sys, s.x, r), to_b);
     r.verified = r.status.verified();
-    r.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    r.seconds = t0.seconds();
     return r;
   }
 
@@ -427,7 +427,7 @@ TransitionSearch transition_search(const Points& a, const Points& b, const VecX&
                                    const TransitionSearchOptions& o, const CurveSimilarity& similarity) {
   o.validate();
   require(static_cast<bool>(similarity), "transition_search: a similarity function is needed");
-  const auto t0 = Clock::now();
+  const Stopwatch t0;
   TransitionSearch t;
   KnotSaddleOptions so = o.saddle;
   so.modes = 1;
@@ -443,7 +443,7 @@ TransitionSearch transition_search(const Points& a, const Points& b, const VecX&
   const auto done = [&](const SearchStatus& status) {
     t.status = status;
     t.verified = status.verified();
-    t.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+    t.seconds = t0.seconds();
     return t;
   };
   if (sa.alexander != sb.alexander) return done(SearchOutcome::DifferentKnot);

@@ -1,3 +1,4 @@
+#include "ek/core/stopwatch.hpp"
 #include "ek/transitions/run.hpp"
 
 #include <chrono>
@@ -69,14 +70,13 @@ std::vector<std::pair<int, int>> transition_pairs(int states, const TransitionRu
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
 
 /// The single-ended searches from state k (an InputError of the start is kept as its error).
 StateSearches searches_of(const KnotSaddleOptions& o, int k, const Points& x, const VecX& rest,
                           const CurveSimilarity& sim) {
   StateSearches s;
   s.state = k;
-  const auto t0 = Clock::now();
+  const Stopwatch t0;
   try {
     const SaddleStart start = prepare_start(x, rest, o);
     s.energy = start.energy;
@@ -84,7 +84,7 @@ StateSearches searches_of(const KnotSaddleOptions& o, int k, const Points& x, co
   } catch (const InputError& e) {
     s.error = e.what();
   }
-  s.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  s.seconds = t0.seconds();
   return s;
 }
 

@@ -1,3 +1,4 @@
+#include "ek/core/stopwatch.hpp"
 #include "ek/transitions/saddles.hpp"
 
 #include <chrono>
@@ -26,7 +27,6 @@ AlexanderPolynomial alexander_or_zero(const Points& x) {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
 using detail::alexander_or_zero;
 using detail::direct;
 
@@ -186,12 +186,12 @@ void check_saddle(const SaddleStart& start, const VecX& rest, const KnotSaddleOp
 /// the tolerance, in this system's reference frames).
 SaddleRecord search_one(const SaddleStart& start, const VecX& rest, const KnotSaddleOptions& o,
                         const VecX& direction, const CurveSimilarity& similarity) {
-  const auto t0 = Clock::now();
+  const Stopwatch t0;
   KnotSystem sys(start.positions, rest, direct(o));
   SaddleRecord r;
   const SaddleSearchResult s = detail::search_into(sys, direction, o.search, o.max_rise_factor * start.energy, r);
   if (s.status == SaddleStatus::Converged) check_saddle(start, rest, o, sys, s.x, similarity, r);
-  r.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  r.seconds = t0.seconds();
   return r;
 }
 
