@@ -40,7 +40,7 @@ figures/out/fig_transitions.png: figures/fig_transitions.py $(RESULTS)/transitio
 figures/out/fig_loads.png: figures/fig_loads.py $(RESULTS)/loads/summary.json
 
 # run time per scale [min] on 2 cores (make help-experiments)
-MINUTES_dataset := ci:4 default:34 paper:4320 paper10:180
+MINUTES_dataset := ci:4 default:6 paper:4320 paper10:180
 MINUTES_milnor := ci:1 default:1 paper:5 paper10:2
 MINUTES_planarity := ci:1 default:1 paper:5 paper10:2
 MINUTES_multistability := ci:2 default:5 paper:20 paper10:5
@@ -56,7 +56,7 @@ MINUTES_cross_topology := ci:1 default:1 paper:30 paper10:5
 MINUTES_generalization := ci:1 default:2 paper:10 paper10:3
 MINUTES_saddles := ci:1 default:5 paper:60 paper10:5
 MINUTES_transitions := ci:2 default:15 paper:120 paper10:15
-MINUTES_loads := ci:1 default:15 paper:45 paper10:15
+MINUTES_loads := ci:1 default:8 paper:45 paper10:15
 MINUTES_time_vs_error := ci:2 default:15
 MINUTES_bench_solver := default:30
 MINUTES_compare_methods := ci:8 default:60
