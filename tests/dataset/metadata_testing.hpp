@@ -42,6 +42,7 @@ inline DatasetMetadata complete_metadata() {
   m.newton_hessian = "exact";
   m.remove_rigid_motions = false;
   m.contact_hessian = "gauss-newton";
+  m.damp_short_steps = true;
   m.max_iterations = 3000;
   m.burn_in = 7;
   m.sampling = "fixed:3,burn-in=7";

@@ -329,7 +329,7 @@ TEST(DatasetMetadataTable, JournalKeyCoversEveryComparedField) {
   EXPECT_EQ(key,
             "young=2100.5 poisson=0.33333333333333331 radius=0.25 n=120 tol=3.3333333333333334e-09 omega=1234.5678 "
             "dhat=0.45000000000000001 model=free-theta method=multilevel levels=2 coarse=0.01 hessian=exact rigid=0 "
-            "contact=gauss-newton iterations=3000 "
+            "contact=gauss-newton damp=1 iterations=3000 "
             "sampling=fixed:3,burn-in=7 "
             "grow=0.40999999999999998 shrink=0.089999999999999997 growth=9.5 decorrelation=12345 "
             "seed=9223372036854775813 stiffness=0 continuation=0.001,0.033333333333333333");

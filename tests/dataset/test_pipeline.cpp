@@ -394,6 +394,7 @@ std::vector<Change> every_parameter_change() {
       {"newton_hessian", [](ExploreOptions& o) { o.relax.newton.hessian = HessianMode::Exact; }},
       {"remove_rigid_motions", [](ExploreOptions& o) { o.relax.newton.remove_rigid_motions = false; }},
       {"contact_hessian", [](ExploreOptions& o) { o.relax.contact_gauss_newton = true; }},
+      {"damp_short_steps", [](ExploreOptions& o) { o.relax.newton.damp_short_steps = true; }},
       {"max_iterations", [](ExploreOptions& o) { o.relax.max_iterations = 300; }},
       {"burn_in", [](ExploreOptions& o) { o.burn_in = 2; }},
       {"sampling", [](ExploreOptions& o) { o.samples = 2; }},
@@ -468,6 +469,7 @@ TEST(Pipeline, JournalKeyIsTheEarlierKeyForTheEarlierParameters) {
     }
     if (name == "gauss-newton") {
       EXPECT_EQ(dataset_metadata(o).contact_hessian, "gauss-newton");
+      EXPECT_EQ(dataset_metadata(o).damp_short_steps, true);
       EXPECT_NE(journal_key(dataset_metadata(o)).find(" contact=gauss-newton"), std::string::npos);
     }
   }
@@ -531,7 +533,7 @@ TEST(Pipeline, OldFormatFileReadsAndExtends) {
   fs::rename(out + ".old", out);
   const hid_t f = H5Fopen(out.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
   ASSERT_GE(f, 0);
-  for (const char* name : {"relax_method", "newton_hessian", "remove_rigid_motions", "contact_hessian", "grow_fugacity",
+  for (const char* name : {"relax_method", "newton_hessian", "remove_rigid_motions", "contact_hessian", "damp_short_steps", "grow_fugacity",
                            "shrink_fugacity", "growth_factor", "decorrelation_moves", "burn_in", "compute_stiffness",
                            "contact_continuation", "max_iterations"})
     ASSERT_GE(H5Adelete(f, name), 0) << name;
@@ -552,6 +554,7 @@ TEST(Pipeline, OldFormatFileReadsAndExtends) {
     EXPECT_EQ(m.decorrelation_moves, 0);
     EXPECT_EQ(m.contact_continuation, std::vector<double>{});
     EXPECT_EQ(m.contact_hessian, "eigen-projected");
+    EXPECT_EQ(m.damp_short_steps, false);
     EXPECT_FALSE(m.max_iterations || m.burn_in || m.compute_stiffness);
     EXPECT_EQ(m.difference(dataset_metadata(base)), "");
   }

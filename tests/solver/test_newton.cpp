@@ -165,6 +165,64 @@ TEST(Newton, AnEscapeWithinRoundOffIsMarginal) {
   }
 }
 
+namespace {
+
+/// E = ½ Σ a_i x_i² whose projected Hessian is 5% of the exact one: a
+/// projected Newton step goes 20 times too far and the line search cuts it.
+class SoftModel : public Objective {
+ public:
+  SoftModel() { x_ = VecX::Constant(6, 1.0); }
+  int num_dofs() const override { return 6; }
+  VecX dofs() const override { return x_; }
+  void set_dofs(const VecX& x) override { x_ = x; }
+  double energy() override { return 0.5 * (a() * x_.array().square()).sum(); }
+  VecX gradient() override { return (a() * x_.array()).matrix(); }
+  void assemble_hessian(SparseAssembler& A, HessianKind kind) override {
+    A.begin(6);
+    for (int i = 0; i < 6; ++i) A.add(i, i, (kind == HessianKind::Exact ? 1.0 : 0.05) * a()(i));
+    A.end();
+  }
+
+ private:
+  static Eigen::ArrayXd a() { return (Eigen::ArrayXd(6) << 1.0, 2.0, 4.0, 8.0, 16.0, 32.0).finished(); }
+  VecX x_;
+};
+
+}  // namespace
+
+// damp_short_steps: after a projected step cut below short_step_fraction,
+// the next search starts one rung (×shift_growth) above the last shift;
+// without it the projected iterations stay at the base shift.
+TEST(Newton, ShortProjectedStepsRaiseTheShift) {
+  for (bool damp : {false, true}) {
+    SoftModel f;
+    NewtonOptions o;
+    o.record_trace = true;
+    o.exact_after_full_steps = 0;
+    o.hybrid_switch = 1e6;  // projected while ||g|| > 1e-2
+    o.damp_short_steps = damp;
+    NewtonSolver solver(o);
+    const NewtonReport r = solver.minimize(f);
+    EXPECT_EQ(r.status, SolverStatus::ConvergedStable) << damp;
+    const auto& t = solver.trace();
+    ASSERT_GE(t.size(), 2u);
+    const double base = o.shift_epsilon * o.lambda_min;
+    int raised = 0;
+    for (size_t k = 0; k + 1 < t.size(); ++k) {
+      if (t[k].exact || t[k + 1].exact || t[k].kind != IterationKind::Step) continue;
+      if (damp && t[k].step < o.short_step_fraction) {
+        EXPECT_GE(t[k + 1].shift, o.shift_growth * t[k].shift * (1 - 1e-12)) << k;
+        ++raised;
+      }
+      if (!damp) EXPECT_EQ(t[k + 1].shift, base) << k;
+    }
+    if (damp) EXPECT_GT(raised, 0);
+  }
+  NewtonOptions bad;
+  bad.short_step_fraction = 0.0;
+  EXPECT_THROW(bad.validate(), std::invalid_argument);
+}
+
 TEST(Newton, ReportsMaxIterations) {
   DoubleWell f(2);
   f.set_dofs(VecX::Constant(4, 0.3));

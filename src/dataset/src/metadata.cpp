@@ -80,7 +80,7 @@ std::vector<MetadataField> make_table() {
   constexpr auto exact = FieldMatch::Exact, relative = FieldMatch::Relative, provenance = FieldMatch::Provenance;
   const FieldValue off = std::vector<double>{}, no_moves = std::int64_t{0}, yes = std::int64_t{1};
   const FieldValue direct = std::string("direct"), hybrid = std::string("hybrid");
-  const FieldValue projected = std::string("eigen-projected");
+  const FieldValue projected = std::string("eigen-projected"), no = std::int64_t{0};
   // FIELD(member): the member and its name, which is the HDF5 attribute, the
   // JSON key and the name in difference().
   // Old files: the attributes of the first version-1 files are required; the
@@ -92,8 +92,8 @@ std::vector<MetadataField> make_table() {
   // the Newton settings of the named methods (the earliest files used the
   // exact Hessian) and the stiffness flag could differ between runs, so a
   // file without them does not know them.
-  // The contact Hessian was the eigen-projected one in every run before it
-  // was recorded.
+  // The contact Hessian was the eigen-projected one, and short steps were
+  // not damped, in every run before they were recorded.
   // Journal key: the fields added to it later are left out at the values
   // that the keys of earlier versions imply (their runs used the hybrid
   // Hessian with rigid-motion removal), so that their journals still resume.
@@ -114,6 +114,7 @@ std::vector<MetadataField> make_table() {
       field(FIELD(newton_hessian),      "",               exact,      not_recorded(),      key_unless("hessian", hybrid)),
       field(FIELD(remove_rigid_motions), "",              exact,      not_recorded(),      key_unless("rigid", yes)),
       field(FIELD(contact_hessian),     "",               exact,      absent_means(projected), key_unless("contact", projected)),
+      field(FIELD(damp_short_steps),    "",               exact,      absent_means(no),    key_unless("damp", no)),
       field(FIELD(max_iterations),      "1",              exact,      not_recorded(),      key("iterations")),
       field(FIELD(burn_in),             "samples",        exact,      not_recorded(),      no_key()),  // in sampling
       field(FIELD(sampling),            "",               exact,      required(),          key("sampling")),

@@ -62,6 +62,7 @@ void NewtonMethodOptions::validate() const {
   require(exact_after_full_steps >= 0, "NewtonOptions: exact_after_full_steps must be >= 0");
   require(max_shift_attempts >= 1, "NewtonOptions: max_shift_attempts must be >= 1");
   require(max_expansion >= 1.0 && expansion_ratio > 0.0, "NewtonOptions: max_expansion must be >= 1, expansion_ratio > 0");
+  require(short_step_fraction > 0.0 && short_step_fraction <= 1.0, "NewtonOptions: short_step_fraction must be in (0, 1]");
 }
 
 std::string to_string(IterationKind kind) {
@@ -385,6 +386,7 @@ NewtonReport NewtonSolver::minimize(Objective& f) {
       return finish(run, SolverStatus::Stalled);
     }
     run.schedule.after_step(run.exact, run.rec.step, run.shift);
+    if (o.damp_short_steps && !run.exact && run.rec.step < o.short_step_fraction) state_->shifts.damp();
     f.accept();
     ++report.iterations;
   }

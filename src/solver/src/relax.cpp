@@ -216,6 +216,7 @@ RelaxOptions with_method(RelaxOptions o, const std::string& name) {
   if (name == "default") return o;
   if (name == "gauss-newton") {
     o.contact_gauss_newton = true;
+    o.newton.damp_short_steps = true;
     return o;
   }
   if (name != "hybrid" && name != "exact" && name != "paper")

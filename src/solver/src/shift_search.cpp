@@ -67,6 +67,11 @@ void ShiftSearch::update_warm_start(double first, double shift) {
   }
 }
 
+void ShiftSearch::damp() {
+  start_ = std::max(base_, last_ * growth_);
+  wait_ = 0;
+}
+
 ShiftSearch::Result ShiftSearch::factorize(CholeskySolver& cholesky, const CholeskySolver::Matrix& H,
                                            std::uint64_t pattern_version, bool exact, bool converged) {
   Result result;

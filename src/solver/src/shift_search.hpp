@@ -41,6 +41,9 @@ class ShiftSearch {
   /// hint of the Hessian's kind (`exact`).
   Result factorize(CholeskySolver& cholesky, const CholeskySolver::Matrix& H, std::uint64_t pattern_version,
                    bool exact, bool converged);
+  /// Damping after a step the line search had to cut short: the next search
+  /// starts one rung above the last shift.
+  void damp();
 
  private:
   double rung(double first, int j) const;

@@ -47,6 +47,7 @@ struct DatasetMetadata {
   /// The contact pairs' Hessian in the projected iterations:
   /// "eigen-projected" or "gauss-newton" (RelaxOptions::contact_gauss_newton).
   std::optional<std::string> contact_hessian;
+  std::optional<bool> damp_short_steps;       ///< NewtonOptions::damp_short_steps
   std::optional<int> max_iterations;        ///< [1] Newton iterations per relaxation phase
   std::optional<int> burn_in;               ///< [samples] walk samples discarded before sample 0
   /// ExploreOptions::sampling_description(): "fixed:50" or

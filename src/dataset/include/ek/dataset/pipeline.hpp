@@ -111,7 +111,7 @@ struct ExploreOptions {
 /// settings that `knots explore` and `knots dataset` do not expose, kept at
 /// their defaults there): start, similarity, mirror_amphicheiral, and the
 /// solver's inner settings (relax.newton apart from the Hessian mode and the
-/// rigid-motion removal, and the contact Hessian, which the named methods of
+/// rigid-motion removal, the contact Hessian and the damping of short steps, which the named methods of
 /// with_method() set; max_tangent_rotation, contact_hessian_margin, slab, the
 /// value of a prescribed link); jobs does not change the results.
 DatasetMetadata dataset_metadata(const ExploreOptions& options);

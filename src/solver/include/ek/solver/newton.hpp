@@ -71,6 +71,13 @@ struct NewtonMethodOptions {
   /// shift (the lowest rung that factorises), fewer failed factorisations.
   bool shift_hint = true;
   HessianMode hessian = HessianMode::Hybrid;  ///< see HessianMode
+  /// After a projected step that the line search cut below
+  /// short_step_fraction, start the next shift search one rung above the
+  /// last shift (Levenberg–Marquardt-like damping of a model that lets the
+  /// curve move too far); the warm start lowers it again by one rung per
+  /// search. Off by default.
+  bool damp_short_steps = false;
+  double short_step_fraction = 0.25;  ///< [1] see damp_short_steps
   double hybrid_switch = 1e3;       ///< [1] Hybrid: exact Hessian once ||g|| <= hybrid_switch · gradient_tolerance
   /// [1] Hybrid: exact Hessian after this many consecutive full (t = 1)
   /// projected steps, until an exact step backtracks or needs a shift above

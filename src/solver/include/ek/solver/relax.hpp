@@ -250,7 +250,8 @@ struct RelaxResult {
 /// The named methods of `knots relax --method` (and of explore, dataset and
 /// the experiments) applied to `options`: "default" (RelaxMethod::Multilevel
 /// with the hybrid Hessian: `options` as they are), "gauss-newton" (the
-/// default with RelaxOptions::contact_gauss_newton), "hybrid" (Direct: the
+/// default with RelaxOptions::contact_gauss_newton and
+/// NewtonMethodOptions::damp_short_steps), "hybrid" (Direct: the
 /// default before the multilevel relaxation), "exact" (Direct with the exact
 /// Hessian every iteration) or "paper" (Direct with NewtonOptions::paper()).
 /// The trace and verbosity settings are kept. Throws InputError for another name.
