@@ -45,7 +45,8 @@ ek::Ledger valid_ledger(FuzzedDataProvider& in) {
     e.linkage = Eigen::MatrixXd::Zero(std::max(m - 1, 0), 4);
     for (int i = 0; i < m; ++i) e.state.push_back(i < states ? i : in.ConsumeIntegralInRange<int>(0, states - 1));
     for (int s = 0; s < states; ++s) e.states.push_back({s, static_cast<int>(e.members(s).size()), ek::Points::Ones(6, 3)});
-    for (int r = 0; r <= m; ++r) e.runs.push_back({r, r < m ? "converged-stable" : "stalled", r < m ? r : -1, 3, 0.1, true});
+    for (int r = 0; r <= m; ++r)
+      e.runs.push_back({r, r < m ? ek::RunStatus::ConvergedStable : ek::RunStatus::Stalled, r < m ? r : -1, 3, 0.1, true});
     l.entries.push_back(e);
   }
   return l;

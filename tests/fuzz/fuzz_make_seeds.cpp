@@ -40,7 +40,7 @@ ek::KnotEntry knot(const std::string& name, int m, int n) {
     ek::RunRecord run;
     run.sample = r;
     run.seed = 7 + static_cast<unsigned>(r);
-    run.status = r < m ? "converged-stable" : "stalled";
+    run.status = r < m ? ek::RunStatus::ConvergedStable : ek::RunStatus::Stalled;
     run.equilibrium = r < m ? r : -1;
     run.message = r < m ? "" : "line search";
     k.runs.push_back(run);
@@ -91,7 +91,7 @@ ek::JournalRun journal_run(int sample, bool stable) {
   ek::JournalRun r;
   r.record.sample = sample;
   r.record.seed = 11;
-  r.record.status = stable ? "converged-stable" : "stalled";
+  r.record.status = stable ? ek::RunStatus::ConvergedStable : ek::RunStatus::Stalled;
   r.record.iterations = 12;
   r.record.message = stable ? "" : "line search";
   if (stable) r.positions = curve(4, 0.0);
