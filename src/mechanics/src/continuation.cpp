@@ -1,12 +1,11 @@
-#include "ek/core/stopwatch.hpp"
 #include "ek/mechanics/continuation.hpp"
 
 #include <Eigen/Geometry>
-#include <chrono>
 #include <cmath>
 #include <limits>
 
 #include "ek/core/errors.hpp"
+#include "ek/core/stopwatch.hpp"
 #include "ek/solver/eigen_analysis.hpp"
 #include "ek/solver/rigid_solve.hpp"
 #include "ek/solver/saddle.hpp"
@@ -93,24 +92,6 @@ Eigen::MatrixXd LoadedKnot::rigid_modes() {
 
 namespace {
 
-
-/// The exact Hessian with the rigid directions made regular (H + κ QQᵀ,
-/// ek/solver/rigid_solve.hpp); solutions have no rigid part.
-class HessianSolver {
- public:
-  explicit HessianSolver(ParameterizedObjective& f) : solver_(assemble(f), f.rigid_modes()) {}
-  bool ok() const { return solver_.ok(); }
-  VecX solve(const VecX& r) const { return solver_.solve(r); }
-
- private:
-  static Eigen::SparseMatrix<double, Eigen::ColMajor, int> assemble(ParameterizedObjective& f) {
-    SparseAssembler A;
-    f.assemble_hessian(A, HessianKind::Exact);
-    return A.matrix();
-  }
-  RigidRegularizedSolver solver_;
-};
-
 /// The RMS distance per vertex from the predictor xp to the landing x after
 /// the best rigid motion of the first `vertices` positions (Eigen::umeyama,
 /// without scaling); with no vertices, |x − xp| / √(dofs/3).
@@ -155,7 +136,7 @@ class Tracer {
       const VecX G = f_.gradient();
       const double N = tangent ? w2_ * tangent->x.dot(x - xp) + tangent->mu * (mu - mup) : 0.0;
       if (G.norm() <= o_.gradient_tolerance && std::abs(N) <= 1e-12 * (1.0 + std::abs(mup))) return true;
-      HessianSolver H(f_);
+      const RigidRegularizedSolver H(f_);  // the exact Hessian, rigid directions regularised
       if (!H.ok()) return false;
       VecX dx = H.solve(-G);
       double dmu = 0.0;
@@ -237,7 +218,7 @@ class Tracer {
 
   /// The unit tangent at f's point, oriented along `previous` (or towards increasing μ).
   std::optional<Tangent> tangent(const Tangent* previous) {
-    HessianSolver H(f_);
+    const RigidRegularizedSolver H(f_);  // the exact Hessian, rigid directions regularised
     if (!H.ok()) return std::nullopt;
     Tangent t{H.solve(-f_.parameter_gradient()), 1.0};
     const double norm = std::sqrt(w2_ * t.x.squaredNorm() + 1.0);

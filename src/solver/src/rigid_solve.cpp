@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "ek/core/errors.hpp"
+#include "ek/core/sparse_assembler.hpp"
 
 namespace ek {
 
@@ -43,6 +44,18 @@ RigidRegularizedSolver::RigidRegularizedSolver(const Eigen::SparseMatrix<double,
   lu_->lu.compute(K);
   ok_ = lu_->lu.info() == Eigen::Success && (m == 0 || kappa_ > 0.0);
 }
+
+namespace {
+
+Eigen::SparseMatrix<double, Eigen::ColMajor, int> exact_hessian(Objective& f) {
+  SparseAssembler A;
+  f.assemble_hessian(A, HessianKind::Exact);
+  return A.matrix();
+}
+
+}  // namespace
+
+RigidRegularizedSolver::RigidRegularizedSolver(Objective& f) : RigidRegularizedSolver(exact_hessian(f), f.rigid_modes()) {}
 
 RigidRegularizedSolver::~RigidRegularizedSolver() = default;
 

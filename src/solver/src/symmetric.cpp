@@ -1,13 +1,12 @@
-#include "ek/core/stopwatch.hpp"
 #include "ek/solver/symmetric.hpp"
 
 #include "ek/core/errors.hpp"
+#include "ek/core/stopwatch.hpp"
 #include "ek/knots/alexander.hpp"
 #include "ek/solver/rigid_solve.hpp"
 #include "ek/solver/saddle.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <complex>
 #include <numeric>
@@ -162,13 +161,10 @@ void CriticalPointOptions::validate() const {
 
 namespace {
 
-
 /// The Newton–Raphson direction: (H + κ Q Qᵀ) d = −g, d ⊥ Q
 /// (rigid_solve.hpp). Empty when the matrix is singular.
 VecX root_direction(Objective& f, const VecX& g) {
-  SparseAssembler A;
-  f.assemble_hessian(A, HessianKind::Exact);
-  const RigidRegularizedSolver H(A.matrix(), f.rigid_modes());
+  const RigidRegularizedSolver H(f);
   if (!H.ok()) return {};
   VecX d = H.solve(-g);
   if (!d.allFinite()) return {};

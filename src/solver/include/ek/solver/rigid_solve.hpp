@@ -19,6 +19,7 @@
 #include <memory>
 
 #include "ek/geometry/types.hpp"
+#include "ek/solver/objective.hpp"
 
 namespace ek {
 
@@ -29,6 +30,8 @@ class RigidRegularizedSolver {
   /// it); `rigid`: Q (N by m, m >= 0, orthonormal columns). ok() tells
   /// whether the factorisation succeeded (false for a singular matrix).
   RigidRegularizedSolver(const Eigen::SparseMatrix<double, Eigen::ColMajor, int>& upper, const Eigen::MatrixXd& rigid);
+  /// The same for f's exact Hessian and rigid modes at its current dofs.
+  explicit RigidRegularizedSolver(Objective& f);
   ~RigidRegularizedSolver();                                                  ///< Releases the factorisation.
   RigidRegularizedSolver(const RigidRegularizedSolver&) = delete;             ///< Not copyable.
   RigidRegularizedSolver& operator=(const RigidRegularizedSolver&) = delete;  ///< Not copyable.
