@@ -78,9 +78,11 @@ Args parse_args(int argc, char** argv, const std::string& name, const std::strin
       a.jobs = static_cast<int>(j);
     } else if (s == "--method") {
       a.method = value();
-      const auto& names = method_names();
-      if (std::find(names.begin(), names.end(), a.method) == names.end())
-        fail("--method '" + a.method + "': expected default, gauss-newton, hybrid, exact or paper");
+      try {
+        with_method(RelaxOptions{}, a.method);  // checks the name
+      } catch (const InputError& e) {
+        fail(std::string("--method: ") + e.what());
+      }
     } else if (s == "--seed") {
       const std::string v = value();
       char* end = nullptr;

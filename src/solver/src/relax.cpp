@@ -1,5 +1,6 @@
 #include "ek/solver/relax.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -213,14 +214,18 @@ const std::vector<std::string>& method_names() {
 }
 
 RelaxOptions with_method(RelaxOptions o, const std::string& name) {
+  const std::vector<std::string>& names = method_names();
+  if (std::find(names.begin(), names.end(), name) == names.end()) {
+    std::string list;  // "a, b, ... or z"
+    for (size_t k = 0; k < names.size(); ++k) list += (k == 0 ? "" : k + 1 < names.size() ? ", " : " or ") + names[k];
+    throw InputError("the method must be " + list + ", not '" + name + "'");
+  }
   if (name == "default") return o;
   if (name == "gauss-newton") {
     o.contact_gauss_newton = true;
     o.newton.damp_short_steps = true;
     return o;
   }
-  if (name != "hybrid" && name != "exact" && name != "paper")
-    throw InputError("the method must be default, gauss-newton, hybrid, exact or paper, not '" + name + "'");
   o.method = RelaxMethod::Direct;
   if (name == "exact") o.newton.hessian = HessianMode::Exact;
   if (name == "paper") {

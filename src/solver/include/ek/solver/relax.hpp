@@ -100,8 +100,8 @@ struct RelaxOptions {
   /// iterations each contact pair's Hessian is its Gauss–Newton term
   /// b''∇d∇dᵀ instead of its eigen-projection (docs/performance.md: median
   /// time per equilibrium 30% lower on the solver benchmark, and other
-  /// equilibria for some samples). Off until the comparison of the states it
-  /// finds accepts it.
+  /// equilibria for some samples). Off by default; the "gauss-newton" method
+  /// of with_method() sets it.
   bool contact_gauss_newton = false;
   /// [1] Multilevel: levels below n, each with half the vertices of the next;
   /// a level is used while the count is even, the coarse curve has at least
