@@ -214,9 +214,13 @@ TEST(Newton, ShortProjectedStepsRaiseTheShift) {
         EXPECT_GE(t[k + 1].shift, o.shift_growth * t[k].shift * (1 - 1e-12)) << k;
         ++raised;
       }
-      if (!damp) EXPECT_EQ(t[k + 1].shift, base) << k;
+      if (!damp) {
+        EXPECT_EQ(t[k + 1].shift, base) << k;
+      }
     }
-    if (damp) EXPECT_GT(raised, 0);
+    if (damp) {
+      EXPECT_GT(raised, 0);
+    }
   }
   NewtonOptions bad;
   bad.short_step_fraction = 0.0;

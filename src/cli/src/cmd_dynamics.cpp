@@ -6,7 +6,6 @@
 // A knot in time (ek/mechanics/dynamics.hpp): backward Euler with inertia,
 // damping, gravity and friction on the relaxation's model. DIR is written
 // as a whole (folder_output.hpp).
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <iostream>

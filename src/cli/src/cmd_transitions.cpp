@@ -1,6 +1,5 @@
 // knots transitions DATASET NAME [--cut C] [--modes K] [--states N] [--pair-gap G] [--max-pairs P] [--stages S]
 //                   [--max-iter N] [--images M] -o FILE.h5 [--overwrite] [--quiet] [--json]
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>

@@ -149,7 +149,8 @@ int LedgerEntry::attribute_column(const std::string& attribute) const {
 }
 
 int LedgerEntry::stable_runs() const {
-  return static_cast<int>(std::count_if(runs.begin(), runs.end(), [](const LedgerRun& r) { return r.status == RunStatus::ConvergedStable; }));
+  return static_cast<int>(
+      std::count_if(runs.begin(), runs.end(), [](const LedgerRun& r) { return r.status == RunStatus::ConvergedStable; }));
 }
 
 std::map<RunStatus, int> LedgerEntry::status_counts() const {

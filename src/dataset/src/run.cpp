@@ -1,9 +1,7 @@
-#include "ek/core/stopwatch.hpp"
 #include "ek/dataset/run.hpp"
 
 #include <unistd.h>
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -14,6 +12,7 @@
 #include "ek/core/atomic_file.hpp"
 #include "ek/core/errors.hpp"
 #include "ek/core/paths.hpp"
+#include "ek/core/stopwatch.hpp"
 #include "ek/knots/table.hpp"
 
 namespace ek {

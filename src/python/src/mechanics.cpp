@@ -1,6 +1,5 @@
 // mechanics: a knot under load, its path of stable equilibria and its snaps;
 // a knot in time.
-#include <chrono>
 #include <cmath>
 #include <limits>
 

@@ -1,14 +1,13 @@
-#include "ek/core/stopwatch.hpp"
 #include "ek/solver/cholesky.hpp"
 
 #include <cholmod.h>
 
-#include <chrono>
 #include <cmath>
 #include <string>
 #include <utility>
 
 #include "ek/core/errors.hpp"
+#include "ek/core/stopwatch.hpp"
 
 namespace ek {
 

@@ -1,19 +1,17 @@
-#include "ek/core/stopwatch.hpp"
 #include "ek/solver/newton.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 
 #include "ek/core/errors.hpp"
+#include "ek/core/stopwatch.hpp"
 #include "ek/solver/eigen_analysis.hpp"
 #include "shift_search.hpp"
 
 namespace ek {
 namespace {
-
 
 // The round-off of an energy E: changes of E smaller than this are noise.
 double energy_roundoff(double E) { return 64.0 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::fabs(E)); }

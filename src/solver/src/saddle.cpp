@@ -1,16 +1,15 @@
-#include "ek/core/stopwatch.hpp"
 #include "ek/solver/saddle.hpp"
 
 #include <Eigen/SparseCholesky>
 #include <Spectra/SymEigsSolver.h>
 
-#include <chrono>
 #include <cstdio>
 #include <cmath>
 #include <limits>
 
 #include "ek/core/errors.hpp"
 #include "ek/core/sparse_assembler.hpp"
+#include "ek/core/stopwatch.hpp"
 #include "ek/solver/cholesky.hpp"
 #include "shift_invert.hpp"
 
@@ -22,7 +21,6 @@ using Ldlt = Eigen::SimplicialLDLT<SpMat, Eigen::Upper, Eigen::AMDOrdering<int>>
 
 /// Halvings of the complement step before it is given up (relax_complement).
 constexpr int kMaxBacktracks = 40;
-
 
 /// The complement step of the file comment of saddle.hpp (item 3). The
 /// shift ladder starts one rung below `shift` (in/out: the rung used).

@@ -1,14 +1,13 @@
-#include "ek/core/stopwatch.hpp"
 #include "ek/transitions/connect.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <limits>
 #include <map>
 #include <set>
 #include <utility>
 
 #include "ek/core/errors.hpp"
+#include "ek/core/stopwatch.hpp"
 
 namespace ek {
 

@@ -1,13 +1,12 @@
-#include "ek/core/stopwatch.hpp"
 #include "ek/transitions/double_ended.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 #include <optional>
 
 #include "ek/core/errors.hpp"
+#include "ek/core/stopwatch.hpp"
 #include "ek/geometry/rigid.hpp"
 #include "saddle_checks.hpp"
 

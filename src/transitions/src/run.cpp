@@ -1,11 +1,10 @@
-#include "ek/core/stopwatch.hpp"
 #include "ek/transitions/run.hpp"
 
-#include <chrono>
 #include <sstream>
 
 #include "ek/analysis/similarity.hpp"
 #include "ek/core/errors.hpp"
+#include "ek/core/stopwatch.hpp"
 #include "ek/dataset/pipeline.hpp"
 #include "ek/knots/table.hpp"
 

@@ -1,10 +1,9 @@
-#include "ek/core/stopwatch.hpp"
 #include "ek/transitions/saddles.hpp"
 
-#include <chrono>
 #include <cmath>
 
 #include "ek/core/errors.hpp"
+#include "ek/core/stopwatch.hpp"
 #include "ek/geometry/polyline.hpp"
 #include "ek/knots/alexander.hpp"
 #include "saddle_checks.hpp"
