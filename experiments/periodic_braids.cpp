@@ -39,7 +39,6 @@
 #include "ek/geometry/link.hpp"
 #include "ek/geometry/polyline.hpp"
 #include "ek/knots/alexander.hpp"
-#include "ek/solver/link_relax.hpp"
 #include "ek/solver/relax.hpp"
 #include "ek/solver/symmetric.hpp"
 #include "experiment.hpp"
@@ -326,30 +325,33 @@ void write_tables(const Args& a, const std::vector<results::PeriodicMember>& out
 /// centroid, with a (p+1)-fold control.
 results::PeriodicLinkMember run_link(const Args& a, const PeriodicBraid& m) {
   const LinkEmbedding e = embed_braid_link(m.word(), multicovered_circle(kVerticesPerPeriod * m.p, m.strands));
-  const LinkRelaxResult r = relax_link(e.components);
+  const RelaxResult r = relax(e.components);
+  const Link components = r.components();
   results::PeriodicLinkMember out;
   out.family = m.family;
   out.p = m.p;
-  out.components = static_cast<int>(r.positions.size());
+  out.components = static_cast<int>(components.size());
   out.status = to_string(r.status());
-  out.energy = r.energy;
+  out.energy = r.energy.total;
   out.alexander_preserved = r.alexander_preserved;
   out.linking_preserved = r.linking_preserved;
   out.conway_preserved = r.conway_preserved;
-  out.conway = r.conway.coefficients;
-  for (Eigen::Index i = 0; i < r.linking_numbers.rows(); ++i)
-    for (Eigen::Index j = 0; j < r.linking_numbers.cols(); ++j) out.linking_numbers.push_back(r.linking_numbers(i, j));
+  const LinkType& type = *r.link_type;
+  out.conway = type.conway.coefficients;
+  for (Eigen::Index i = 0; i < type.linking_numbers.rows(); ++i)
+    for (Eigen::Index j = 0; j < type.linking_numbers.cols(); ++j)
+      out.linking_numbers.push_back(type.linking_numbers(i, j));
   out.min_distance = r.min_distance;
-  const Points all = all_vertices(r.positions);
+  const Points& all = r.positions;
   out.vertices = static_cast<int>(all.rows());
   out.threedim = threedim(all);
   const Vec3 c = all.colwise().mean().transpose();
   const Eigen::JacobiSVD<Eigen::MatrixXd> svd(all.rowwise() - c.transpose(), Eigen::ComputeThinV);
   const Vec3 axis = svd.matrixV().col(2);  // the axis of least extent
-  out.symmetry_error = rotational_symmetry_error(r.positions, c, axis, m.p);
-  out.control_error = rotational_symmetry_error(r.positions, c, axis, m.p + 1);
+  out.symmetry_error = rotational_symmetry_error(components, c, axis, m.p);
+  out.control_error = rotational_symmetry_error(components, c, axis, m.p + 1);
   out.curve = "curves/" + m.family + "_p" + std::to_string(m.p) + "_link.obj";
-  write_link(a.out + "/" + out.curve, r.positions);
+  write_link(a.out + "/" + out.curve, components);
   std::ostringstream line;  // one write: the links run in parallel
   line << "  " << m.label() << " (link of " << out.components << "): " << out.status << ", E " << out.energy
        << ", 3D-ness " << out.threedim << ", " << m.p << "-fold symmetry error " << out.symmetry_error << " (control "

@@ -158,7 +158,7 @@ struct PeriodicLinkMember {
   int p = 0;
   int components = 0;               ///< [1]
   int vertices = 0;                 ///< [1] in all
-  std::string status;               ///< LinkRelaxResult::status()
+  std::string status;               ///< RelaxResult::status()
   double energy = 0.0;              ///< [energy]
   bool alexander_preserved = false;  ///< every component's polynomial kept
   bool linking_preserved = false;    ///< every linking number kept

@@ -19,6 +19,7 @@
 #include "ek/knots/alexander.hpp"
 #include "ek/mechanics/knot_loading.hpp"
 #include "ek/mechanics/loads.hpp"
+#include "ek/solver/rod_model.hpp"
 #include "ek/solver/saddle.hpp"
 #include "testing.hpp"
 
@@ -181,7 +182,7 @@ TEST(KnotLoading, PressedEightOneSnapReleasesEnergyAtItsControl) {
 // differences of the gradient (h = 1e-6), 1e-5 relative in the Frobenius norm.
 TEST(KnotLoading, LoadedKnotHessianMatchesFiniteDifferences) {
   const Points P = fixtures::torus_knot(48, 2, 3, 12.0, 4.0);
-  KnotSystem sys(P, edge_lengths(P), RelaxOptions{});
+  RodModel sys(P, edge_lengths(P), RelaxOptions{});
   PullLoad pull(3, 27, 30.0, 0.1);
   LoadedKnot f(sys.objective(), pull);
   const VecX x0 = f.dofs();

@@ -12,6 +12,7 @@
 #include "ek/geometry/polyline.hpp"
 #include "ek/mechanics/continuation.hpp"
 #include "ek/mechanics/loads.hpp"
+#include "ek/solver/rod_model.hpp"
 #include "ek/solver/saddle.hpp"
 #include "testing.hpp"
 
@@ -170,7 +171,7 @@ TEST(Continuation, RingPulledAcrossADiameterHasTheClassicalStiffness) {
     const Points P = ring(n);
     const double R = 0.5 / std::sin(M_PI / n), EI = RodMaterial().bending_stiffness();
     const double expected = EI / ((M_PI / 4.0 - 2.0 / M_PI) * R * R * R);
-    KnotSystem system(P, edge_lengths(P), RelaxOptions{});
+    RodModel system(P, edge_lengths(P), RelaxOptions{});
     const double D0 = 2.0 * R;
     PullLoad pull(0, n / 2, D0, 1e4 * expected);
     LoadedKnot f(system.objective(), pull);
@@ -198,7 +199,7 @@ TEST(Continuation, WorkEqualsTheEnergyChangeAndUnloadingReturnsTheRing) {
   const int n = 128;
   const Points P = ring(n);
   const double R = 0.5 / std::sin(M_PI / n), D0 = 2.0 * R;
-  KnotSystem system(P, edge_lengths(P), RelaxOptions{});
+  RodModel system(P, edge_lengths(P), RelaxOptions{});
   PullLoad pull(0, n / 2, D0, 10.0);
   LoadedKnot f(system.objective(), pull);
   ContinuationOptions o;

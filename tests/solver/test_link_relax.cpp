@@ -1,10 +1,10 @@
-// Links relaxed (link_relax.hpp): the two-component model's gradient and
-// Hessian against finite differences with contact active between the
-// components; a step that sweeps one ring through the other is cut by the
+// Links relaxed (relax() of a Link, relax.hpp; rod_model.hpp): the
+// two-component model's gradient and Hessian against finite differences
+// with contact active between the components; a step that sweeps one ring through the other is cut by the
 // collision detection; the Hopf link relaxes to two round rings (its energy
 // that of the two rings relaxed alone) keeping its unknots and its linking
-// number; the (2, 4) torus link keeps its linking number 2 in contact; bad
-// input is an InputError.
+// number; the (2, 4) torus link keeps its linking number 2 in contact; a
+// link of one component is a knot; bad input is an InputError.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -13,8 +13,8 @@
 #include "ek/core/sparse_assembler.hpp"
 #include "ek/geometry/link.hpp"
 #include "ek/knots/alexander.hpp"
-#include "ek/solver/link_relax.hpp"
 #include "ek/solver/relax.hpp"
+#include "ek/solver/rod_model.hpp"
 #include "testing.hpp"
 
 using namespace ek;
@@ -55,7 +55,7 @@ Eigen::MatrixXd dense_hessian(Objective& f) {
 // components are within d̂ of each other; the energy parts sum to E.
 TEST(LinkRelax, TwoComponentModelMatchesFiniteDifferences) {
   const Link link = tight_hopf();
-  LinkModel m(link, RelaxOptions{});
+  RodModel m(link, RelaxOptions{});
   Objective& f = m.objective();
   ASSERT_GT(f.active_pairs(), 0);
   const VecX x = f.dofs();
@@ -94,7 +94,7 @@ TEST(LinkRelax, TwoComponentModelMatchesFiniteDifferences) {
 // are still apart.
 TEST(LinkRelax, SweepingOneComponentThroughAnotherIsCut) {
   const Link link = tight_hopf();
-  LinkModel m(link, RelaxOptions{});
+  RodModel m(link, RelaxOptions{});
   Objective& f = m.objective();
   const VecX x = f.dofs();
   VecX dx = VecX::Zero(x.size());
@@ -114,14 +114,16 @@ TEST(LinkRelax, SweepingOneComponentThroughAnotherIsCut) {
 TEST(LinkRelax, HopfLinkRelaxesToTwoRoundRings) {
   const Link link{circle(40, Vec3::Zero(), 5.0, Vec3::UnitX(), Vec3::UnitY()),
                   circle(40, Vec3(5.0, 0.0, 0.0), 5.0, Vec3::UnitX(), Vec3::UnitZ())};
-  const LinkRelaxResult r = relax_link(link);
+  const RelaxResult r = relax(link);
   EXPECT_EQ(r.status(), RelaxStatus::ConvergedStable);
   EXPECT_TRUE(r.alexander_preserved && r.linking_preserved && r.conway_preserved);
-  EXPECT_EQ(r.linking_numbers(0, 1), -1);
-  EXPECT_EQ(r.conway.to_string(), "[0, 1]");
-  for (const AlexanderPolynomial& a : r.alexander) EXPECT_EQ(a.to_string(), "[1]");
+  ASSERT_TRUE(r.link_type.has_value());
+  EXPECT_EQ(r.link_type->linking_numbers(0, 1), -1);
+  EXPECT_EQ(r.link_type->conway.to_string(), "[0, 1]");
+  for (const AlexanderPolynomial& a : r.link_type->alexander) EXPECT_EQ(a.to_string(), "[1]");
+  EXPECT_EQ(r.component_sizes, (std::vector<int>{40, 40}));
   const double alone = relax(link[0]).energy.total + relax(link[1]).energy.total;
-  EXPECT_NEAR(r.energy, alone, 1e-9 * alone);
+  EXPECT_NEAR(r.energy.total, alone, 1e-9 * alone);
   EXPECT_GT(r.min_distance, 0.4);  // d̂: no contact
 }
 
@@ -133,30 +135,46 @@ TEST(LinkRelax, TorusLinkKeepsItsLinkingNumberInContact) {
   const Link link{torus_component(0, 80), torus_component(1, 80)};
   const double lk = linking_number(link[0], link[1]);
   ASSERT_NEAR(std::abs(lk), 2.0, 1e-9);
-  LinkModel start(link, RelaxOptions{});
+  RodModel start(link, RelaxOptions{});
   const double e0 = start.objective().energy();
-  const LinkRelaxResult r = relax_link(link);
+  const RelaxResult r = relax(link);
   EXPECT_EQ(r.status(), RelaxStatus::ConvergedStable);
-  EXPECT_LT(r.energy, e0);
-  EXPECT_NEAR(linking_number(r.positions[0], r.positions[1]), lk, 1e-9);
-  for (const Points& P : r.positions) EXPECT_EQ(alexander(P).to_string(), "[1]");
+  EXPECT_LT(r.energy.total, e0);
+  const Link out = r.components();
+  EXPECT_NEAR(linking_number(out[0], out[1]), lk, 1e-9);
+  for (const Points& P : out) EXPECT_EQ(alexander(P).to_string(), "[1]");
   EXPECT_GT(r.min_distance, 0.2 * 0.4);
-  EXPECT_LT(component_distance(r.positions[0], r.positions[1]), 0.4);  // in contact
-  std::cout << "[ measured ] (2,4) torus link: E " << e0 << " -> " << r.energy << " in " << r.report.iterations
-            << " iterations, " << r.report.seconds << " s; components " << component_distance(r.positions[0], r.positions[1])
-            << " apart" << std::endl;
+  const double apart = component_distance(out[0], out[1]);
+  EXPECT_LT(apart, 0.4);  // in contact
+  std::cout << "[ measured ] (2,4) torus link: E " << e0 << " -> " << r.energy.total << " in " << r.report.iterations
+            << " iterations, " << r.report.seconds << " s; components " << apart << " apart" << std::endl;
+}
+
+// A link of one component is a knot: relax() of it equals relax() of the
+// curve, to the iteration and the bit.
+TEST(LinkRelax, ALinkOfOneComponentIsAKnot) {
+  const Points P = torus_component(0, 80);
+  const RelaxResult a = relax(Link{P}), b = relax(P);
+  EXPECT_EQ(a.report.iterations, b.report.iterations);
+  EXPECT_EQ(a.energy.total, b.energy.total);
+  EXPECT_TRUE(a.positions == b.positions);
+  EXPECT_EQ(a.component_sizes, (std::vector<int>{80}));
+  EXPECT_FALSE(a.link_type.has_value());
 }
 
 TEST(LinkRelax, BadInputIsAnInputError) {
   const Link link = tight_hopf();
-  EXPECT_THROW(relax_link(Link{link[0]}), InputError);
+  EXPECT_THROW(relax(Link{}), InputError);
   RelaxOptions with_lk;
   with_lk.link = 1.0;
-  EXPECT_THROW(relax_link(link, with_lk), InputError);
+  EXPECT_THROW(relax(link, with_lk), InputError);
   RelaxOptions full;
   full.full_model = true;
-  EXPECT_THROW(relax_link(link, full), InputError);
+  EXPECT_THROW(relax(link, full), InputError);
+  RelaxOptions eigen;
+  eigen.smallest_eigenvalue = true;
+  EXPECT_THROW(relax(link, eigen), InputError);
   Link crossing = link;
   crossing[1].col(0).array() -= 0.35;  // the small ring now passes through the wire
-  EXPECT_THROW(relax_link(crossing), InputError);
+  EXPECT_THROW(relax(crossing), InputError);
 }

@@ -295,7 +295,7 @@ namespace {
 /// f(x) = Σ_i (x_i² − 1)² + c Σ_i (x_i − x_{i+1})²: separated wells at ±1
 /// (the coupling shifts them), indefinite for |x_i| < 1/√3. With exact =
 /// false the Hessian's well curvature 12x² − 4 is clamped at 0 (a per-element
-/// PSD projection, as KnotObjective does for compressed edges).
+/// PSD projection, as RodObjective does for compressed edges).
 class ProjectableWells : public Objective {
  public:
   explicit ProjectableWells(int n, double c = 0.2) : x_(VecX::Zero(n)), c_(c) {}

@@ -8,9 +8,9 @@
 
 #include "ek/contact/contact_potential.hpp"
 #include "ek/rod/elastic_rod.hpp"
-#include "ek/solver/knot_terms.hpp"
 #include "ek/solver/newton.hpp"
 #include "ek/solver/objective.hpp"
+#include "ek/solver/rod_terms.hpp"
 #include "ek/solver/trace.hpp"
 #include "testing.hpp"
 
@@ -154,7 +154,7 @@ TEST(Newton, TraceRecordsEveryIterationOfEveryPhase) {
 // The knot objective's gradient is the derivative of its energy with rod,
 // contact and slab all active (two close, nearly parallel strands of a
 // flattened coil inside the slab), and its parts sum to the energy.
-TEST(Objective, KnotObjectiveGradientMatchesFiniteDifferences) {
+TEST(Objective, RodObjectiveGradientMatchesFiniteDifferences) {
   const int n = 60;
   Points P(n, 3);
   for (int i = 0; i < n; ++i) {  // a doubly covered circle, the covers 0.3 apart radially
@@ -167,7 +167,7 @@ TEST(Objective, KnotObjectiveGradientMatchesFiniteDifferences) {
   SlabOptions so;
   so.half_thickness = 0.2;
   const PlanaritySlab slab(so);
-  KnotObjective f(rod, contact, &slab, 0.5);
+  RodObjective f(rod, contact, &slab, 0.5);
   const VecX x = f.dofs();
   ASSERT_GT(f.active_pairs(), 0);
   double sum = 0.0;

@@ -9,6 +9,7 @@
 #include "ek/core/errors.hpp"
 #include "ek/geometry/polyline.hpp"
 #include "ek/knots/alexander.hpp"
+#include "ek/solver/rod_model.hpp"
 #include "ek/solver/saddle.hpp"
 #include "ek/solver/symmetric.hpp"
 #include "testing.hpp"
@@ -78,7 +79,7 @@ TEST(SymmetricObjective, ReducedGradientAndHessianMatchFiniteDifferences) {
   // that its strands pass within d̂) against central differences in y.
   const Points P = trefoil() * 0.11;
   const CyclicSymmetry s = fit_cyclic_symmetry(P, 3, Vec3::Zero(), Vec3::UnitZ());
-  KnotSystem system(P, edge_lengths(P), RelaxOptions{});
+  RodModel system(P, edge_lengths(P), RelaxOptions{});
   SymmetricObjective f(system.objective(), s);
   ASSERT_EQ(f.num_dofs(), 3 * 40);
   ASSERT_GT(f.active_pairs(), 0) << "the test needs contact";

@@ -6,6 +6,7 @@
 
 #include <cmath>
 
+#include "ek/solver/rod_model.hpp"
 #include "ek/solver/saddle.hpp"
 
 using namespace ek;
@@ -24,7 +25,7 @@ HessianIndex ring_index(double link, int n) {
   RelaxOptions o;
   o.link = link;
   o.stop_at_critical_point = true;  // the circle stays a circle (it expands slightly under bending)
-  KnotSystem sys(P, VecX::Constant(n, (P.row(1) - P.row(0)).norm()), o);
+  RodModel sys(P, VecX::Constant(n, (P.row(1) - P.row(0)).norm()), o);
   const double threshold = sys.newton().shift_epsilon * sys.lambda_min();
   const Descent d = descend(sys.objective(), sys.newton());
   EXPECT_NE(d.report.status, SolverStatus::MaxIterations);

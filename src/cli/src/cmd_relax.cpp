@@ -11,7 +11,6 @@
 #include "ek/core/errors.hpp"
 #include "ek/geometry/curve_io.hpp"
 #include "ek/geometry/link.hpp"
-#include "ek/solver/link_relax.hpp"
 #include "ek/solver/json.hpp"
 #include "ek/solver/relax_request.hpp"
 #include "output.hpp"
@@ -101,7 +100,7 @@ void print_result(const RelaxCommand& c, const RelaxResult& r) {
 }
 
 /// The JSON keys of `knots relax` on a link (docs/cli.md).
-Json link_result_json(const RelaxCommand& c, const LinkRelaxResult& r) {
+Json link_result_json(const RelaxCommand& c, const RelaxResult& r) {
   Json j;
   j["file"] = c.file;
   j.update(link_relax_json(r));
@@ -109,23 +108,23 @@ Json link_result_json(const RelaxCommand& c, const LinkRelaxResult& r) {
   return j;
 }
 
-/// `knots relax` on a link of several components: relax_link() (the twist-free
-/// model, Newton at n with the method's Newton settings).
+/// `knots relax` on a link of several components: relax() of the link (the
+/// twist-free model, Newton at n with the method's Newton settings).
 int relax_link_file(const RelaxCommand& c, const Link& link) {
   const RelaxRequest& q = c.request;
   if (q.link || q.planar || q.release || q.full_model || q.eigen || q.stop_at_saddle || !c.trace.empty())
     throw InputError("--link, --planar, --release, --full-model, --eigen, --stop-at-saddle and --trace apply to a "
                      "knot, not to a link of " + std::to_string(link.size()) + " components");
-  const LinkRelaxResult r = relax_link(link, q.options());
+  const RelaxResult r = relax(link, q.options());
   const bool kept = r.topology_preserved();
-  if (!c.out.empty() && kept) write_link(c.out, r.positions);
+  if (!c.out.empty() && kept) write_link(c.out, r.components());
   if (c.json) {
     print_json(link_result_json(c, r));
   } else {
     std::cout << "components:   " << link.size() << "\n"
               << "status:       " << r.status() << " (" << r.report.iterations << " iterations, "
               << fmt(r.report.seconds, 4) << " s)\n"
-              << "energy:       " << fmt(r.energy) << "\n"
+              << "energy:       " << fmt(r.energy.total) << "\n"
               << "gradient:     " << fmt(r.report.gradient_norm, 4) << "\n"
               << "closest:      " << fmt(r.min_distance, 6) << "\n"
               << "topology:     " << (kept ? "every component's Alexander polynomial, every linking number and the Conway polynomial kept"

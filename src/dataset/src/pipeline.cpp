@@ -19,7 +19,6 @@
 #include "ek/knots/alexander.hpp"
 #include "ek/knots/invariants.hpp"
 #include "ek/lattice/link_sampling.hpp"
-#include "ek/solver/link_relax.hpp"
 #include "journal.hpp"
 
 namespace ek {
@@ -54,7 +53,7 @@ JournalRun run_one(const Points& sample, int index, std::uint64_t seed, const Ex
     out.energy = r.energy;
     out.link = r.link;
     if (r.smallest_eigenvalue) out.stiffness = *r.smallest_eigenvalue;
-    if (r.stable() && r.alexander_preserved) out.positions = r.positions;
+    if (r.stable() && r.topology_preserved()) out.positions = r.positions;
     if (!r.alexander_preserved)
       out.record.message = "Alexander polynomial changed from " + r.alexander.to_string() + " to " +
                            r.result_alexander.to_string();
@@ -664,7 +663,7 @@ std::vector<double> link_attribute_row(const JournalRun& r, int sample, const st
   return out;
 }
 
-/// Relaxes one lattice sample of a link (relax_link); the stored positions
+/// Relaxes one lattice sample of a link (relax()); the stored positions
 /// are the components back to back. `link` carries the closest approach of
 /// two edges (min_distance).
 JournalRun run_link_one(const Link& sample, int index, std::uint64_t seed, const ExploreOptions& o) {
@@ -673,7 +672,7 @@ JournalRun run_link_one(const Link& sample, int index, std::uint64_t seed, const
   out.record.seed = seed;
   out.stiffness = std::numeric_limits<double>::quiet_NaN();
   try {
-    const LinkRelaxResult r = relax_link(sample, o.relax);
+    const RelaxResult r = relax(sample, o.relax);
     out.record.status = run_status(r.status());
     out.record.iterations = r.report.iterations;
     out.record.seconds = r.report.seconds;
@@ -681,17 +680,15 @@ JournalRun run_link_one(const Link& sample, int index, std::uint64_t seed, const
       out.record.iterations += c.iterations;
       out.record.seconds += c.seconds;
     }
-    out.record.energy = r.energy;
+    out.record.energy = r.energy.total;
     out.record.gradient_norm = r.report.gradient_norm;
     out.record.alexander_preserved = r.topology_preserved();
-    for (const EnergyPart& p : r.parts) {
-      if (p.name == "stretch") out.energy.stretch = p.value;
-      if (p.name == "bend") out.energy.bend = p.value;
-      if (p.name == "contact") out.energy.contact = p.value;
-    }
+    out.energy.stretch = r.energy.stretch;
+    out.energy.bend = r.energy.bend;
+    out.energy.contact = r.energy.contact;
     out.energy.total = out.energy.stretch + out.energy.bend;
     out.link = r.min_distance;
-    if (r.report.status == SolverStatus::ConvergedStable && r.topology_preserved()) out.positions = all_vertices(r.positions);
+    if (r.report.status == SolverStatus::ConvergedStable && r.topology_preserved()) out.positions = r.positions;
     if (!r.topology_preserved()) out.record.message = "the link type changed (components' Alexander polynomials, linking numbers or Conway polynomial)";
   } catch (const std::exception& e) {
     out.record.status = RunStatus::Error;

@@ -11,7 +11,7 @@
 #include "ek/geometry/segment_distance.hpp"
 #include "ek/knots/alexander.hpp"
 #include "ek/rod/elastic_rod.hpp"
-#include "ek/solver/knot_terms.hpp"
+#include "ek/solver/rod_terms.hpp"
 #include "ek/solver/newton.hpp"
 
 namespace ek {

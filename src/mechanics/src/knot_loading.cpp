@@ -7,6 +7,7 @@
 #include "ek/core/errors.hpp"
 #include "ek/geometry/polyline.hpp"
 #include "ek/knots/alexander.hpp"
+#include "ek/solver/rod_model.hpp"
 #include "ek/solver/saddle.hpp"
 
 namespace ek {
@@ -92,7 +93,7 @@ std::unique_ptr<ControlledLoad> make_load(const Points& X, const VecX& rest, con
 /// The snap at path point `k` (PathEvent::Snap): the jump from point k − 1,
 /// the last of the branch that ended, to the stable state k, and that state
 /// relaxed without the load.
-Snap snap_at(int k, const LoadPath& path, const KnotSystem& sys, const VecX& rest, const KnotLoadOptions& o,
+Snap snap_at(int k, const LoadPath& path, const RodModel& sys, const VecX& rest, const KnotLoadOptions& o,
              const AlexanderPolynomial& alexander0) {
   const PathPoint& before = path.points[static_cast<size_t>(k) - 1];
   const PathPoint& p = path.points[static_cast<size_t>(k)];
@@ -159,7 +160,7 @@ KnotLoadResult load_knot(const Points& start, const VecX& rest, const KnotLoadOp
     x0 = relaxed.positions;
   }
   const AlexanderPolynomial alexander0 = alexander(x0);
-  KnotSystem sys(x0, rest, o.relax);
+  RodModel sys(x0, rest, o.relax);
   if (!o.relax_start) out.start_energy = sys.objective().energy();
   double from = 0.0;
   const std::unique_ptr<ControlledLoad> load = make_load(x0, rest, o, out, from);

@@ -5,7 +5,6 @@
 #include "ek/geometry/curve_io.hpp"
 #include "ek/solver/energy.hpp"
 #include "ek/solver/json.hpp"
-#include "ek/solver/link_relax.hpp"
 #include "ek/geometry/link.hpp"
 #include "ek/solver/relax_request.hpp"
 
@@ -37,19 +36,20 @@ Result relax_link_components(const py::list& components, const RelaxRequest& req
                              const std::optional<std::string>& output) {
   Link link;
   for (const py::handle& c : components) link.push_back(curve_arg(c, "components"));
+  require_input(link.size() >= 2, "relax_link: a link needs at least 2 components (relax a knot with relax())");
   if (output) check_writable(*output);
-  LinkRelaxResult r;
+  RelaxResult r;
   {
     py::gil_scoped_release release;
-    r = relax_link(link, request.options());
+    r = relax(link, request.options());
   }
   if (r.status() == RelaxStatus::TopologyChanged)
     throw TopologyError("relax: a component's Alexander polynomial or a linking number changed");
-  if (output) write_link(*output, r.positions);
+  if (output) write_link(*output, r.components());
   Result result = result_from_json(link_relax_json(r), "relax_link");
   if (output) result.fields["output"] = *output;
   py::list out;
-  for (const Points& P : r.positions) out.append(to_array(P));
+  for (const Points& P : r.components()) out.append(to_array(P));
   result.fields["points"] = out;
   return result;
 }

@@ -1,5 +1,7 @@
 #include "ek/solver/json.hpp"
 
+#include "ek/core/errors.hpp"
+
 namespace ek {
 namespace {
 
@@ -95,25 +97,24 @@ Json relax_json(const RelaxResult& r, const std::string& method) {
   return j;
 }
 
-Json link_relax_json(const LinkRelaxResult& r) {
+Json link_relax_json(const RelaxResult& r) {
+  require(r.link_type.has_value(), "link_relax_json: a result of several components with its link type");
   Json j;
-  j["components"] = r.positions.size();
-  int vertices = 0;
-  for (const Points& P : r.positions) vertices += static_cast<int>(P.rows());
-  j["vertices"] = vertices;
+  j["components"] = r.component_sizes.size();
+  j["vertices"] = r.positions.rows();
   j["status"] = to_string(r.status());
   j["iterations"] = r.report.iterations;
   j["seconds"] = json_number(r.report.seconds);
-  j["energy"] = json_number(r.energy);
+  j["energy"] = json_number(r.energy.total);
   j["gradient_norm"] = json_number(r.report.gradient_norm);
   j["min_distance"] = json_number(r.min_distance);
   Json alexander = Json::array();
-  for (const AlexanderPolynomial& a : r.alexander) alexander.push_back(a.coefficients);
+  for (const AlexanderPolynomial& a : r.link_type->alexander) alexander.push_back(a.coefficients);
   j["alexander"] = alexander;
-  j["linking_numbers"] = integer_matrix_json(r.linking_numbers);
+  j["linking_numbers"] = integer_matrix_json(r.link_type->linking_numbers);
   j["alexander_preserved"] = r.alexander_preserved;
   j["linking_preserved"] = r.linking_preserved;
-  j["conway"] = r.conway.coefficients;
+  j["conway"] = r.link_type->conway.coefficients;
   j["conway_preserved"] = r.conway_preserved;
   return j;
 }

@@ -1,9 +1,6 @@
 #include "ek/solver/relax.hpp"
 
 #include <algorithm>
-#include <chrono>
-#include <cstdio>
-#include <cstdlib>
 #include <cmath>
 #include <map>
 #include <mutex>
@@ -14,24 +11,11 @@
 #include "ek/geometry/polyline.hpp"
 #include "ek/knots/alexander.hpp"
 #include "ek/solver/eigen_analysis.hpp"
-#include "ek/solver/knot_terms.hpp"
 #include "ek/solver/multilevel.hpp"
+#include "ek/solver/rod_model.hpp"
 
 namespace ek {
 namespace {
-
-
-/// The input's rest edge lengths, after checking the curve (InputError).
-VecX checked_rest_lengths(const Points& curve, const RelaxOptions& options) {
-  const auto n = curve.rows();
-  require_input(n >= 4, "relax: a closed curve needs at least 4 vertices");
-  require_input(curve.allFinite(), "relax: the curve has non-finite coordinates");
-  require_input(edge_lengths(curve).minCoeff() > 0.0, "relax: the curve has a zero-length edge");
-  const VecX rest = options.rest_lengths ? *options.rest_lengths : edge_lengths(curve);
-  require_input(rest.size() == n && rest.minCoeff() > 0.0 && rest.allFinite(),
-                "relax: rest lengths must be n positive numbers");
-  return rest;
-}
 
 EnergyParts parts_of(Objective& objective) {
   EnergyParts p;
@@ -45,21 +29,6 @@ EnergyParts parts_of(Objective& objective) {
   p.total = p.stretch + p.bend + p.twist + p.contact + p.slab;
   return p;
 }
-
-/// Everything one relaxation works on: the rod, its contact and slab, and
-/// the solver that every phase shares.
-struct Relaxation {
-  const RelaxOptions& options;
-  ElasticRod rod;
-  ContactOptions contact_options;
-  ContactPotential contact;
-  std::optional<PlanaritySlab> slab;
-  NewtonSolver solver;
-
-  KnotObjective objective(ContactPotential& c, bool with_slab) {
-    return KnotObjective(rod, c, with_slab && slab ? &*slab : nullptr, options.max_tangent_rotation);
-  }
-};
 
 }  // namespace
 
@@ -104,29 +73,25 @@ namespace {
 /// barrier; every accepted step is still collision-free, the barrier being
 /// singular at d = 0 for any ω), the solve at ω (under the slab when there
 /// is one), and after release the solve without the slab.
-void run_phases(Relaxation& r, RelaxResult& result) {
+void run_phases(RodModel& m, NewtonSolver& solver, RelaxResult& result) {
   const int offset = static_cast<int>(result.phases.size());  // phases of coarse levels before these
-  for (const double f : r.options.contact_continuation) {
-    ContactOptions soft = r.contact_options;
-    soft.stiffness = f * r.contact_options.stiffness;
-    ContactPotential soft_contact(CurveTopology::single(r.rod.num_vertices()), soft);
-    KnotObjective soft_objective = r.objective(soft_contact, true);
-    result.continuation_reports.push_back(r.solver.minimize(soft_objective));
+  for (const double f : m.options().contact_continuation) {
+    result.continuation_reports.push_back(solver.minimize(m.objective(f)));
     result.phases.push_back("continuation " + std::to_string(f));
   }
-  KnotObjective objective = r.objective(r.contact, true);
-  result.report = r.solver.minimize(objective);
-  result.phases.push_back(r.slab ? "slab" : "final");
+  CompositeObjective& objective = m.objective();
+  result.report = solver.minimize(objective);
+  result.phases.push_back(m.slab() ? "slab" : "final");
   result.energy = parts_of(objective);
-  if (r.slab && r.options.release_slab) {
+  if (m.slab() && m.options().release_slab) {
     result.slab_report = result.report;
     result.slab_energy = result.energy;
-    KnotObjective released = r.objective(r.contact, false);
-    result.report = r.solver.minimize(released);
+    CompositeObjective& released = m.objective(1.0, false);
+    result.report = solver.minimize(released);
     result.phases.push_back("final");
     result.energy = parts_of(released);
   }
-  for (IterationRecord rec : r.solver.trace()) {
+  for (IterationRecord rec : solver.trace()) {
     rec.phase += offset;
     result.trace.push_back(rec);
   }
@@ -136,32 +101,33 @@ void run_phases(Relaxation& r, RelaxResult& result) {
 /// even under a kept slab (where no vertex is within the slab's activation
 /// distance of a plane, the z translation and the tilts are (near-)zero
 /// modes of H too, and the stiffness is meant to describe the shape).
-std::optional<double> stiffness(Relaxation& r, const NewtonOptions& no) {
-  KnotObjective objective = r.objective(r.contact, !r.options.release_slab);
+std::optional<double> stiffness(RodModel& m) {
+  Objective& objective = m.objective(1.0, !m.options().release_slab);
   SparseAssembler A;
   objective.assemble_hessian(A, HessianKind::Exact);
-  const int n = r.rod.num_vertices();
-  const int theta_begin = r.rod.model() == TwistModel::TwistFree ? -1 : 3 * n;
-  const Eigen::MatrixXd Q = rigid_modes(r.rod.positions(), r.rod.num_dofs(), theta_begin);
+  const ElasticRod& rod = m.rod();
+  const int theta_begin = rod.model() == TwistModel::TwistFree ? -1 : 3 * rod.num_vertices();
+  const Eigen::MatrixXd Q = rigid_modes(rod.positions(), rod.num_dofs(), theta_begin);
   EigenOptions eo;
   eo.count = 1;
-  const EigenResult eig = smallest_eigenpairs(A.matrix(), Q, no.shift_epsilon * no.lambda_min, eo);
+  const EigenResult eig = smallest_eigenpairs(A.matrix(), Q, m.newton().shift_epsilon * m.lambda_min(), eo);
   if (!eig.converged) return std::nullopt;
   return eig.values(0);
 }
 
 /// Positions, angles, contacts, twist, writhe and link of the result (a
 /// coarse level's only positions and angles: it is a start for the next).
-void describe_result(Relaxation& r, RelaxResult& result, bool coarse) {
-  result.positions = r.rod.positions();
-  result.theta = r.rod.thetas();
-  result.Theta = r.rod.model() == TwistModel::TwistFree ? 0.0 : r.rod.theta_total();
+void describe_result(RodModel& m, RelaxResult& result, bool coarse) {
+  const ElasticRod& rod = m.rod();
+  result.positions = rod.positions();
+  result.theta = rod.thetas();
+  result.Theta = rod.model() == TwistModel::TwistFree ? 0.0 : rod.theta_total();
   if (coarse) return;
-  r.contact.update(result.positions);
-  result.contacts = static_cast<int>(r.contact.num_active());
+  m.contact().update(result.positions);
+  result.contacts = static_cast<int>(m.contact().num_active());
   result.min_distance = clearance(result.positions).distance;
-  result.twist = r.rod.twist();
-  result.writhe = r.rod.writhe();
+  result.twist = rod.twist();
+  result.writhe = rod.writhe();
   result.link = result.twist + result.writhe;
 }
 
@@ -275,7 +241,17 @@ bool RelaxResult::converged() const {
   return report.status == SolverStatus::ConvergedStable || report.status == SolverStatus::ConvergedUnstable;
 }
 bool RelaxResult::stable() const { return report.status == SolverStatus::ConvergedStable; }
-RelaxStatus RelaxResult::status() const { return relax_status(report.status, alexander_preserved); }
+RelaxStatus RelaxResult::status() const { return relax_status(report.status, topology_preserved()); }
+
+Link RelaxResult::components() const {
+  Link out;
+  Eigen::Index row = 0;
+  for (const int n : component_sizes) {
+    out.push_back(positions.middleRows(row, n));
+    row += n;
+  }
+  return out;
+}
 
 namespace {
 
@@ -334,27 +310,14 @@ namespace {
 /// polynomial is compared when result.alexander is set (check_topology).
 void relax_level(const Points& curve, const VecX& rest, const RelaxOptions& options, bool coarse,
                  RelaxResult& result) {
-  const int n = static_cast<int>(curve.rows());
-  const ResolvedModel model = resolve_model(options, rest.mean());
-  result.model = model.model;
-  result.lambda_min = cached_lambda_min(n, rest.mean(), options.material, model.model);
-  const NewtonOptions no = newton_options(options, model, result.lambda_min);
-  const ContactOptions co = contact_options(model, options);
-  Relaxation r{options, model_rod(curve, rest, options, model), co,
-               ContactPotential(CurveTopology::single(n), co), std::nullopt, NewtonSolver(no)};
-  r.contact.update(curve);
-  if (r.contact.min_distance() <= 0.0) throw InputError("relax: the input curve touches itself");
-  if (options.slab) {
-    r.slab.emplace(*options.slab);
-    if (!r.slab->inside(curve))
-      throw InputError("relax: the input curve is not strictly inside the planarity slab |z| < " +
-                       std::to_string(options.slab->half_thickness));
-  }
-  run_phases(r, result);
-  describe_result(r, result, coarse);
-  if (options.smallest_eigenvalue) result.smallest_eigenvalue = stiffness(r, no);
+  RodModel m(curve, rest, options);
+  result.model = m.resolved().model;
+  result.lambda_min = m.lambda_min();
+  NewtonSolver solver(m.newton());
+  run_phases(m, solver, result);
+  describe_result(m, result, coarse);
+  if (options.smallest_eigenvalue) result.smallest_eigenvalue = stiffness(m);
 }
-
 
 /// The coarse level's result with its own coarse levels and phases folded
 /// into `result` (coarsest first; its trace's phases renumbered after the
@@ -414,6 +377,7 @@ RelaxResult relax(const Points& curve, const RelaxOptions& options) {
   RelaxOptions unchecked = options;
   unchecked.check_topology = false;  // checked once below, on the result
   RelaxResult result = relax_levels(curve, rest, unchecked, options.coarse_levels, true);
+  result.component_sizes = {static_cast<int>(curve.rows())};
   if (options.check_topology) {
     result.alexander = input;
     try {
@@ -424,6 +388,40 @@ RelaxResult relax(const Points& curve, const RelaxOptions& options) {
     result.alexander_preserved = (result.result_alexander == result.alexander);
   }
   return result;
+}
+
+namespace {
+
+/// The link of several components relaxed by the direct method (relax(const Link&)).
+RelaxResult relax_components(const Link& link, const RelaxOptions& options) {
+  require_input(!options.smallest_eigenvalue, "relax: the smallest eigenvalue is computed for a knot only");
+  RodModel m(link, options);
+  RelaxResult result;
+  if (options.check_topology) result.link_type = link_type(link);
+  result.model = m.resolved().model;
+  result.lambda_min = m.lambda_min();
+  NewtonSolver solver(m.newton());
+  run_phases(m, solver, result);
+  result.min_distance = m.min_distance();
+  result.contacts = static_cast<int>(m.contact().num_active());
+  result.positions = m.positions();
+  for (const Points& P : link) result.component_sizes.push_back(static_cast<int>(P.rows()));
+  if (options.check_topology) {
+    const LinkType after = ek::link_type(m.components());
+    result.alexander_preserved = after.alexander == result.link_type->alexander;
+    result.linking_preserved = after.linking_numbers == result.link_type->linking_numbers;
+    result.conway_preserved = after.conway == result.link_type->conway;
+  }
+  return result;
+}
+
+}  // namespace
+
+RelaxResult relax(const Link& link, const RelaxOptions& options) {
+  require_input(!link.empty(), "relax: no curve");
+  if (link.size() == 1) return relax(link[0], options);
+  options.validate();
+  return relax_components(link, options);
 }
 
 }  // namespace ek

@@ -4,6 +4,7 @@
 #include "ek/core/stopwatch.hpp"
 #include "ek/knots/alexander.hpp"
 #include "ek/solver/rigid_solve.hpp"
+#include "ek/solver/rod_model.hpp"
 #include "ek/solver/saddle.hpp"
 
 #include <algorithm>
@@ -290,7 +291,7 @@ VecX periodic_rest_lengths(const VecX& rest, int n, int p) {
 struct Restricted {
   VecX periodic;  ///< the rest lengths
   Points start;
-  KnotSystem system;
+  RodModel system;
   SymmetricObjective reduced;
   NewtonOptions newton;
   Restricted(const Points& x, const VecX& rest, const CyclicSymmetry& symmetry, const SymmetricSearchOptions& o)
@@ -307,7 +308,7 @@ struct Restricted {
 /// Records every iterate of the restricted solve (the images of a descent).
 class Recording : public Objective {
  public:
-  Recording(SymmetricObjective& f, KnotSystem& system, SymmetricDescent& out) : f_(f), system_(system), out_(out) {}
+  Recording(SymmetricObjective& f, RodModel& system, SymmetricDescent& out) : f_(f), system_(system), out_(out) {}
   int num_dofs() const override { return f_.num_dofs(); }
   VecX dofs() const override { return f_.dofs(); }
   void set_dofs(const VecX& y) override { f_.set_dofs(y); }
@@ -331,7 +332,7 @@ class Recording : public Objective {
 
  private:
   SymmetricObjective& f_;
-  KnotSystem& system_;
+  RodModel& system_;
   SymmetricDescent& out_;
 };
 

@@ -335,7 +335,7 @@ class DoubleEndedSearch {
   /// A/B test of the minima (to_b: their similarities to B).
   SaddleRecord seed_search(const Points& seed, const VecX& tangent, std::array<double, 2>& to_b) const {
     const Stopwatch t0;
-    KnotSystem sys(seed, rest_, detail::direct(o_.saddle));
+    RodModel sys(seed, rest_, detail::direct(o_.saddle));
     SaddleSearchOptions so = o_.saddle.search;
     so.max_iterations = o_.search_iterations;
     SaddleRecord r;
@@ -373,7 +373,7 @@ class DoubleEndedSearch {
     }
   }
 
-  KnotSystem sys_;
+  RodModel sys_;
   const SaddleStart& a_;
   const SaddleStart& b_;
   const VecX& rest_;

@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "ek/knots/polynomial.hpp"
+#include "ek/solver/rod_model.hpp"
 #include "ek/transitions/saddles.hpp"
 
 namespace ek::detail {
@@ -22,7 +23,7 @@ AlexanderPolynomial alexander_or_zero(const Points& x);
 /// ended converged-stable with the topology kept, else the failure
 /// (DegenerateHessian, Index, TopologyChanged, DescentFailed).
 std::optional<SearchStatus> descend_saddle(const AlexanderPolynomial& alexander, const VecX& rest,
-                                           const KnotSaddleOptions& o, KnotSystem& sys, const VecX& xs,
+                                           const KnotSaddleOptions& o, RodModel& sys, const VecX& xs,
                                            SaddleRecord& r);
 
 /// One search_saddle() from the dofs of `sys` along `direction` with the
@@ -31,7 +32,7 @@ std::optional<SearchStatus> descend_saddle(const AlexanderPolynomial& alexander,
 /// negative eigenvalue, iterations, rejected steps and saddle positions, and
 /// its status when the search stopped without converging (a converged
 /// search's status comes from its checks).
-SaddleSearchResult search_into(KnotSystem& sys, const VecX& direction, SaddleSearchOptions search, double max_rise,
+SaddleSearchResult search_into(RodModel& sys, const VecX& direction, SaddleSearchOptions search, double max_rise,
                                SaddleRecord& r);
 
 }  // namespace ek::detail

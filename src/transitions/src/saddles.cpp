@@ -54,7 +54,7 @@ void thin_images(Descent& d, int count) {
 
 /// Lk at the rod's current state; true when no link is prescribed or it is
 /// within the tolerance.
-bool link_holds(KnotSystem& sys, const KnotSaddleOptions& o, double& link) {
+bool link_holds(RodModel& sys, const KnotSaddleOptions& o, double& link) {
   if (!o.relax.link) return true;
   link = sys.rod().link();
   return std::abs(link - *o.relax.link) <= o.link_tolerance;
@@ -79,7 +79,7 @@ bool displace_below(Objective& f, const VecX& xs, double saddle_energy, const Ve
 /// θ part does not depend on the reference frames.
 SaddleMinimum descend_from(const AlexanderPolynomial& alexander, const VecX& rest, const KnotSaddleOptions& o,
                            const Points& saddle, const VecX& step) {
-  KnotSystem sys(saddle, rest, direct(o));
+  RodModel sys(saddle, rest, direct(o));
   Objective& f = sys.objective();
   const VecX xs = f.dofs();
   const double saddle_energy = f.energy();
@@ -113,7 +113,7 @@ SaddleMinimum descend_from(const AlexanderPolynomial& alexander, const VecX& res
 namespace detail {
 
 std::optional<SearchStatus> descend_saddle(const AlexanderPolynomial& alexander, const VecX& rest,
-                                           const KnotSaddleOptions& o, KnotSystem& sys, const VecX& xs,
+                                           const KnotSaddleOptions& o, RodModel& sys, const VecX& xs,
                                            SaddleRecord& r) {
   Objective& f = sys.objective();
   f.set_dofs(xs);
@@ -139,7 +139,7 @@ std::optional<SearchStatus> descend_saddle(const AlexanderPolynomial& alexander,
   return std::nullopt;
 }
 
-SaddleSearchResult search_into(KnotSystem& sys, const VecX& direction, SaddleSearchOptions search, double max_rise,
+SaddleSearchResult search_into(RodModel& sys, const VecX& direction, SaddleSearchOptions search, double max_rise,
                                SaddleRecord& r) {
   search.gradient_tolerance = sys.tolerance();
   search.base_shift = sys.newton().shift_epsilon * sys.lambda_min();
@@ -160,7 +160,7 @@ SaddleSearchResult search_into(KnotSystem& sys, const VecX& direction, SaddleSea
 namespace {
 
 /// Items 2-4 of the file comment for a converged search at x_s.
-void check_saddle(const SaddleStart& start, const VecX& rest, const KnotSaddleOptions& o, KnotSystem& sys,
+void check_saddle(const SaddleStart& start, const VecX& rest, const KnotSaddleOptions& o, RodModel& sys,
                   const VecX& xs, const CurveSimilarity& similarity, SaddleRecord& r) {
   const std::optional<SearchStatus> failed = detail::descend_saddle(start.alexander, rest, o, sys, xs, r);
   for (SaddleMinimum& m : r.minima)
@@ -186,7 +186,7 @@ void check_saddle(const SaddleStart& start, const VecX& rest, const KnotSaddleOp
 SaddleRecord search_one(const SaddleStart& start, const VecX& rest, const KnotSaddleOptions& o,
                         const VecX& direction, const CurveSimilarity& similarity) {
   const Stopwatch t0;
-  KnotSystem sys(start.positions, rest, direct(o));
+  RodModel sys(start.positions, rest, direct(o));
   SaddleRecord r;
   const SaddleSearchResult s = detail::search_into(sys, direction, o.search, o.max_rise_factor * start.energy, r);
   if (s.status == SaddleStatus::Converged) check_saddle(start, rest, o, sys, s.x, similarity, r);
@@ -211,7 +211,7 @@ void KnotSaddleOptions::validate() const {
 }
 
 PointCheck check_point(const Points& x, const VecX& rest, const RelaxOptions& model, int count) {
-  KnotSystem sys(x, rest, with_method(model, "hybrid"));
+  RodModel sys(x, rest, with_method(model, "hybrid"));
   Objective& f = sys.objective();
   PointCheck c;
   c.gradient_norm = f.gradient().norm();
@@ -224,7 +224,7 @@ PointCheck check_point(const Points& x, const VecX& rest, const RelaxOptions& mo
 
 SaddleStart prepare_start(const Points& state, const VecX& rest, const KnotSaddleOptions& o) {
   o.validate();
-  KnotSystem sys(state, rest, direct(o));
+  RodModel sys(state, rest, direct(o));
   Objective& f = sys.objective();
   SaddleStart s;
   s.tolerance = sys.tolerance();

@@ -226,7 +226,7 @@ const std::vector<std::string>& link_attribute_names();
 /// applies the data set of Section 7.4 to them): sample k continues the
 /// link's BFACF walk (sample_lattice_link, from lattice_link_start) with the
 /// seed sample_seed(knot_seed(seed, name), burn_in + k), as for knots; each
-/// sample is relaxed by relax_link (the twist-free model by the direct
+/// sample is relaxed by relax() of the link (the twist-free model by the direct
 /// method) and checked against the link type (a change is a run with status
 /// "topology-changed", never an equilibrium); the entry is clustered on the
 /// link state distance (ek/analysis/link_states.hpp). Journal and resume as

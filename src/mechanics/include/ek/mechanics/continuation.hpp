@@ -159,7 +159,7 @@ struct LoadPath {
 LoadPath follow_path(ParameterizedObjective& f, const ContinuationOptions& options,
                      const std::function<bool(const PathPoint&)>& on_point = {});
 
-/// The knot model (KnotSystem: rod and contact, twist-free) plus a load: the
+/// The knot model (RodModel: rod and contact, twist-free) plus a load: the
 /// sum of the knot's potentials and the load (a CompositeObjective: each term
 /// one Hessian segment), a ParameterizedObjective whose parameter is the
 /// load's. Its rigid modes are those the load keeps. The system and the load

@@ -1,7 +1,7 @@
 #pragma once
 /// \file
 /// Loads on a knot as potential terms of the position dofs (beside the rod,
-/// contact and slab terms of knot_terms.hpp), each controlled by one scalar
+/// contact and slab terms of rod_terms.hpp), each controlled by one scalar
 /// parameter μ: a pull between two material points under displacement
 /// control, two parallel plates at a prescribed gap, or a pair of opposite
 /// point forces of prescribed magnitude (paper Section 8.5: "a quantitative

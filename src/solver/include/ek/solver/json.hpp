@@ -7,7 +7,6 @@
 
 #include "ek/core/json.hpp"
 #include "ek/solver/energy.hpp"
-#include "ek/solver/link_relax.hpp"
 #include "ek/solver/newton.hpp"
 #include "ek/solver/relax.hpp"
 
@@ -36,12 +35,13 @@ Json curve_energy_json(const CurveEnergy& energy);
 /// (after a release) when they apply.
 Json relax_json(const RelaxResult& result, const std::string& method);
 
-/// `knots relax` on a link: components, vertices, status, iterations,
-/// seconds, energy, gradient_norm, min_distance (null when no pair is
+/// `knots relax` on a link (a relax() result of several components, its
+/// link_type set): components, vertices, status, iterations and seconds (of
+/// the solve at ω), energy (the total), gradient_norm, min_distance (null when no pair is
 /// within reach of the contact), alexander (each component's, of the
 /// input), linking_numbers (of the input), alexander_preserved,
 /// linking_preserved, conway (the input link's ∇, conway.hpp),
 /// conway_preserved.
-Json link_relax_json(const LinkRelaxResult& result);
+Json link_relax_json(const RelaxResult& result);
 
 }  // namespace ek

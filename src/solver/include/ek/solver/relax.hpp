@@ -19,7 +19,9 @@
 #include <vector>
 
 #include "ek/contact/contact_potential.hpp"
+#include "ek/geometry/link.hpp"
 #include "ek/geometry/types.hpp"
+#include "ek/knots/invariants.hpp"
 #include "ek/knots/polynomial.hpp"
 #include "ek/rod/elastic_rod.hpp"
 #include "ek/solver/newton.hpp"
@@ -148,7 +150,7 @@ struct ResolvedModel {
 /// `mean_edge_length` [length] (> 0).
 ResolvedModel resolve_model(const RelaxOptions& options, double mean_edge_length);
 /// The contact options of the resolved model (d̂, ω) and of `options`
-/// (the Hessian pattern's margin), as relax() and relax_link() use them.
+/// (the Hessian pattern's margin), as RodModel uses them.
 ContactOptions contact_options(const ResolvedModel& model, const RelaxOptions& options);
 /// The Newton options of a relaxation: options.newton with the goal of
 /// `options` (the resolved tolerance, the iteration cap, stop at a critical
@@ -227,9 +229,21 @@ struct RelaxResult {
   /// model).
   double link = 0.0, twist = 0.0, writhe = 0.0;
   ///@}
-  bool alexander_preserved = true;        ///< the result's Alexander polynomial equals the input's
-  AlexanderPolynomial alexander;          ///< of the input
-  AlexanderPolynomial result_alexander;   ///< of the result
+  /// [1] The vertices of each component, in order (one entry for a knot);
+  /// `positions` holds the components back to back.
+  std::vector<int> component_sizes;
+  ///@{
+  /// The check of the knot or link type (RelaxOptions::check_topology):
+  /// every component's Alexander polynomial and, with several components,
+  /// every linking number and the link's Conway polynomial ∇ (which tells
+  /// the Borromean rings from the unlink), each equal on the result.
+  bool alexander_preserved = true, linking_preserved = true, conway_preserved = true;
+  ///@}
+  AlexanderPolynomial alexander;          ///< of the input (one component)
+  AlexanderPolynomial result_alexander;   ///< of the result (one component)
+  /// Of the input with several components: each component's Alexander
+  /// polynomial, the linking numbers and ∇ (invariants.hpp).
+  std::optional<LinkType> link_type;
   std::optional<double> smallest_eigenvalue;  ///< of H without rigid modes, when asked
   double lambda_min = 0.0;          ///< straight-rod λ_min used for the shift
   TwistModel model = TwistModel::TwistFree;  ///< the unknowns the rod was relaxed with
@@ -242,8 +256,11 @@ struct RelaxResult {
 
   bool converged() const;  ///< The last phase converged, stable or (stop_at_critical_point) unstable.
   bool stable() const;     ///< The last phase converged to a stable equilibrium.
+  /// Every component's Alexander polynomial, every linking number and ∇ kept.
+  bool topology_preserved() const { return alexander_preserved && linking_preserved && conway_preserved; }
+  Link components() const;  ///< `positions` split by component_sizes
   /// The solver status of the last phase, or TopologyChanged when the
-  /// Alexander polynomial differs (an error, never a silent result).
+  /// knot or link type differs (an error, never a silent result).
   RelaxStatus status() const;
 };
 
@@ -264,6 +281,24 @@ const std::vector<std::string>& method_names();
 /// lengths unless options.rest_lengths gives them). Throws InputError for a curve that is not simple or has a
 /// non-positive edge, and for impossible options.
 RelaxResult relax(const Points& curve, const RelaxOptions& options = {});
+
+/// Relaxes a knot or a link (paper Section 8.5: "We can easily extend our
+/// simulation algorithm to handle links, i.e.\ intertwined combinations of
+/// several knots"). One component: relax(link[0], options). Several: the
+/// model of RodModel (rod_model.hpp: one twist-free rod per component with
+/// its own edge lengths as rest lengths, the contact between every two
+/// edges that share no vertex, across components too, E = Σ_c E_rod(x_c) +
+/// ω Σ b(d_ij)) relaxed by the direct method: the contact continuation of
+/// the options, then Newton at ω with their tolerance, iteration cap and
+/// Newton settings. Since no accepted step lets two edges touch, no
+/// component changes its knot type and no two components pass through each
+/// other; the link type is checked again on the result (link_type()).
+/// link, twist and writhe are 0 for several components (their linking
+/// numbers are link_type's). Throws InputError for components that touch
+/// or are not simple polygons, for options a link of several components
+/// does not have (a prescribed link Lk, the full model, a slab, given rest
+/// lengths, the smallest eigenvalue) and for impossible options.
+RelaxResult relax(const Link& link, const RelaxOptions& options = {});
 
 /// λ_min of the straight rod (cached; thread-safe).
 double cached_lambda_min(int n, double edge_length, const RodMaterial& material, TwistModel model);

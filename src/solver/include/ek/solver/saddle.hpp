@@ -41,17 +41,13 @@
 /// descend() (Newton's method from a point, recording every accepted iterate:
 /// the images of a minimum energy path).
 #include <Eigen/Dense>
-#include <memory>
+#include <Eigen/Sparse>
 #include <string>
 #include <vector>
 
-#include "ek/contact/contact_potential.hpp"
 #include "ek/geometry/types.hpp"
-#include "ek/rod/elastic_rod.hpp"
-#include "ek/solver/knot_terms.hpp"
 #include "ek/solver/newton.hpp"
 #include "ek/solver/objective.hpp"
-#include "ek/solver/relax.hpp"
 
 namespace ek {
 
@@ -168,36 +164,5 @@ struct Descent {
 /// iterate recorded (the images of a descent path). Leaves the objective at
 /// the result.
 Descent descend(Objective& objective, const NewtonOptions& options);
-
-/// The knot model of relax() for the direct method at one resolution: the
-/// rod (rest lengths, material, twist model, a prescribed link), the contact
-/// potential and the objective E_rod + ω E_contact, with the Newton options
-/// relax() would use (tolerance, λ_min, iteration cap). No slab.
-class KnotSystem {
- public:
-  /// `x` (n by 3) simple and not touching itself; `rest` n rest lengths.
-  /// `options` as for relax() (material, dhat, ω, tolerance, link,
-  /// full_model, max_iterations, newton); the slab is not allowed.
-  /// InputError for a curve or options that relax() refuses.
-  KnotSystem(const Points& x, const VecX& rest, const RelaxOptions& options);
-  ~KnotSystem();                                      ///< Releases the rod, the contact and the objective.
-  KnotSystem(const KnotSystem&) = delete;             ///< Not copyable.
-  KnotSystem& operator=(const KnotSystem&) = delete;  ///< Not copyable.
-
-  CompositeObjective& objective();  ///< E_rod + ω E_contact over the rod's dofs (owned by the system).
-  ElasticRod& rod();       ///< The rod (owned by the system); its dofs are the objective's.
-  /// The Newton options of relax() for this model (tolerance, λ_min, cap).
-  const NewtonOptions& newton() const { return newton_; }
-  double tolerance() const { return newton_.gradient_tolerance; }  ///< [energy/length]
-  double lambda_min() const { return newton_.lambda_min; }        ///< [energy/length²]
-  /// Positions of dofs x (n by 3).
-  Points positions(const VecX& dofs) const;
-  std::string model_name() const;  ///< "twist-free", "free-theta", "fixed-link"
-
- private:
-  struct Impl;
-  std::unique_ptr<Impl> impl_;
-  NewtonOptions newton_;
-};
 
 }  // namespace ek
