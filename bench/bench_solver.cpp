@@ -10,8 +10,8 @@
 
 #include "ek/contact/contact_potential.hpp"
 #include "ek/core/sparse_assembler.hpp"
+#include "ek/optim/cholesky.hpp"
 #include "ek/rod/elastic_rod.hpp"
-#include "ek/solver/cholesky.hpp"
 #include "ek/solver/relax.hpp"
 
 using namespace ek;

@@ -19,8 +19,8 @@
 #include "ek/knots/alexander.hpp"
 #include "ek/mechanics/knot_loading.hpp"
 #include "ek/mechanics/loads.hpp"
+#include "ek/optim/saddle.hpp"
 #include "ek/solver/rod_model.hpp"
-#include "ek/solver/saddle.hpp"
 #include "testing.hpp"
 
 using namespace ek;

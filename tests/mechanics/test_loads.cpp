@@ -12,8 +12,8 @@
 #include "ek/geometry/polyline.hpp"
 #include "ek/mechanics/continuation.hpp"
 #include "ek/mechanics/loads.hpp"
+#include "ek/optim/saddle.hpp"
 #include "ek/solver/rod_model.hpp"
-#include "ek/solver/saddle.hpp"
 #include "testing.hpp"
 
 using namespace ek;

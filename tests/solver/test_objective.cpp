@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "ek/contact/contact_potential.hpp"
+#include "ek/optim/newton.hpp"
+#include "ek/optim/objective.hpp"
 #include "ek/rod/elastic_rod.hpp"
-#include "ek/solver/newton.hpp"
-#include "ek/solver/objective.hpp"
 #include "ek/solver/rod_terms.hpp"
 #include "ek/solver/trace.hpp"
 #include "testing.hpp"

@@ -11,7 +11,7 @@
 #include "ek/geometry/polyline.hpp"
 #include "ek/geometry/writhe.hpp"
 #include "ek/knots/alexander.hpp"
-#include "ek/solver/eigen_analysis.hpp"
+#include "ek/optim/eigen_analysis.hpp"
 #include "ek/solver/relax.hpp"
 #include "testing.hpp"
 

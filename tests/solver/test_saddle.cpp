@@ -8,7 +8,7 @@
 
 #include "ek/core/sparse_assembler.hpp"
 #include "ek/geometry/polyline.hpp"
-#include "ek/solver/saddle.hpp"
+#include "ek/optim/saddle.hpp"
 #include "ek/solver/symmetric.hpp"
 
 using namespace ek;

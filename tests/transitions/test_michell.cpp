@@ -6,8 +6,8 @@
 
 #include <cmath>
 
+#include "ek/optim/saddle.hpp"
 #include "ek/solver/rod_model.hpp"
-#include "ek/solver/saddle.hpp"
 
 using namespace ek;
 

@@ -6,9 +6,9 @@
 
 #include "ek/core/errors.hpp"
 #include "ek/core/stopwatch.hpp"
-#include "ek/solver/eigen_analysis.hpp"
-#include "ek/solver/rigid_solve.hpp"
-#include "ek/solver/saddle.hpp"
+#include "ek/optim/eigen_analysis.hpp"
+#include "ek/optim/rigid_solve.hpp"
+#include "ek/optim/saddle.hpp"
 
 namespace ek {
 

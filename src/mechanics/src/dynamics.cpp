@@ -10,9 +10,9 @@
 #include "ek/core/hash.hpp"
 #include "ek/geometry/segment_distance.hpp"
 #include "ek/knots/alexander.hpp"
+#include "ek/optim/newton.hpp"
 #include "ek/rod/elastic_rod.hpp"
 #include "ek/solver/rod_terms.hpp"
-#include "ek/solver/newton.hpp"
 
 namespace ek {
 

@@ -7,8 +7,8 @@
 #include "ek/core/errors.hpp"
 #include "ek/geometry/polyline.hpp"
 #include "ek/knots/alexander.hpp"
+#include "ek/optim/saddle.hpp"
 #include "ek/solver/rod_model.hpp"
-#include "ek/solver/saddle.hpp"
 
 namespace ek {
 

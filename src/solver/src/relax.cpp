@@ -10,7 +10,7 @@
 #include "ek/core/errors.hpp"
 #include "ek/geometry/polyline.hpp"
 #include "ek/knots/alexander.hpp"
-#include "ek/solver/eigen_analysis.hpp"
+#include "ek/optim/eigen_analysis.hpp"
 #include "ek/solver/multilevel.hpp"
 #include "ek/solver/rod_model.hpp"
 

@@ -5,7 +5,7 @@
 
 #include "ek/core/errors.hpp"
 #include "ek/core/hash.hpp"
-#include "ek/solver/eigen_analysis.hpp"
+#include "ek/optim/eigen_analysis.hpp"
 
 namespace ek {
 

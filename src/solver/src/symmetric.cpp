@@ -3,9 +3,9 @@
 #include "ek/core/errors.hpp"
 #include "ek/core/stopwatch.hpp"
 #include "ek/knots/alexander.hpp"
-#include "ek/solver/rigid_solve.hpp"
+#include "ek/optim/rigid_solve.hpp"
+#include "ek/optim/saddle.hpp"
 #include "ek/solver/rod_model.hpp"
-#include "ek/solver/saddle.hpp"
 
 #include <algorithm>
 #include <cmath>

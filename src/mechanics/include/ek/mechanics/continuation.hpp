@@ -32,8 +32,8 @@
 
 #include "ek/geometry/types.hpp"
 #include "ek/mechanics/loads.hpp"
-#include "ek/solver/newton.hpp"
-#include "ek/solver/objective.hpp"
+#include "ek/optim/newton.hpp"
+#include "ek/optim/objective.hpp"
 #include "ek/solver/relax.hpp"
 
 namespace ek {

@@ -55,7 +55,7 @@
 
 #include "ek/contact/contact_potential.hpp"
 #include "ek/geometry/types.hpp"
-#include "ek/solver/objective.hpp"
+#include "ek/optim/objective.hpp"
 #include "ek/solver/relax.hpp"
 #include "ek/solver/slab.hpp"
 

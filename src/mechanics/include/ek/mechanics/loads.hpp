@@ -19,7 +19,7 @@
 #include <string>
 
 #include "ek/geometry/types.hpp"
-#include "ek/solver/objective.hpp"
+#include "ek/optim/objective.hpp"
 
 namespace ek {
 

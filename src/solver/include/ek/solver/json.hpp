@@ -6,8 +6,8 @@
 #include <string>
 
 #include "ek/core/json.hpp"
+#include "ek/optim/newton.hpp"
 #include "ek/solver/energy.hpp"
-#include "ek/solver/newton.hpp"
 #include "ek/solver/relax.hpp"
 
 namespace ek {

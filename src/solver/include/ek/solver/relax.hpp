@@ -23,8 +23,8 @@
 #include "ek/geometry/types.hpp"
 #include "ek/knots/invariants.hpp"
 #include "ek/knots/polynomial.hpp"
+#include "ek/optim/newton.hpp"
 #include "ek/rod/elastic_rod.hpp"
-#include "ek/solver/newton.hpp"
 #include "ek/solver/slab.hpp"
 
 namespace ek {

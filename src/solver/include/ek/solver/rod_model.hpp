@@ -27,9 +27,9 @@
 #include "ek/contact/contact_potential.hpp"
 #include "ek/geometry/link.hpp"
 #include "ek/geometry/types.hpp"
+#include "ek/optim/newton.hpp"
+#include "ek/optim/objective.hpp"
 #include "ek/rod/elastic_rod.hpp"
-#include "ek/solver/newton.hpp"
-#include "ek/solver/objective.hpp"
 #include "ek/solver/relax.hpp"
 #include "ek/solver/slab.hpp"
 

@@ -16,8 +16,8 @@
 #include <vector>
 
 #include "ek/contact/contact_potential.hpp"
+#include "ek/optim/objective.hpp"
 #include "ek/rod/elastic_rod.hpp"
-#include "ek/solver/objective.hpp"
 #include "ek/solver/slab.hpp"
 
 namespace ek {

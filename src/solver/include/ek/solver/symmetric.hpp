@@ -29,8 +29,8 @@
 
 #include "ek/core/sparse_assembler.hpp"
 #include "ek/geometry/types.hpp"
-#include "ek/solver/newton.hpp"
-#include "ek/solver/objective.hpp"
+#include "ek/optim/newton.hpp"
+#include "ek/optim/objective.hpp"
 #include "ek/solver/relax.hpp"
 
 namespace ek {

@@ -28,7 +28,7 @@
 #include <string>
 #include <vector>
 
-#include "ek/solver/newton.hpp"
+#include "ek/optim/newton.hpp"
 
 namespace ek {
 

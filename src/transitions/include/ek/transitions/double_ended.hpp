@@ -50,7 +50,7 @@
 ///     from the inside point along the step to the outside one; (b) the
 ///     chain's highest interior local maxima of E, along its tangent
 ///     x_{i+1} − x_{i−1}; `seeds` in all. From each, search_saddle()
-///     (ek/solver/saddle.hpp) follows the mode closest to the given
+///     (ek/optim/saddle.hpp) follows the mode closest to the given
 ///     direction; a converged search gets saddles.hpp's checks 1-3 and 5
 ///     (gradient, exactly one negative and no near-zero eigenvalue, two
 ///     converged-stable descents from x_s ± δ·v₁, the topology kept), and

@@ -8,7 +8,7 @@
 /// From a stable equilibrium x₀ (polished by Newton's method first), one
 /// search per soft mode and direction: for each of the `modes` lowest
 /// eigenpairs (λ_k, v_k) of H(x₀) without its rigid modes, search_saddle()
-/// (ek/solver/saddle.hpp) along +v_k and −v_k. A converged search yields a
+/// (ek/optim/saddle.hpp) along +v_k and −v_k. A converged search yields a
 /// saddle x_s only when it passes every check:
 ///   1. ||∇E(x_s)||₂ <= the solver's tolerance (relax()'s gradient tolerance);
 ///   2. exactly one eigenvalue of H(x_s) without its rigid modes below
@@ -35,8 +35,8 @@
 
 #include "ek/geometry/types.hpp"
 #include "ek/knots/polynomial.hpp"
+#include "ek/optim/saddle.hpp"
 #include "ek/solver/relax.hpp"
-#include "ek/solver/saddle.hpp"
 #include "ek/transitions/status.hpp"
 
 namespace ek {

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "ek/solver/newton.hpp"
-#include "ek/solver/saddle.hpp"
+#include "ek/optim/newton.hpp"
+#include "ek/optim/saddle.hpp"
 
 namespace ek {
 
@@ -17,7 +17,7 @@ namespace ek {
 /// (double_ended.hpp) ended; the text of each value follows its name.
 enum class SearchOutcome {
   Verified,           ///< "verified": a saddle that passed every check
-  // the saddle search stopped (search_saddle(), ek/solver/saddle.hpp)
+  // the saddle search stopped (search_saddle(), ek/optim/saddle.hpp)
   MaxIterations,      ///< "max-iterations": its iteration budget ran out
   Stalled,            ///< "stalled": its trust radius fell below the minimum
   LeftBasin,          ///< "left-basin": the energy rose too far above the start

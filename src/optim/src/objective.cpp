@@ -1,4 +1,4 @@
-#include "ek/solver/objective.hpp"
+#include "ek/optim/objective.hpp"
 
 #include <algorithm>
 

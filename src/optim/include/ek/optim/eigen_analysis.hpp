@@ -12,7 +12,7 @@
 #include <Eigen/SparseCore>
 #include <vector>
 
-#include "ek/geometry/types.hpp"
+#include "ek/core/types.hpp"
 
 namespace ek {
 

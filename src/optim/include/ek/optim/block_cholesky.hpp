@@ -36,7 +36,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "ek/geometry/types.hpp"
+#include "ek/core/types.hpp"
 
 namespace ek {
 

@@ -1,4 +1,4 @@
-#include "ek/solver/saddle.hpp"
+#include "ek/optim/saddle.hpp"
 
 #include <Eigen/SparseCholesky>
 #include <Spectra/SymEigsSolver.h>
@@ -10,7 +10,7 @@
 #include "ek/core/errors.hpp"
 #include "ek/core/sparse_assembler.hpp"
 #include "ek/core/stopwatch.hpp"
-#include "ek/solver/cholesky.hpp"
+#include "ek/optim/cholesky.hpp"
 #include "shift_invert.hpp"
 
 namespace ek {

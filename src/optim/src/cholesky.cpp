@@ -1,4 +1,4 @@
-#include "ek/solver/cholesky.hpp"
+#include "ek/optim/cholesky.hpp"
 
 #include <cholmod.h>
 

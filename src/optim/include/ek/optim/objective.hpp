@@ -20,7 +20,7 @@
 
 #include "ek/core/hessian_kind.hpp"
 #include "ek/core/sparse_assembler.hpp"
-#include "ek/geometry/types.hpp"
+#include "ek/core/types.hpp"
 
 namespace ek {
 

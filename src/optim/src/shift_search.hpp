@@ -19,8 +19,8 @@
 // back (CholeskySolver::recall). The rung found is the climb's.
 #include <cstdint>
 
-#include "ek/solver/cholesky.hpp"
-#include "ek/solver/newton.hpp"
+#include "ek/optim/cholesky.hpp"
+#include "ek/optim/newton.hpp"
 
 namespace ek {
 

@@ -1,4 +1,4 @@
-#include "ek/solver/block_cholesky.hpp"
+#include "ek/optim/block_cholesky.hpp"
 
 #include <amd.h>
 

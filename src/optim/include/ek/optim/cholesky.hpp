@@ -33,8 +33,8 @@
 #include <memory>
 #include <vector>
 
-#include "ek/geometry/types.hpp"
-#include "ek/solver/block_cholesky.hpp"
+#include "ek/core/types.hpp"
+#include "ek/optim/block_cholesky.hpp"
 
 namespace ek {
 

@@ -8,8 +8,8 @@
 #include <random>
 #include <vector>
 
-#include "ek/solver/eigen_analysis.hpp"
-#include "ek/solver/newton.hpp"
+#include "ek/optim/eigen_analysis.hpp"
+#include "ek/optim/newton.hpp"
 
 using namespace ek;
 

@@ -45,9 +45,9 @@
 #include <string>
 #include <vector>
 
-#include "ek/geometry/types.hpp"
-#include "ek/solver/newton.hpp"
-#include "ek/solver/objective.hpp"
+#include "ek/core/types.hpp"
+#include "ek/optim/newton.hpp"
+#include "ek/optim/objective.hpp"
 
 namespace ek {
 

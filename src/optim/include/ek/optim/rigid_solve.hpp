@@ -18,8 +18,8 @@
 #include <Eigen/SparseCore>
 #include <memory>
 
-#include "ek/geometry/types.hpp"
-#include "ek/solver/objective.hpp"
+#include "ek/core/types.hpp"
+#include "ek/optim/objective.hpp"
 
 namespace ek {
 

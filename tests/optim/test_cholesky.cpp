@@ -6,7 +6,7 @@
 #include <random>
 
 #include "ek/core/sparse_assembler.hpp"
-#include "ek/solver/cholesky.hpp"
+#include "ek/optim/cholesky.hpp"
 
 using namespace ek;
 

@@ -1,4 +1,4 @@
-#include "ek/solver/rigid_solve.hpp"
+#include "ek/optim/rigid_solve.hpp"
 
 #include <Eigen/SparseLU>
 #include <vector>

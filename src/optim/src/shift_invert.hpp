@@ -3,7 +3,7 @@
 // interface), shared by eigen_analysis.cpp and saddle.cpp.
 #include <Eigen/Dense>
 
-#include "ek/solver/cholesky.hpp"
+#include "ek/optim/cholesky.hpp"
 
 namespace ek::detail {
 

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "ek/core/sparse_assembler.hpp"
-#include "ek/solver/eigen_analysis.hpp"
+#include "ek/optim/eigen_analysis.hpp"
 
 using namespace ek;
 

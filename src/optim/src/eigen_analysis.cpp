@@ -1,11 +1,11 @@
-#include "ek/solver/eigen_analysis.hpp"
+#include "ek/optim/eigen_analysis.hpp"
 
 #include <Spectra/SymEigsSolver.h>
 
 #include <cmath>
 
 #include "ek/core/errors.hpp"
-#include "ek/solver/cholesky.hpp"
+#include "ek/optim/cholesky.hpp"
 #include "shift_invert.hpp"
 
 namespace ek {

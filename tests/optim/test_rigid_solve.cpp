@@ -2,7 +2,7 @@
 
 #include <random>
 
-#include "ek/solver/rigid_solve.hpp"
+#include "ek/optim/rigid_solve.hpp"
 
 using namespace ek;
 

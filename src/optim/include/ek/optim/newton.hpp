@@ -21,9 +21,9 @@
 #include <vector>
 
 #include "ek/core/sparse_assembler.hpp"
-#include "ek/geometry/types.hpp"
-#include "ek/solver/cholesky.hpp"
-#include "ek/solver/objective.hpp"
+#include "ek/core/types.hpp"
+#include "ek/optim/cholesky.hpp"
+#include "ek/optim/objective.hpp"
 
 namespace ek {
 

@@ -1,4 +1,4 @@
-#include "ek/solver/newton.hpp"
+#include "ek/optim/newton.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 
 #include "ek/core/errors.hpp"
 #include "ek/core/stopwatch.hpp"
-#include "ek/solver/eigen_analysis.hpp"
+#include "ek/optim/eigen_analysis.hpp"
 #include "shift_search.hpp"
 
 namespace ek {
