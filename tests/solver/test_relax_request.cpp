@@ -113,6 +113,21 @@ TEST(RelaxRequest, TopologyChangeMessage) {
   EXPECT_EQ(topology_change(r), "the Alexander polynomial changed from [1, -1, 1] to [1]");
 }
 
+// A link's message names what changed, in the order of the checks.
+TEST(RelaxRequest, LinkTopologyChangeMessage) {
+  RelaxResult r;
+  r.link_type = LinkType{};
+  EXPECT_EQ(topology_change(r), "");
+  r.linking_preserved = false;
+  EXPECT_EQ(topology_change(r), "a linking number of the link changed");
+  EXPECT_EQ(r.status(), RelaxStatus::TopologyChanged);
+  r.conway_preserved = false;
+  EXPECT_EQ(topology_change(r), "a linking number and the Conway polynomial of the link changed");
+  r.alexander_preserved = false;
+  EXPECT_EQ(topology_change(r),
+            "a component's Alexander polynomial, a linking number and the Conway polynomial of the link changed");
+}
+
 // A regular n-gon of unit edges: every turning angle is 2π/n, so
 // E_bend = n · EI/2 · (2 tan(π/n))² / 1, and nothing else (no stretching,
 // no contact, twist-free).

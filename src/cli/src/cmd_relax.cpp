@@ -78,7 +78,7 @@ Json result_json(const RelaxCommand& c, const RelaxResult& r) {
   Json j;
   j["file"] = c.file;
   j.update(relax_json(r, c.request.method));
-  if (!c.out.empty() && r.alexander_preserved) j["output"] = c.out;
+  if (!c.out.empty() && r.topology_preserved()) j["output"] = c.out;
   if (!c.trace.empty()) j["trace"] = c.trace;
   return j;
 }
@@ -96,7 +96,7 @@ void print_result(const RelaxCommand& c, const RelaxResult& r) {
             << "Alexander:    " << r.result_alexander.to_string()
             << (r.alexander_preserved ? " (preserved)" : " (CHANGED: the result is rejected)") << "\n";
   if (r.smallest_eigenvalue) std::cout << "smallest eigenvalue: " << fmt(*r.smallest_eigenvalue) << "\n";
-  if (!c.out.empty() && r.alexander_preserved) std::cout << "wrote " << c.out << "\n";
+  if (!c.out.empty() && r.topology_preserved()) std::cout << "wrote " << c.out << "\n";
 }
 
 /// The JSON keys of `knots relax` on a link (docs/cli.md).
@@ -104,41 +104,30 @@ Json link_result_json(const RelaxCommand& c, const RelaxResult& r) {
   Json j;
   j["file"] = c.file;
   j.update(link_relax_json(r));
-  if (!c.out.empty() && r.status() != RelaxStatus::TopologyChanged) j["output"] = c.out;
+  if (!c.out.empty() && r.topology_preserved()) j["output"] = c.out;
   return j;
 }
 
-/// `knots relax` on a link of several components: relax() of the link (the
-/// twist-free model, Newton at n with the method's Newton settings).
-int relax_link_file(const RelaxCommand& c, const Link& link) {
+/// The options of `knots relax` that a link of several components does not have (InputError).
+void check_link_request(const RelaxCommand& c, const Link& link) {
   const RelaxRequest& q = c.request;
   if (q.link || q.planar || q.release || q.full_model || q.eigen || q.stop_at_saddle || !c.trace.empty())
     throw InputError("--link, --planar, --release, --full-model, --eigen, --stop-at-saddle and --trace apply to a "
                      "knot, not to a link of " + std::to_string(link.size()) + " components");
-  const RelaxResult r = relax(link, q.options());
+}
+
+void print_link_result(const RelaxCommand& c, const RelaxResult& r) {
   const bool kept = r.topology_preserved();
-  if (!c.out.empty() && kept) write_link(c.out, r.components());
-  if (c.json) {
-    print_json(link_result_json(c, r));
-  } else {
-    std::cout << "components:   " << link.size() << "\n"
-              << "status:       " << r.status() << " (" << r.report.iterations << " iterations, "
-              << fmt(r.report.seconds, 4) << " s)\n"
-              << "energy:       " << fmt(r.energy.total) << "\n"
-              << "gradient:     " << fmt(r.report.gradient_norm, 4) << "\n"
-              << "closest:      " << fmt(r.min_distance, 6) << "\n"
-              << "topology:     " << (kept ? "every component's Alexander polynomial, every linking number and the Conway polynomial kept"
-                                           : "CHANGED: the result is rejected")
-              << "\n";
-    if (!c.out.empty() && kept) std::cout << "wrote " << c.out << "\n";
-  }
-  if (!kept) {
-    std::cerr << "knots relax: topology error: a component's Alexander polynomial or a linking number changed; "
-                 "no output written"
-              << std::endl;
-    return 1;
-  }
-  return r.converged() ? 0 : 1;
+  std::cout << "components:   " << r.component_sizes.size() << "\n"
+            << "status:       " << r.status() << " (" << r.report.iterations << " iterations, "
+            << fmt(r.report.seconds, 4) << " s)\n"
+            << "energy:       " << fmt(r.energy.total) << "\n"
+            << "gradient:     " << fmt(r.report.gradient_norm, 4) << "\n"
+            << "closest:      " << fmt(r.min_distance, 6) << "\n"
+            << "topology:     " << (kept ? "every component's Alexander polynomial, every linking number and the Conway polynomial kept"
+                                         : "CHANGED: the result is rejected")
+            << "\n";
+  if (!c.out.empty() && kept) std::cout << "wrote " << c.out << "\n";
 }
 
 }  // namespace
@@ -148,15 +137,17 @@ int cmd_relax(int argc, char** argv) {
   if (!parse_relax(argc, argv, c)) return 0;
   if (!c.out.empty()) check_writable(c.out);
   const Link link = read_link(c.file);  // a curve file is a link of one component
-  if (link.size() > 1) return relax_link_file(c, link);
-  const RelaxOptions opt = c.request.options();
+  const bool several = link.size() > 1;
+  if (several) check_link_request(c, link);
   if (!c.trace.empty()) check_writable(c.trace);
-  const RelaxResult r = relax(link.front(), opt);
-  if (!c.out.empty() && r.alexander_preserved) write_curve(c.out, r.positions);
+  const RelaxResult r = relax(link, c.request.options());
+  const bool kept = r.topology_preserved();
+  if (!c.out.empty() && kept) write_link(c.out, r.components());  // one component: as write_curve()
   if (!c.trace.empty()) write_trace_file(c.trace, r);
-  if (c.json) print_json(result_json(c, r));
+  if (c.json) print_json(several ? link_result_json(c, r) : result_json(c, r));
+  else if (several) print_link_result(c, r);
   else print_result(c, r);
-  if (!r.alexander_preserved) {
+  if (!kept) {
     std::cerr << "knots relax: topology error: " << topology_change(r) << "; no output written" << std::endl;
     return 1;
   }

@@ -43,8 +43,7 @@ Result relax_link_components(const py::list& components, const RelaxRequest& req
     py::gil_scoped_release release;
     r = relax(link, request.options());
   }
-  if (r.status() == RelaxStatus::TopologyChanged)
-    throw TopologyError("relax: a component's Alexander polynomial or a linking number changed");
+  if (const std::string change = topology_change(r); !change.empty()) throw TopologyError("relax: " + change);
   if (output) write_link(*output, r.components());
   Result result = result_from_json(link_relax_json(r), "relax_link");
   if (output) result.fields["output"] = *output;

@@ -38,8 +38,21 @@ RelaxOptions RelaxRequest::options() const {
 }
 
 std::string topology_change(const RelaxResult& r) {
-  if (r.alexander_preserved) return "";
-  return "the Alexander polynomial changed from " + r.alexander.to_string() + " to " + r.result_alexander.to_string();
+  if (r.topology_preserved()) return "";
+  if (!r.link_type)
+    return "the Alexander polynomial changed from " + r.alexander.to_string() + " to " + r.result_alexander.to_string();
+  std::string changed;  // "a, b and c"
+  const std::pair<bool, const char*> parts[] = {{!r.alexander_preserved, "a component's Alexander polynomial"},
+                                                {!r.linking_preserved, "a linking number"},
+                                                {!r.conway_preserved, "the Conway polynomial"}};
+  int count = 0;
+  for (const auto& [differs, what] : parts) count += differs;
+  for (const auto& [differs, what] : parts) {
+    if (!differs) continue;
+    changed += changed.empty() ? "" : --count == 1 ? " and " : ", ";
+    changed += what;
+  }
+  return changed + " of the link changed";
 }
 
 void write_trace_file(const std::string& path, const RelaxResult& r) {

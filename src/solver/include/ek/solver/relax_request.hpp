@@ -41,9 +41,10 @@ struct RelaxRequest {
   RelaxOptions options() const;
 };
 
-/// Empty when the result kept the input's knot type; otherwise one line,
-/// "the Alexander polynomial changed from [..] to [..]" (a topology error:
-/// the result must not be used).
+/// Empty when the result kept the input's knot or link type; otherwise one
+/// line (a topology error: the result must not be used): for a knot "the
+/// Alexander polynomial changed from [..] to [..]", for a link what changed,
+/// e.g. "a linking number and the Conway polynomial of the link changed".
 std::string topology_change(const RelaxResult& result);
 
 /// Writes the result's iteration trace (RelaxRequest::trace) as CSV
