@@ -41,7 +41,7 @@ ek::KnotEntry random_entry(const std::string& name, int m, int n, std::mt19937_6
     ek::RunRecord run;
     run.sample = r;
     run.equilibrium = r;
-    run.status = "converged-stable";
+    run.status = ek::RunStatus::ConvergedStable;
     k.runs.push_back(run);
   }
   k.similarity = Eigen::MatrixXd::Identity(m, m);
