@@ -45,7 +45,7 @@ bool same_runs(const std::vector<ek::RunRecord>& a, const std::vector<ek::RunRec
     if (x.sample != y.sample || x.seed != y.seed || x.status != y.status || x.equilibrium != y.equilibrium ||
         x.iterations != y.iterations || x.seconds != y.seconds || x.energy != y.energy ||
         x.gradient_norm != y.gradient_norm || x.contacts != y.contacts ||
-        x.alexander_preserved != y.alexander_preserved || x.message != y.message)
+        x.topology_preserved != y.topology_preserved || x.message != y.message)
       return false;
   }
   return true;

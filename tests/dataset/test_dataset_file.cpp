@@ -604,3 +604,55 @@ TEST(DatasetFile, ShapesAndTypesAreChecked) {
   }, "dataset 'equilibria' is damaged");
   std::remove(path.c_str());
 }
+
+// A file of format version 1 reads as version 2: its runs' column
+// alexander_preserved is topology_preserved, and a link's `energy` (then the
+// elastic energy without contact) gains energy_contact, a knot's unchanged.
+// Versions outside 1..2 are refused.
+TEST(DatasetFile, VersionOneFilesReadAsVersionTwo) {
+  const std::string path = ::testing::TempDir() + "version1.h5";
+  KnotEntry link = sample_entry("L2a1", 2, 20);
+  link.components = {10, 10};
+  link.conway = {0, 1};
+  link.linking_numbers = {0, 1, 1, 0};
+  link.alexander = {1};
+  link.attribute_names = {"energy", "energy_contact", "writhe"};
+  link.attributes.resize(2, 3);
+  link.attributes << 1.0, 0.25, 0.5, 2.0, 0.125, -0.5;
+  link.runs[1].topology_preserved = false;
+  {
+    DatasetWriter w(path, complete_metadata());
+    w.add(sample_entry("3_1", 2, 20));
+    w.add(link);
+    w.commit();
+  }
+  const auto version = [&](long long v) {
+    edit_file(path, [&](hid_t f) {
+      H5Adelete(f, "format_version");
+      write_int_attribute(f, "format_version", v);
+    });
+  };
+  version(1);
+  edit_file(path, [](hid_t f) {
+    for (const char* knot : {"knots/3_1/runs/", "knots/L2a1/runs/"}) {
+      const std::string from = std::string(knot) + "topology_preserved", to = std::string(knot) + "alexander_preserved";
+      ASSERT_GE(H5Lmove(f, from.c_str(), f, to.c_str(), H5P_DEFAULT, H5P_DEFAULT), 0);
+    }
+  });
+  {
+    const DatasetReader r(path);
+    const KnotEntry k = r.read("3_1"), l = r.read("L2a1");
+    EXPECT_TRUE(k.attributes == sample_entry("3_1", 2, 20).attributes);
+    EXPECT_EQ(l.attributes(0, 0), 1.25);
+    EXPECT_EQ(l.attributes(1, 0), 2.125);
+    EXPECT_EQ(l.attributes(1, 2), -0.5);
+    ASSERT_EQ(l.runs.size(), 3u);
+    EXPECT_TRUE(l.runs[0].topology_preserved);
+    EXPECT_FALSE(l.runs[1].topology_preserved);
+  }
+  for (const long long v : {0LL, 3LL}) {
+    version(v);
+    expect_refused([&] { DatasetReader r(path); }, "format version " + std::to_string(v) + ", expected 1 to 2");
+  }
+  std::filesystem::remove(path);
+}

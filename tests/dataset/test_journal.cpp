@@ -3,11 +3,13 @@
 #include <gtest/gtest.h>
 #include <zlib.h>
 
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
 
 #include "ek/core/errors.hpp"
+#include "first_layout.hpp"
 #include "journal.hpp"
 #include "testing.hpp"
 
@@ -103,6 +105,38 @@ TEST(Journal, DamagedRecordsEndTheJournal) {
 
 // A header cut short (killed while creating the journal) is an empty journal;
 // another run's journal, or another file, is refused with one line.
+// A run keeps its link and min_distance through the journal; a record of
+// the first layout (magic "RUN1", without min_distance) is read with its
+// slot as `link`, min_distance NaN and first_layout set, the rest the same.
+TEST(Journal, RecordsOfTheFirstLayoutAreRead) {
+  const std::string path = ::testing::TempDir() + "layouts.journal";
+  std::filesystem::remove(path);
+  JournalRun a = run(0, true);
+  a.link = 1.5;
+  a.min_distance = 0.25;
+  a.energy.contact = 0.125;
+  {
+    Journal j(path, kOptions);
+    j.append(a);
+  }
+  std::ifstream in(path, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), {});
+  std::filesystem::remove(path);
+  const std::string head = journal_head(kOptions);
+  const JournalRun now = parse_journal(bytes, head, path).runs.at(0);
+  EXPECT_EQ(now.link, 1.5);
+  EXPECT_EQ(now.min_distance, 0.25);
+  EXPECT_FALSE(now.first_layout);
+  const JournalRun first = parse_journal(testing_journal::to_first_layout(bytes, head.size(), false), head, path).runs.at(0);
+  EXPECT_TRUE(first.first_layout);
+  EXPECT_EQ(first.link, 1.5);
+  EXPECT_TRUE(std::isnan(first.min_distance));
+  EXPECT_EQ(first.energy.total, a.energy.total);
+  EXPECT_EQ(first.energy.contact, a.energy.contact);
+  EXPECT_TRUE(first.positions == a.positions);
+  EXPECT_EQ(first.record.status, a.record.status);
+}
+
 TEST(Journal, HeaderChecks) {
   const std::string head = journal_head(kOptions);
   EXPECT_EQ(parse_journal(head.substr(0, 10), head, "j").good, 0u);

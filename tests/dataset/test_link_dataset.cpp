@@ -8,12 +8,15 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 #include "cli_runner.hpp"
 #include "ek/dataset/dataset_file.hpp"
 #include "ek/dataset/pipeline.hpp"
 #include "ek/knots/invariants.hpp"
 #include "ek/knots/link_table.hpp"
+#include "first_layout.hpp"
 #include "testing.hpp"
 
 using namespace ek;
@@ -44,16 +47,17 @@ TEST(LinkDataset, BorromeanEntryHoldsTheLinkTypeAndReadsBack) {
   EXPECT_EQ(e.attribute_names, link_attribute_names());
   ASSERT_EQ(e.runs.size(), 4u);
   ASSERT_GE(e.equilibria.size(), 3u);  // measured: 4 of 4 converged-stable
-  for (const RunRecord& r : e.runs) EXPECT_TRUE(r.alexander_preserved) << r.status;
+  for (const RunRecord& r : e.runs) EXPECT_TRUE(r.topology_preserved) << r.status;
   for (int i = 0; i < static_cast<int>(e.equilibria.size()); ++i) {
     const LinkType t = link_type(e.equilibrium_link(i));  // an independent check of the stored curve
     EXPECT_EQ(t.conway.coefficients, b.conway.coefficients) << i;
     EXPECT_EQ(t.linking_numbers, b.linking_matrix()) << i;
   }
-  // the energy column is E_rod (stretch + bend), contact apart
+  // the energy column is the total E_rod + ω E_contact, as a knot's
   const int ec = e.attribute_column("energy"), sc = e.attribute_column("energy_stretch"),
-            bc = e.attribute_column("energy_bend");
-  EXPECT_NEAR(e.attributes(0, ec), e.attributes(0, sc) + e.attributes(0, bc), 1e-12);
+            bc = e.attribute_column("energy_bend"), cc = e.attribute_column("energy_contact");
+  EXPECT_NEAR(e.attributes(0, ec), e.attributes(0, sc) + e.attributes(0, bc) + e.attributes(0, cc), 1e-12);
+  EXPECT_EQ(e.runs[0].energy, e.attributes(0, ec));  // the run's energy is the same total
   EXPECT_GT(e.attributes(0, e.attribute_column("min_distance")), 0.0);
   // similarity: 1 on the diagonal, 1 − d off it, one cluster at the link cut
   const auto m = static_cast<Eigen::Index>(e.equilibria.size());
@@ -76,6 +80,35 @@ TEST(LinkDataset, BorromeanEntryHoldsTheLinkTypeAndReadsBack) {
   ASSERT_EQ(back.equilibrium_link(0).size(), 3u);
   EXPECT_EQ(back.equilibrium_link(0)[2], e.equilibrium_link(0)[2]);
   fs::remove_all(dir);
+}
+
+// A journal begun before its second record layout (one slot for a link's
+// closest approach, the energy total without contact) resumes to the entry
+// a run from scratch gives: the same runs and, to the bit, the same
+// attributes, none relaxed again.
+TEST(LinkDataset, AJournalOfTheFirstLayoutResumesToTheSameEntry) {
+  const std::string journal = ::testing::TempDir() + "borromean_first_layout.journal";
+  fs::remove(journal);
+  const ExploreOptions o = link_options(2, 180);
+  const KnotEntry fresh = explore_link(*find_link("borromean"), o, journal);
+  ASSERT_GT(fresh.attributes.col(fresh.attribute_column("energy_contact")).maxCoeff(), 0.0);  // in contact
+  std::string bytes;
+  {
+    std::ifstream in(journal, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  const size_t head = bytes.find('\n', bytes.find('\n') + 1) + 1;  // the header line and the options line
+  {
+    std::ofstream out(journal, std::ios::binary | std::ios::trunc);
+    out << testing_journal::to_first_layout(bytes, head, true);
+  }
+  int relaxed = 0;
+  const KnotEntry resumed = explore_link(*find_link("borromean"), o, journal, [&](const RunRecord&) { ++relaxed; });
+  EXPECT_EQ(relaxed, 0);
+  ASSERT_EQ(resumed.runs.size(), fresh.runs.size());
+  for (size_t k = 0; k < fresh.runs.size(); ++k) EXPECT_EQ(resumed.runs[k].energy, fresh.runs[k].energy);
+  EXPECT_TRUE(resumed.attributes == fresh.attributes);
+  fs::remove(journal);
 }
 
 TEST(LinkDataset, HopfLinkRingsAreOneState) {

@@ -117,7 +117,7 @@ TEST(Pipeline, ExploreKnotStoresRunsEquilibriaAndClusters) {
   EXPECT_EQ(e.alexander, alexander(*k.pd).coefficients);
   int stable = 0;
   for (const auto& r : e.runs) {
-    EXPECT_TRUE(r.alexander_preserved);
+    EXPECT_TRUE(r.topology_preserved);
     if (r.status == RunStatus::ConvergedStable) {
       ASSERT_GE(r.equilibrium, 0);
       ++stable;

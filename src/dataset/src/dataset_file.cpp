@@ -27,10 +27,14 @@ namespace ek {
 namespace {
 
 constexpr const char* kFormat = "elastic-knots-dataset";
-/// Attributes added since the first version-1 files are optional: the table
+/// Attributes added since the first files are optional: the table
 /// (metadata.hpp) says what a file without them reads as, and older readers
-/// ignore them, so the version stays 1.
-constexpr std::int64_t kFormatVersion = 1;
+/// ignore them. Version 2 renamed the runs' column alexander_preserved to
+/// topology_preserved and made a link's attribute `energy` the total with
+/// contact, as a knot's; version 1 files are read as version 2 (the file
+/// comment of dataset_file.hpp).
+constexpr std::int64_t kFormatVersion = 2;
+constexpr std::int64_t kOldestFormatVersion = 1;
 
 void write_value(hid_t f, const std::string& name, const FieldValue& v) {
   if (const auto* x = std::get_if<double>(&v)) h5::set_attr(f, name, *x);
@@ -163,13 +167,19 @@ void write_meta(hid_t f, const DatasetMetadata& m) {
   detail::write_parameters(f, m);
 }
 
-DatasetMetadata read_meta(hid_t f, const std::string& path) {
+/// The file's format version after checking it is one this reader reads.
+std::int64_t read_version(hid_t f, const std::string& path) {
   if (!h5::has_attr(f, "format") || h5::get_attr_string(f, "format") != kFormat)
     throw InputError("'" + path + "' is an HDF5 file but not an elastic-knots data set");
   const auto version = h5::get_attr_int(f, "format_version");
-  if (version != kFormatVersion)
+  if (version < kOldestFormatVersion || version > kFormatVersion)
     throw InputError("'" + path + "' has data-set format version " + std::to_string(version) + ", expected " +
-                     std::to_string(kFormatVersion));
+                     std::to_string(kOldestFormatVersion) + " to " + std::to_string(kFormatVersion));
+  return version;
+}
+
+DatasetMetadata read_meta(hid_t f, const std::string& path) {
+  read_version(f, path);
   return detail::read_parameters(f, path);
 }
 
@@ -181,6 +191,9 @@ struct RunIntColumn {
   const char* name;
   std::int64_t (*get)(const RunRecord&);
   void (*set)(RunRecord&, std::int64_t);
+  const char* first_name = nullptr;  ///< its name in version 1 files, when another
+  /// The name in a file of format `version`.
+  const char* name_in(std::int64_t version) const { return version < 2 && first_name ? first_name : name; }
 };
 struct RunRealColumn {
   const char* name;
@@ -202,8 +215,8 @@ const RunIntColumn kRunIntColumns[] = {
      [](RunRecord& r, std::int64_t v) { r.iterations = static_cast<int>(v); }},
     {"contacts", [](const RunRecord& r) -> std::int64_t { return r.contacts; },
      [](RunRecord& r, std::int64_t v) { r.contacts = static_cast<int>(v); }},
-    {"alexander_preserved", [](const RunRecord& r) -> std::int64_t { return r.alexander_preserved ? 1 : 0; },
-     [](RunRecord& r, std::int64_t v) { r.alexander_preserved = v != 0; }},
+    {"topology_preserved", [](const RunRecord& r) -> std::int64_t { return r.topology_preserved ? 1 : 0; },
+     [](RunRecord& r, std::int64_t v) { r.topology_preserved = v != 0; }, "alexander_preserved"},
 };
 const RunRealColumn kRunRealColumns[] = {
     {"seconds", &RunRecord::seconds}, {"energy", &RunRecord::energy}, {"gradient_norm", &RunRecord::gradient_norm}};
@@ -336,8 +349,9 @@ using RowMajor = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::Ro
 /// a damaged file is an InputError rather than a wrong or out-of-bounds read.
 class KnotGroupReader {
  public:
-  KnotGroupReader(hid_t group, std::string path, std::string name)
-      : id_(group), path_(std::move(path)), name_(std::move(name)) {}
+  /// The group `group` of a file of format `version`.
+  KnotGroupReader(hid_t group, std::string path, std::string name, std::int64_t version)
+      : id_(group), path_(std::move(path)), name_(std::move(name)), version_(version) {}
 
   [[noreturn]] void damaged(const std::string& what) const {
     throw InputError("data set '" + path_ + "': knot " + name_ + " is damaged (" + what + ")");
@@ -378,7 +392,7 @@ class KnotGroupReader {
       if (count != out.size()) damaged("the columns of runs/ have different lengths");
     };
     for (const RunIntColumn& c : kRunIntColumns) {
-      const auto v = h5::read_int64(g.id(), c.name);
+      const auto v = h5::read_int64(g.id(), c.name_in(version_));
       rows(v.size());
       for (size_t k = 0; k < v.size(); ++k) c.set(out[k], v[k]);
     }
@@ -408,6 +422,7 @@ class KnotGroupReader {
     k.attributes = matrix("attributes");
     if (k.attributes.rows() != m || k.attributes.cols() != static_cast<Eigen::Index>(k.attribute_names.size()))
       damaged("the attribute table is not one row per equilibrium and one column per name");
+    if (version_ < 2 && k.is_link()) add_contact_to_energy(k);
     k.runs = runs(k.equilibria.size());
     k.similarity = matrix("similarity");
     if (k.similarity.size() != 0 && (k.similarity.rows() != m || k.similarity.cols() != m))
@@ -421,8 +436,19 @@ class KnotGroupReader {
   }
 
  private:
+  /// A version 1 link's `energy` column (without contact) made the total.
+  static void add_contact_to_energy(KnotEntry& k) {
+    const auto column = [&k](const char* name) {
+      const auto it = std::find(k.attribute_names.begin(), k.attribute_names.end(), name);
+      return it == k.attribute_names.end() ? -1 : static_cast<int>(it - k.attribute_names.begin());
+    };
+    const int energy = column("energy"), contact = column("energy_contact");
+    if (energy >= 0 && contact >= 0) k.attributes.col(energy) += k.attributes.col(contact);
+  }
+
   hid_t id_;
   std::string path_, name_;
+  std::int64_t version_;
 };
 
 /// Runs `read`; an InputError that does not name the file (one of the HDF5
@@ -445,15 +471,17 @@ auto naming_the_file(const std::string& path, const std::string& knot, F&& read)
   int status = 0;
   try {
     h5::Handle f = h5::open_file(path, false);
+    std::int64_t version = 0;
     const auto names = naming_the_file(path, "", [&] {
       read_meta(f.id(), path);
+      version = read_version(f.id(), path);
       return h5::read_strings(f.id(), "knot_names");
     });
     h5::Handle knots = naming_the_file(path, "", [&] { return h5::open_group(f.id(), "knots"); });
     for (const auto& name : names)
       naming_the_file(path, name, [&] {
         h5::Handle g = h5::open_group(knots.id(), name);
-        return KnotGroupReader(g.id(), path, name).read();
+        return KnotGroupReader(g.id(), path, name, version).read();
       });
   } catch (const InputError& e) {
     const std::string message = std::string(e.what()).substr(0, 4096);  // fits the pipe: no blocking
@@ -534,6 +562,7 @@ void detail::set_child_read_limit(double base, double per_10_mb) {
 struct DatasetReader::Impl {
   std::string path;
   h5::Handle file;
+  std::int64_t version = 0;  ///< the file's format version
   DatasetMetadata meta;
   std::vector<std::string> names;
 };
@@ -545,6 +574,7 @@ DatasetReader::DatasetReader(const std::string& path) : impl_(new Impl) {
   impl_->file = h5::open_file(path, false);
   naming_the_file(path, "", [&] {
     impl_->meta = read_meta(impl_->file.id(), path);
+    impl_->version = read_version(impl_->file.id(), path);
     impl_->names = h5::read_strings(impl_->file.id(), "knot_names");
     return 0;
   });
@@ -563,7 +593,7 @@ KnotEntry DatasetReader::read(const std::string& name) const {
   return naming_the_file(impl_->path, name, [&] {
     h5::Handle knots = h5::open_group(impl_->file.id(), "knots");
     h5::Handle g = h5::open_group(knots.id(), name);
-    return KnotGroupReader(g.id(), impl_->path, name).read();
+    return KnotGroupReader(g.id(), impl_->path, name, impl_->version).read();
   });
 }
 

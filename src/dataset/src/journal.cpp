@@ -17,7 +17,8 @@
 namespace ek {
 namespace {
 
-constexpr std::uint32_t kMagic = 0x314E5552;  // "RUN1"
+constexpr std::uint32_t kMagic = 0x324E5552;       // "RUN2": records with link and min_distance
+constexpr std::uint32_t kFirstMagic = 0x314E5552;  // "RUN1": read, never written (JournalRun::first_layout)
 const std::string kHeader = "elastic-knots-journal 1\n";
 
 class Writer {
@@ -72,20 +73,22 @@ std::vector<char> encode(const JournalRun& r) {
   w.put(r.record.energy);
   w.put(r.record.gradient_norm);
   w.put(static_cast<std::int32_t>(r.record.contacts));
-  w.put(static_cast<std::int32_t>(r.record.alexander_preserved ? 1 : 0));
+  w.put(static_cast<std::int32_t>(r.record.topology_preserved ? 1 : 0));
   w.str(r.record.message);
   for (double e : {r.energy.total, r.energy.stretch, r.energy.bend, r.energy.twist, r.energy.contact, r.energy.slab})
     w.put(e);
   w.put(r.stiffness);
   w.put(r.link);
+  w.put(r.min_distance);
   w.put(static_cast<std::int32_t>(r.positions.rows()));
   for (Eigen::Index k = 0; k < r.positions.size(); ++k) w.put(r.positions.data()[k]);
   return w.buf;
 }
 
-JournalRun decode(const char* p, size_t n) {
+JournalRun decode(const char* p, size_t n, bool first_layout) {
   Reader rd(p, n);
   JournalRun r;
+  r.first_layout = first_layout;
   r.record.sample = rd.get<std::int32_t>();
   r.record.seed = rd.get<std::uint64_t>();
   try {
@@ -99,7 +102,7 @@ JournalRun decode(const char* p, size_t n) {
   r.record.energy = rd.get<double>();
   r.record.gradient_norm = rd.get<double>();
   r.record.contacts = rd.get<std::int32_t>();
-  r.record.alexander_preserved = rd.get<std::int32_t>() != 0;
+  r.record.topology_preserved = rd.get<std::int32_t>() != 0;
   r.record.message = rd.str();
   r.energy.total = rd.get<double>();
   r.energy.stretch = rd.get<double>();
@@ -109,6 +112,7 @@ JournalRun decode(const char* p, size_t n) {
   r.energy.slab = rd.get<double>();
   r.stiffness = rd.get<double>();
   r.link = rd.get<double>();
+  r.min_distance = first_layout ? std::nan("") : rd.get<double>();
   const auto rows = rd.get<std::int32_t>();
   if (rows < 0 || static_cast<size_t>(rows) > rd.left() / (3 * sizeof(double))) throw std::runtime_error("bad record");
   r.positions.resize(rows, 3);
@@ -148,13 +152,13 @@ JournalContents parse_journal(const std::string& data, const std::string& head, 
     std::uint32_t magic, len, crc;
     std::memcpy(&magic, data.data() + pos, 4);
     std::memcpy(&len, data.data() + pos + 4, 4);
-    if (magic != kMagic || len > data.size() - pos - 12) break;
+    if ((magic != kMagic && magic != kFirstMagic) || len > data.size() - pos - 12) break;
     std::memcpy(&crc, data.data() + pos + 8 + len, 4);
     const auto actual = static_cast<std::uint32_t>(
         ::crc32(0L, reinterpret_cast<const Bytef*>(data.data() + pos + 8), static_cast<uInt>(len)));
     if (crc != actual) break;
     try {
-      JournalRun r = decode(data.data() + pos + 8, len);
+      JournalRun r = decode(data.data() + pos + 8, len, magic == kFirstMagic);
       out.runs[r.record.sample] = std::move(r);
     } catch (const std::runtime_error&) {
       break;

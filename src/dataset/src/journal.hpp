@@ -3,8 +3,10 @@
 // interrupted run loses no completed equilibrium (crash safety).
 //
 // File: the header line "elastic-knots-journal 1\n", the options text and
-// '\n', then records: u32 magic 0x314E5552 ("RUN1"), u32 payload length,
-// payload, u32 CRC-32 (zlib) of the payload. Each record is written with one
+// '\n', then records: u32 magic 0x324E5552 ("RUN2"), u32 payload length,
+// payload, u32 CRC-32 (zlib) of the payload. Records of the first layout
+// (magic "RUN1", without min_distance) are read too, so that a journal
+// begun before is resumed (JournalRun::first_layout). Each record is written with one
 // write(2) and fsync(2). A torn record at the end (killed mid-write) fails its
 // length or CRC check and is ignored, and the file is truncated to the last
 // good record before appending.
@@ -20,9 +22,14 @@ namespace ek {
 struct JournalRun {
   RunRecord record;
   Points positions;            // empty when no equilibrium is stored
-  EnergyParts energy;
+  EnergyParts energy;          // [energy] total = stretch + bend + twist + contact + slab
   double stiffness = 0.0;      // NaN when not computed
-  double link = 0.0;
+  double link = 0.0;           // [1] Lk of a knot's result; NaN for a link
+  double min_distance = 0.0;   // [length] closest approach of two edges sharing no vertex
+  /// Decoded from a record of the first layout (magic "RUN1"), which had one
+  /// slot for `link` and min_distance: a knot's Lk or a link's closest
+  /// approach, and a link's energy.total without the contact part.
+  bool first_layout = false;
 };
 
 /// What a journal file holds: the runs of its intact records, by sample, and

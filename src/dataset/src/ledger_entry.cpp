@@ -16,7 +16,7 @@ LedgerEntry ledger_entry(const KnotEntry& k, double cut, int curves_per_knot) {
   LedgerEntry e;
   static_cast<KnotHeader&>(e) = k;
   for (const RunRecord& r : k.runs)
-    e.runs.push_back({r.sample, r.status, r.equilibrium, r.iterations, r.seconds, r.alexander_preserved});
+    e.runs.push_back({r.sample, r.status, r.equilibrium, r.iterations, r.seconds, r.topology_preserved});
   e.attribute_names = k.attribute_names;
   e.attributes = k.attributes;
   e.linkage = k.linkage;

@@ -19,6 +19,7 @@
 #include "ek/knots/alexander.hpp"
 #include "ek/knots/invariants.hpp"
 #include "ek/lattice/link_sampling.hpp"
+#include "ek/solver/relax_request.hpp"
 #include "journal.hpp"
 
 namespace ek {
@@ -33,7 +34,11 @@ std::string options_text(const std::string& knot, const ExploreOptions& o) {
   return "knot=" + knot + " " + journal_key(dataset_metadata(o));
 }
 
-JournalRun run_one(const Points& sample, int index, std::uint64_t seed, const ExploreOptions& o) {
+/// Relaxes one lattice sample of a knot (one component) or a link (the
+/// components back to back in the stored positions); a change of the knot
+/// or link type is a run with status "topology-changed" and the change as
+/// its message, never an equilibrium.
+JournalRun run_one(const Link& sample, int index, std::uint64_t seed, const ExploreOptions& o) {
   JournalRun out;
   out.record.sample = index;
   out.record.seed = seed;
@@ -49,14 +54,13 @@ JournalRun run_one(const Points& sample, int index, std::uint64_t seed, const Ex
     out.record.energy = r.energy.total;
     out.record.gradient_norm = r.report.gradient_norm;
     out.record.contacts = r.contacts;
-    out.record.alexander_preserved = r.alexander_preserved;
+    out.record.topology_preserved = r.topology_preserved();
     out.energy = r.energy;
-    out.link = r.link;
+    out.link = sample.size() == 1 ? r.link : std::numeric_limits<double>::quiet_NaN();
+    out.min_distance = r.min_distance;
     if (r.smallest_eigenvalue) out.stiffness = *r.smallest_eigenvalue;
     if (r.stable() && r.topology_preserved()) out.positions = r.positions;
-    if (!r.alexander_preserved)
-      out.record.message = "Alexander polynomial changed from " + r.alexander.to_string() + " to " +
-                           r.result_alexander.to_string();
+    if (!r.topology_preserved()) out.record.message = topology_change(r);
   } catch (const std::exception& e) {
     out.record.status = RunStatus::Error;
     out.record.message = e.what();
@@ -579,7 +583,7 @@ KnotEntry explore_knot(const KnotRecord& knot, const ExploreOptions& options, co
   const auto relax_samples = [&](int begin, int end) {
     walk.generate(end - begin);
     relax_range(begin, end, o, runs, [&](int k) {
-      return run_one(to_points(walk.samples()[static_cast<size_t>(k)]), k, sample_seed(seed, o.burn_in + k), o);
+      return run_one({to_points(walk.samples()[static_cast<size_t>(k)])}, k, sample_seed(seed, o.burn_in + k), o);
     });
   };
   int total = o.samples;
@@ -641,9 +645,21 @@ const LinkAttributeColumn kLinkAttributeColumns[] = {
     {"sphericity", [](const LinkAttributeSource& s) { return s.whole.sphericity; }},
     {"diameter", [](const LinkAttributeSource& s) { return s.whole.diameter; }},
     {"writhe", [](const LinkAttributeSource& s) { return sum_of(s, &GeometricAttributes::writhe); }},
-    {"min_distance", [](const LinkAttributeSource& s) { return s.run.link; }},
+    {"min_distance", [](const LinkAttributeSource& s) { return s.run.min_distance; }},
     {"sample", [](const LinkAttributeSource& s) { return static_cast<double>(s.sample); }},
 };
+
+/// A link's run from a journal record of the first layout in today's
+/// meaning: its one slot held the closest approach (min_distance; Lk is not
+/// defined for a link), and its energy.total the elastic energy without the
+/// contact part.
+void upgrade_first_layout(JournalRun& r) {
+  if (!r.first_layout) return;
+  r.min_distance = r.link;
+  r.link = std::numeric_limits<double>::quiet_NaN();
+  r.energy.total = r.energy.stretch + r.energy.bend + r.energy.twist + r.energy.contact + r.energy.slab;
+  r.first_layout = false;
+}
 
 std::vector<double> link_attribute_row(const JournalRun& r, int sample, const std::vector<int>& sizes,
                                        const AttributeOptions& ao) {
@@ -660,40 +676,6 @@ std::vector<double> link_attribute_row(const JournalRun& r, int sample, const st
   const LinkAttributeSource source{r, components, whole, sample};
   std::vector<double> out;
   for (const LinkAttributeColumn& c : kLinkAttributeColumns) out.push_back(c.value(source));
-  return out;
-}
-
-/// Relaxes one lattice sample of a link (relax()); the stored positions
-/// are the components back to back. `link` carries the closest approach of
-/// two edges (min_distance).
-JournalRun run_link_one(const Link& sample, int index, std::uint64_t seed, const ExploreOptions& o) {
-  JournalRun out;
-  out.record.sample = index;
-  out.record.seed = seed;
-  out.stiffness = std::numeric_limits<double>::quiet_NaN();
-  try {
-    const RelaxResult r = relax(sample, o.relax);
-    out.record.status = run_status(r.status());
-    out.record.iterations = r.report.iterations;
-    out.record.seconds = r.report.seconds;
-    for (const NewtonReport& c : r.continuation_reports) {
-      out.record.iterations += c.iterations;
-      out.record.seconds += c.seconds;
-    }
-    out.record.energy = r.energy.total;
-    out.record.gradient_norm = r.report.gradient_norm;
-    out.record.alexander_preserved = r.topology_preserved();
-    out.energy.stretch = r.energy.stretch;
-    out.energy.bend = r.energy.bend;
-    out.energy.contact = r.energy.contact;
-    out.energy.total = out.energy.stretch + out.energy.bend;
-    out.link = r.min_distance;
-    if (r.report.status == SolverStatus::ConvergedStable && r.topology_preserved()) out.positions = r.positions;
-    if (!r.topology_preserved()) out.record.message = "the link type changed (components' Alexander polynomials, linking numbers or Conway polynomial)";
-  } catch (const std::exception& e) {
-    out.record.status = RunStatus::Error;
-    out.record.message = e.what();
-  }
   return out;
 }
 
@@ -723,6 +705,7 @@ KnotEntry explore_link(const LinkRecord& link, const ExploreOptions& o, const st
   const std::uint64_t seed = knot_seed(o.seed, link.name);
 
   KnotRuns runs(journal_path, link.name, o, on_run);
+  for (auto& [k, r] : runs.done) upgrade_first_layout(r);
 
   const LatticeLinkStart start = lattice_link_start(link);
   using Polygons = std::vector<LatticePoints>;
@@ -732,7 +715,7 @@ KnotEntry explore_link(const LinkRecord& link, const ExploreOptions& o, const st
   walk.generate(o.samples);  // o.samples >= 1: every sample has the components' target lengths
   for (const LatticePoints& polygon : walk.samples().front()) entry.components.push_back(static_cast<int>(polygon.rows()));
   relax_range(0, o.samples, o, runs, [&](int k) {
-    return run_link_one(to_link(walk.samples()[static_cast<size_t>(k)]), k, sample_seed(seed, o.burn_in + k), o);
+    return run_one(to_link(walk.samples()[static_cast<size_t>(k)]), k, sample_seed(seed, o.burn_in + k), o);
   });
   entry.samples_used = o.samples;
   const AttributeOptions ao = attribute_options(o);

@@ -76,7 +76,7 @@ Result runs_columns(const KnotEntry& e) {
     energy.push_back(r.energy);
     gradient_norm.push_back(r.gradient_norm);
     contacts.push_back(r.contacts);
-    preserved.push_back(r.alexander_preserved ? 1 : 0);
+    preserved.push_back(r.topology_preserved ? 1 : 0);
     message.push_back(r.message);
   }
   Result r{"runs", py::dict()};
@@ -89,7 +89,7 @@ Result runs_columns(const KnotEntry& e) {
   r.fields["energy"] = column(energy);
   r.fields["gradient_norm"] = column(gradient_norm);
   r.fields["contacts"] = column(contacts);
-  r.fields["alexander_preserved"] = column(preserved);
+  r.fields["topology_preserved"] = column(preserved);
   r.fields["message"] = string_column(message);
   return r;
 }

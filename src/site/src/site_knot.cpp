@@ -216,7 +216,7 @@ KnotEntry shown_states(const LedgerEntry& l, const SimilarityOptions& similarity
     run.equilibrium = r.equilibrium >= 0 ? index[static_cast<size_t>(r.equilibrium)] : -1;
     run.iterations = r.iterations;
     run.seconds = r.seconds;
-    run.alexander_preserved = r.topology_kept;
+    run.topology_preserved = r.topology_kept;
     e.runs.push_back(run);
   }
   cluster_entry(e, similarity);

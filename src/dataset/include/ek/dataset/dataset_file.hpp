@@ -4,7 +4,7 @@
 /// (paper Section 7.4). Layout (docs/dataset-format.md documents it for users):
 ///
 /// ~~~{.unparsed}
-///   /                                  attributes: format = "elastic-knots-dataset", format_version = 1,
+///   /                                  attributes: format = "elastic-knots-dataset", format_version = 2,
 ///                                      and one per field of metadata_fields() (metadata.hpp): material,
 ///                                      n, solver, sampling, lattice walk, seed, stiffness flag, provenance
 ///   knot_names          string  [k]    the knots, in table order
@@ -17,7 +17,7 @@
 ///     runs/             one entry per relaxation run (also failures), columns of length r:
 ///       sample int64, seed int64, status string, equilibrium int64 (-1: not stored),
 ///       iterations int64, seconds float64, energy float64, gradient_norm float64,
-///       contacts int64, alexander_preserved int64 (1/0), message string
+///       contacts int64, topology_preserved int64 (1/0), message string
 ///     similarity        float64 [m, m]     pairwise similarity (Section 7.1)
 ///     linkage           float64 [m-1, 4]   complete-linkage merges (a, b, height, size), SciPy layout
 ///     score_history     float64 [b]        adaptive-sampling importance score after each batch
@@ -29,9 +29,14 @@
 /// `conway` (∇'s coefficients) and `linking_numbers` (int list, m by m row by
 /// row) say so; `alexander` is the unknot's; the attribute columns are
 /// link_attribute_names() (pipeline.hpp); `similarity` is 1 − d, d the link
-/// state distance (ek/analysis/link_states.hpp); the runs' `alexander_preserved`
+/// state distance (ek/analysis/link_states.hpp); the runs' `topology_preserved`
 /// is 1 when every component's Alexander polynomial, every linking number and
 /// ∇ were kept. A group without `components` is a knot.
+///
+/// Version 1 files read as version 2: their runs' column `alexander_preserved`
+/// is `topology_preserved` (it held the whole check of a link already), and
+/// a link's attribute `energy`, which was the elastic energy without the
+/// contact part, is read with `energy_contact` added (the total, as a knot's).
 ///
 /// Files are always written to a temporary name and renamed into place.
 #include <cstdint>
@@ -68,7 +73,9 @@ struct RunRecord {
   double energy = 0.0;           ///< [energy] at the result
   double gradient_norm = 0.0;    ///< [energy/length] ||g||₂ at the result
   int contacts = 0;              ///< [1] active contact pairs at the result
-  bool alexander_preserved = true;  ///< a link: every component's polynomial, linking number and ∇ kept
+  /// The knot's type (its Alexander polynomial) or the link's (every
+  /// component's polynomial, every linking number and ∇) kept.
+  bool topology_preserved = true;
   std::string message;           ///< error text for failed runs
 };
 

@@ -43,7 +43,7 @@ struct LedgerRun {
   int equilibrium = -1;       ///< [1] row of the knot's attribute table, -1 when not stored
   int iterations = 0;         ///< [1]
   double seconds = 0.0;       ///< [s] wall time of the relaxation (one thread)
-  bool topology_kept = true;  ///< RunRecord::alexander_preserved
+  bool topology_kept = true;  ///< RunRecord::topology_preserved
 };
 
 /// One distinct state at the ledger's cut.

@@ -213,8 +213,8 @@ using RunCallback = std::function<void(const RunRecord&)>;
 KnotEntry explore_knot(const KnotRecord& knot, const ExploreOptions& options, const std::string& journal_path = "",
                        const RunCallback& on_run = {});
 
-/// The attribute columns of a link's equilibria: energy (E_rod: stretch +
-/// bend of every component), energy_stretch, energy_bend, energy_contact;
+/// The attribute columns of a link's equilibria: energy (the total E_rod +
+/// ω E_contact, as a knot's), energy_stretch, energy_bend, energy_contact;
 /// max_stress (the largest of the components'); total_curvature and writhe
 /// (summed over the components, each component's own writhe without the
 /// linking terms); threedim, sphericity and diameter (of all vertices
