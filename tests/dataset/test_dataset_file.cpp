@@ -546,7 +546,7 @@ TEST(DatasetFile, ShapesAndTypesAreChecked) {
   }, "attribute 'vertices' is not one value");
   check([&](hid_t f) {
     replace_dataset(f, "knots/3_1/runs/seed", H5T_NATIVE_INT64, {1}, three);
-  }, "the columns of runs/ have different lengths");
+  }, "runs: column 'seed' has 1 rows, 'sample' 3");
   check([&](hid_t f) {
     const double v[2] = {1, 2};
     replace_dataset(f, "knots/3_1/attributes", H5T_NATIVE_DOUBLE, {2}, v);

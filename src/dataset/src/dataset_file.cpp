@@ -22,6 +22,7 @@
 #include "child_read.hpp"
 #include "parameters_h5.hpp"
 #include "ek/dataset/h5.hpp"
+#include "ek/dataset/h5_columns.hpp"
 
 namespace ek {
 namespace {
@@ -185,64 +186,32 @@ DatasetMetadata read_meta(hid_t f, const std::string& path) {
 
 
 /// The columns of a knot's runs/ group (docs/dataset-format.md): one
-/// dataset per column, one row per run, written and read from these tables
-/// in this order (integers, reals, texts).
-struct RunIntColumn {
-  const char* name;
-  std::int64_t (*get)(const RunRecord&);
-  void (*set)(RunRecord&, std::int64_t);
-  const char* first_name = nullptr;  ///< its name in version 1 files, when another
-  /// The name in a file of format `version`.
-  const char* name_in(std::int64_t version) const { return version < 2 && first_name ? first_name : name; }
-};
-struct RunRealColumn {
-  const char* name;
-  double RunRecord::*field;
-};
-struct RunTextColumn {
-  const char* name;
-  std::string (*get)(const RunRecord&);
-  void (*set)(RunRecord&, const std::string&);
-};
-const RunIntColumn kRunIntColumns[] = {
-    {"sample", [](const RunRecord& r) -> std::int64_t { return r.sample; },
-     [](RunRecord& r, std::int64_t v) { r.sample = static_cast<int>(v); }},
-    {"seed", [](const RunRecord& r) { return static_cast<std::int64_t>(r.seed); },
-     [](RunRecord& r, std::int64_t v) { r.seed = static_cast<std::uint64_t>(v); }},
-    {"equilibrium", [](const RunRecord& r) -> std::int64_t { return r.equilibrium; },
-     [](RunRecord& r, std::int64_t v) { r.equilibrium = static_cast<int>(v); }},
-    {"iterations", [](const RunRecord& r) -> std::int64_t { return r.iterations; },
-     [](RunRecord& r, std::int64_t v) { r.iterations = static_cast<int>(v); }},
-    {"contacts", [](const RunRecord& r) -> std::int64_t { return r.contacts; },
-     [](RunRecord& r, std::int64_t v) { r.contacts = static_cast<int>(v); }},
-    {"topology_preserved", [](const RunRecord& r) -> std::int64_t { return r.topology_preserved ? 1 : 0; },
-     [](RunRecord& r, std::int64_t v) { r.topology_preserved = v != 0; }, "alexander_preserved"},
-};
-const RunRealColumn kRunRealColumns[] = {
-    {"seconds", &RunRecord::seconds}, {"energy", &RunRecord::energy}, {"gradient_norm", &RunRecord::gradient_norm}};
-const RunTextColumn kRunTextColumns[] = {
-    {"status", [](const RunRecord& r) { return to_string(r.status); },
-     [](RunRecord& r, const std::string& v) { r.status = parse_run_status(v); }},
-    {"message", [](const RunRecord& r) { return r.message; }, [](RunRecord& r, const std::string& v) { r.message = v; }}};
+/// dataset per column, one row per run, in the file's order (integers,
+/// reals, texts). In files of format `version` 1 the column
+/// topology_preserved was named alexander_preserved.
+std::vector<h5::Column<RunRecord>> run_columns(std::int64_t version) {
+  using h5::member_column;
+  return {
+      member_column<RunRecord>("sample", &RunRecord::sample),
+      member_column<RunRecord>("seed", &RunRecord::seed),
+      member_column<RunRecord>("equilibrium", &RunRecord::equilibrium),
+      member_column<RunRecord>("iterations", &RunRecord::iterations),
+      member_column<RunRecord>("contacts", &RunRecord::contacts),
+      member_column<RunRecord>(version < 2 ? "alexander_preserved" : "topology_preserved",
+                               &RunRecord::topology_preserved),
+      member_column<RunRecord>("seconds", &RunRecord::seconds),
+      member_column<RunRecord>("energy", &RunRecord::energy),
+      member_column<RunRecord>("gradient_norm", &RunRecord::gradient_norm),
+      {"status", h5::ColumnType::Text,
+       [](const RunRecord& r, const h5::NoContext&) { return h5::Cell(to_string(r.status)); },
+       [](RunRecord& r, h5::Cell&& c) { r.status = parse_run_status(std::get<std::string>(c)); }},
+      member_column<RunRecord>("message", &RunRecord::message),
+  };
+}
 
 void write_runs(hid_t knot, const std::vector<RunRecord>& runs) {
   h5::Handle g = h5::create_group(knot, "runs");
-  const hsize_t r = runs.size();
-  for (const RunIntColumn& c : kRunIntColumns) {
-    std::vector<std::int64_t> v;
-    for (const RunRecord& run : runs) v.push_back(c.get(run));
-    h5::write_int64(g.id(), c.name, {r}, v.data());
-  }
-  for (const RunRealColumn& c : kRunRealColumns) {
-    std::vector<double> v;
-    for (const RunRecord& run : runs) v.push_back(run.*c.field);
-    h5::write_doubles(g.id(), c.name, {r}, v.data());
-  }
-  for (const RunTextColumn& c : kRunTextColumns) {
-    std::vector<std::string> v;
-    for (const RunRecord& run : runs) v.push_back(c.get(run));
-    h5::write_strings(g.id(), c.name, v);
-  }
+  h5::write_columns(g.id(), run_columns(kFormatVersion), runs, h5::NoContext{});
 }
 
 }  // namespace
@@ -383,28 +352,12 @@ class KnotGroupReader {
 
   /// runs/: columns of one length; `equilibria` rows exist.
   std::vector<RunRecord> runs(size_t equilibria) const {
-    h5::Handle g = h5::open_group(id_, "runs");
     std::vector<RunRecord> out;
-    bool first = true;
-    const auto rows = [&](size_t count) {
-      if (first) out.resize(count);
-      first = false;
-      if (count != out.size()) damaged("the columns of runs/ have different lengths");
-    };
-    for (const RunIntColumn& c : kRunIntColumns) {
-      const auto v = h5::read_int64(g.id(), c.name_in(version_));
-      rows(v.size());
-      for (size_t k = 0; k < v.size(); ++k) c.set(out[k], v[k]);
-    }
-    for (const RunRealColumn& c : kRunRealColumns) {
-      const auto v = h5::read_doubles(g.id(), c.name);
-      rows(v.size());
-      for (size_t k = 0; k < v.size(); ++k) out[k].*c.field = v[k];
-    }
-    for (const RunTextColumn& c : kRunTextColumns) {
-      const auto v = h5::read_strings(g.id(), c.name);
-      rows(v.size());
-      for (size_t k = 0; k < v.size(); ++k) c.set(out[k], v[k]);
+    try {
+      h5::Handle g = h5::open_group(id_, "runs");
+      out = h5::read_columns(g.id(), run_columns(version_), "runs");
+    } catch (const InputError& e) {
+      damaged(e.what());
     }
     for (size_t k = 0; k < out.size(); ++k)
       if (out[k].equilibrium < -1 || out[k].equilibrium >= static_cast<int>(equilibria))

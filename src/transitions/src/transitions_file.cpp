@@ -11,6 +11,7 @@
 #include "ek/core/atomic_file.hpp"
 #include "ek/core/errors.hpp"
 #include "ek/dataset/h5.hpp"
+#include "ek/dataset/h5_columns.hpp"
 
 namespace ek {
 namespace {
@@ -27,55 +28,22 @@ constexpr const char* kRefusedRow = "start-refused: ";  ///< the searches/ statu
 // both write_transitions() and read_transitions() walk the tables in order
 // (the order is the file's: datasets are created in it).
 
-/// How a column or attribute is stored: int64, float64, a variable-length
-/// UTF-8 string, or one curve per row (float64 [rows, n, 3]).
-enum class Type { Int64, Float64, Text, Curves };
+using Type = h5::ColumnType;
+using h5::Cell;
+using h5::from_cell;
+using h5::read_columns;
+using h5::to_cell;
+using h5::write_columns;
 
-/// One cell of a column, or an attribute's value; std::monostate: not
-/// recorded (an optional attribute left out, or absent from the file).
-using Cell = std::variant<std::monostate, std::int64_t, double, std::string, Points>;
-
-template <class T>
-constexpr Type type_of() {
-  if constexpr (std::is_same_v<T, double>) return Type::Float64;
-  else if constexpr (std::is_same_v<T, std::string>) return Type::Text;
-  else if constexpr (std::is_same_v<T, Points>) return Type::Curves;
-  else {
-    static_assert(std::is_integral_v<T>, "columns are integers, flags, doubles, strings or curves");
-    return Type::Int64;
-  }
-}
-
-template <class T>
-Cell to_cell(const T& v) {
-  if constexpr (std::is_same_v<T, bool>) return std::int64_t{v ? 1 : 0};
-  else if constexpr (std::is_integral_v<T>) return static_cast<std::int64_t>(v);
-  else return v;
-}
-
-template <class T>
-void from_cell(Cell&& c, T& out) {
-  if constexpr (std::is_same_v<T, bool>) out = std::get<std::int64_t>(c) != 0;
-  else if constexpr (std::is_integral_v<T>) out = static_cast<T>(std::get<std::int64_t>(c));
-  else out = std::get<T>(std::move(c));
-}
-
-/// One dataset of a group: one row per record of type Row. `get` has the
-/// graph for the columns derived from it; a column without `set` is derived
-/// from others (written, required in the file, not read back).
+/// One dataset of a group: one row per record of type Row, with the graph
+/// for the columns derived from it (h5_columns.hpp).
 template <class Row>
-struct Column {
-  std::string name;
-  Type type;
-  std::function<Cell(const Row&, const TransitionGraph&)> get;
-  std::function<void(Row&, Cell&&)> set;
-};
+using Column = h5::Column<Row, TransitionGraph>;
 
 /// A column that is the member `m` (of Row or of a base of it).
 template <class Row, class Class, class T>
 Column<Row> column(std::string name, T Class::*m) {
-  return {std::move(name), type_of<T>(), [m](const Row& r, const TransitionGraph&) { return to_cell(r.*m); },
-          [m](Row& r, Cell&& c) { from_cell(std::move(c), r.*m); }};
+  return h5::member_column<Row, TransitionGraph>(std::move(name), m);
 }
 
 /// A column holding to_string() of the member `m`, read by from_string<T>().
@@ -88,8 +56,7 @@ Column<Row> text_of(std::string name, T Row::*m) {
 /// A column derived from a record and the graph (written only).
 template <class Row>
 Column<Row> derived(std::string name, double (*get)(const Row&, const TransitionGraph&)) {
-  return {std::move(name), Type::Float64,
-          [get](const Row& r, const TransitionGraph& g) { return Cell(get(r, g)); }, {}};
+  return h5::derived_column<Row, TransitionGraph>(std::move(name), get);
 }
 
 /// A group of the file and its columns.
@@ -221,13 +188,13 @@ struct Attribute {
 
 template <class T>
 Attribute attribute(std::string name, T TransitionGraph::*m) {
-  return {std::move(name), type_of<T>(),
+  return {std::move(name), h5::column_type_of<T>(),
           [m](const TransitionGraph& g, const TransitionsFileInfo&) { return to_cell(g.*m); },
           [m](TransitionGraph& g, TransitionsFileInfo&, Cell&& c) { from_cell(std::move(c), g.*m); }};
 }
 template <class T>
 Attribute attribute(std::string name, T TransitionsFileInfo::*m) {
-  return {std::move(name), type_of<T>(),
+  return {std::move(name), h5::column_type_of<T>(),
           [m](const TransitionGraph&, const TransitionsFileInfo& i) { return to_cell(i.*m); },
           [m](TransitionGraph&, TransitionsFileInfo& i, Cell&& c) { from_cell(std::move(c), i.*m); }};
 }
@@ -253,122 +220,12 @@ const std::vector<Attribute> kAttributes = {
 // ---------------------------------------------------------------------------
 // Walking the tables.
 
-void write_curves(hid_t g, const std::string& name, const std::vector<Cell>& cells) {
-  const hsize_t n = cells.empty() ? 0 : static_cast<hsize_t>(std::get<Points>(cells.front()).rows());
-  std::vector<double> data;
-  data.reserve(cells.size() * n * 3);
-  for (const Cell& c : cells) {
-    const Points& p = std::get<Points>(c);
-    require(static_cast<hsize_t>(p.rows()) == n, "transitions file: curves of different vertex counts");
-    for (Eigen::Index i = 0; i < p.rows(); ++i)
-      for (int a = 0; a < 3; ++a) data.push_back(p(i, a));
-  }
-  h5::write_doubles(g, name, {static_cast<hsize_t>(cells.size()), n, 3}, data.data());
-}
-
-template <class T>
-std::vector<T> values(const std::vector<Cell>& cells) {
-  std::vector<T> out;
-  out.reserve(cells.size());
-  for (const Cell& c : cells) out.push_back(std::get<T>(c));
-  return out;
-}
-
-/// The column `name` of `g`, stored as `type`.
-void write_cells(hid_t g, const std::string& name, Type type, const std::vector<Cell>& cells) {
-  switch (type) {
-    case Type::Int64: {
-      const auto v = values<std::int64_t>(cells);
-      h5::write_int64(g, name, {v.size()}, v.data());
-      break;
-    }
-    case Type::Float64: {
-      const auto v = values<double>(cells);
-      h5::write_doubles(g, name, {v.size()}, v.data());
-      break;
-    }
-    case Type::Text: h5::write_strings(g, name, values<std::string>(cells)); break;
-    case Type::Curves: write_curves(g, name, cells); break;
-  }
-}
-
-template <class Row>
-void write_columns(hid_t g, const std::vector<Column<Row>>& columns, const std::vector<Row>& rows,
-                   const TransitionGraph& graph) {
-  for (const Column<Row>& c : columns) {
-    std::vector<Cell> cells;
-    cells.reserve(rows.size());
-    for (const Row& r : rows) cells.push_back(c.get(r, graph));
-    write_cells(g, c.name, c.type, cells);
-  }
-}
-
 template <class Row>
 h5::Handle write_table(hid_t file, const Table<Row>& table, const std::vector<Row>& rows,
                        const TransitionGraph& graph) {
   h5::Handle g = h5::create_group(file, table.group);
   write_columns(g.id(), table.columns, rows, graph);
   return g;
-}
-
-/// The column `name` of `g` as cells; `where` ("states/energy") names it in errors.
-std::vector<Cell> read_cells(hid_t g, const std::string& name, Type type, const std::string& where) {
-  if (!h5::exists(g, name)) throw InputError("the column '" + where + "' is missing");
-  std::vector<hsize_t> shape;
-  std::vector<Cell> out;
-  const auto one_dimensional = [&] {
-    if (shape.size() != 1) throw InputError("'" + where + "' is not a column");
-  };
-  switch (type) {
-    case Type::Int64:
-      for (const std::int64_t v : h5::read_int64(g, name, &shape)) out.emplace_back(v);
-      one_dimensional();
-      break;
-    case Type::Float64:
-      for (const double v : h5::read_doubles(g, name, &shape)) out.emplace_back(v);
-      one_dimensional();
-      break;
-    case Type::Text:
-      for (std::string& v : h5::read_strings(g, name)) out.emplace_back(std::move(v));
-      break;
-    case Type::Curves: {
-      const std::vector<double> data = h5::read_doubles(g, name, &shape);
-      if (shape.size() != 3 || shape[2] != 3) throw InputError("'" + where + "' is not an array of curves");
-      size_t k = 0;
-      for (hsize_t j = 0; j < shape[0]; ++j) {
-        Points p(static_cast<Eigen::Index>(shape[1]), 3);
-        for (Eigen::Index i = 0; i < p.rows(); ++i)
-          for (int a = 0; a < 3; ++a) p(i, a) = data[k++];
-        out.emplace_back(std::move(p));
-      }
-      break;
-    }
-  }
-  return out;
-}
-
-/// The rows of `g` (named `where` in errors): every column must be there,
-/// all of one length.
-template <class Row>
-std::vector<Row> read_columns(hid_t g, const std::vector<Column<Row>>& columns, const std::string& where) {
-  std::vector<Row> rows;
-  const Column<Row>* first = nullptr;
-  for (const Column<Row>& c : columns) {
-    if (!c.set) {  // derived: only required
-      if (!h5::exists(g, c.name)) throw InputError("the column '" + where + "/" + c.name + "' is missing");
-      continue;
-    }
-    std::vector<Cell> cells = read_cells(g, c.name, c.type, where + "/" + c.name);
-    if (!first) {
-      first = &c;
-      rows.resize(cells.size());
-    } else if (cells.size() != rows.size()) {
-      throw InputError(where + ": column '" + c.name + "' has " + std::to_string(cells.size()) + " rows, '" +
-                       first->name + "' " + std::to_string(rows.size()));
-    }
-    for (size_t k = 0; k < cells.size(); ++k) c.set(rows[k], std::move(cells[k]));
-  }
-  return rows;
 }
 
 template <class Row>
