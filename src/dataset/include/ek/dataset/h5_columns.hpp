@@ -73,10 +73,10 @@ struct NoContext {};
 /// others (written, required in the file, not read back).
 template <class Row, class Context = NoContext>
 struct Column {
-  std::string name;
-  ColumnType type;
-  std::function<Cell(const Row&, const Context&)> get;
-  std::function<void(Row&, Cell&&)> set;
+  std::string name;                                 ///< the dataset's name in the table's group
+  ColumnType type;                                  ///< how it is stored
+  std::function<Cell(const Row&, const Context&)> get;  ///< a row's cell, written
+  std::function<void(Row&, Cell&&)> set;            ///< stores a cell read into a row; empty: derived
 };
 
 /// The column that is the member `m` (of Row or of a base of it).
