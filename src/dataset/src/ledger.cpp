@@ -10,6 +10,7 @@
 #include "ek/core/atomic_file.hpp"
 #include "ek/core/errors.hpp"
 #include "ek/dataset/h5.hpp"
+#include "ek/dataset/h5_columns.hpp"
 #include "parameters_h5.hpp"
 
 namespace ek {
@@ -103,6 +104,31 @@ void write_knot(hid_t knots, const LedgerEntry& e, const Rows& rows, const std::
   for (const std::string& a : e.attribute_names)
     own.push_back(std::find(columns.begin(), columns.end(), a) - columns.begin());
   h5::set_attr(id, "attribute_columns", own);
+}
+
+/// One row of the runs/ table: a LedgerRun with its status as the index
+/// into status_names.
+struct RunRow {
+  int sample = 0;
+  std::int64_t status = 0;
+  int equilibrium = -1;
+  int iterations = 0;
+  bool topology_kept = true;
+  double seconds = 0.0;
+};
+
+/// The columns of runs/, in the file's order (h5_columns.hpp).
+const std::vector<h5::Column<RunRow>>& run_columns() {
+  using h5::member_column;
+  static const std::vector<h5::Column<RunRow>> columns = {
+      member_column<RunRow>("sample", &RunRow::sample),
+      member_column<RunRow>("status", &RunRow::status),
+      member_column<RunRow>("equilibrium", &RunRow::equilibrium),
+      member_column<RunRow>("iterations", &RunRow::iterations),
+      member_column<RunRow>("topology_kept", &RunRow::topology_kept),
+      member_column<RunRow>("seconds", &RunRow::seconds),
+  };
+  return columns;
 }
 
 /// Integer columns of one table, appended entry by entry.
@@ -202,8 +228,8 @@ void write_ledger(const std::string& path, const Ledger& ledger) {
     for (const LedgerEntry& e : ledger.entries)
       for (const LedgerRun& r : e.runs)
         if (std::find(statuses.begin(), statuses.end(), r.status) == statuses.end()) statuses.push_back(r.status);
-    IntColumns runs({"sample", "status", "equilibrium", "iterations", "topology_kept"});
-    std::vector<double> seconds, attributes, linkage;
+    std::vector<RunRow> runs;
+    std::vector<double> attributes, linkage;
     std::vector<std::int64_t> origins, steps;  // the kept curves on the quantum's grid
     IntColumns eq({"state"});
     IntColumns st({"representative", "members", "curve"});
@@ -221,9 +247,7 @@ void write_ledger(const std::string& path, const Ledger& ledger) {
       r.states = static_cast<std::int64_t>(e.states.size());
       for (const LedgerRun& x : e.runs) {
         const auto code = std::find(statuses.begin(), statuses.end(), x.status) - statuses.begin();
-        const std::int64_t v[] = {x.sample, code, x.equilibrium, x.iterations, x.topology_kept ? 1 : 0};
-        for (size_t c = 0; c < 5; ++c) runs.values[c].push_back(v[c]);
-        seconds.push_back(x.seconds);
+        runs.push_back({x.sample, code, x.equilibrium, x.iterations, x.topology_kept, x.seconds});
       }
       for (Eigen::Index i = 0; i < e.attributes.rows(); ++i) {
         for (const std::string& name : columns) {
@@ -254,8 +278,7 @@ void write_ledger(const std::string& path, const Ledger& ledger) {
     h5::write_strings(f.id(), "status_names", status_names);
     {
       h5::Handle g = h5::create_group(f.id(), "runs");
-      runs.write(g.id());
-      h5::write_doubles(g.id(), "seconds", {seconds.size()}, seconds.data());
+      h5::write_columns(g.id(), run_columns(), runs, h5::NoContext{});
     }
     {
       h5::Handle g = h5::create_group(f.id(), "equilibria");
@@ -318,7 +341,7 @@ class LedgerFileReader {
     const std::vector<std::string> names = h5::read_strings(f_, "knot_names");
     h5::Handle knots = h5::open_group(f_, "knots");
     for (const std::string& name : names) out.entries.push_back(entry(knots.id(), name));
-    if (runs_next_ != runs_[0].size() || eq_next_ != state_.size() || linkage_next_ != linkage_rows_ ||
+    if (runs_next_ != runs_.size() || eq_next_ != state_.size() || linkage_next_ != linkage_rows_ ||
         states_next_ != representative_.size())
       damaged("its tables hold rows that no knot owns");
     return out;
@@ -342,9 +365,11 @@ class LedgerFileReader {
     }
     {
       h5::Handle g = h5::open_group(f_, "runs");
-      seconds_ = h5::read_doubles(g.id(), "seconds");
-      for (const char* c : {"sample", "status", "equilibrium", "iterations", "topology_kept"})
-        runs_.push_back(ints(g.id(), c, seconds_.size(), "runs"));
+      try {
+        runs_ = h5::read_columns(g.id(), run_columns(), "runs");
+      } catch (const InputError& e) {
+        damaged(e.what());
+      }
     }
     {
       h5::Handle g = h5::open_group(f_, "equilibria");
@@ -389,7 +414,7 @@ class LedgerFileReader {
     const auto m = r[3];
     if (r[0] != static_cast<std::int64_t>(runs_next_) || r[2] != static_cast<std::int64_t>(eq_next_) ||
         r[4] != static_cast<std::int64_t>(linkage_next_) || r[5] != static_cast<std::int64_t>(states_next_) ||
-        r[1] < 0 || m < 0 || r[6] < 0 || runs_next_ + r[1] > runs_[0].size() || eq_next_ + m > state_.size() ||
+        r[1] < 0 || m < 0 || r[6] < 0 || runs_next_ + r[1] > runs_.size() || eq_next_ + m > state_.size() ||
         linkage_next_ + std::max<std::int64_t>(m - 1, 0) > linkage_rows_ ||
         states_next_ + r[6] > representative_.size() || (m > 0) != (r[6] > 0))
       damaged(name + "'s rows do not follow the previous knot's within the tables");
@@ -401,11 +426,12 @@ class LedgerFileReader {
 
   void read_runs(LedgerEntry& e, size_t count, std::int64_t m) {
     for (size_t k = runs_next_; k < runs_next_ + count; ++k) {
-      const std::int64_t status = runs_[1][k], equilibrium = runs_[2][k];
-      if (status < 0 || status >= static_cast<std::int64_t>(statuses_.size()) || equilibrium < -1 || equilibrium >= m)
+      const RunRow& x = runs_[k];
+      if (x.status < 0 || x.status >= static_cast<std::int64_t>(statuses_.size()) || x.equilibrium < -1 ||
+          x.equilibrium >= m)
         damaged(e.name + "'s run " + std::to_string(k - runs_next_) + " names a missing status or row");
-      e.runs.push_back({static_cast<int>(runs_[0][k]), statuses_[static_cast<size_t>(status)],
-                        static_cast<int>(equilibrium), static_cast<int>(runs_[3][k]), seconds_[k], runs_[4][k] != 0});
+      e.runs.push_back({x.sample, statuses_[static_cast<size_t>(x.status)], x.equilibrium, x.iterations, x.seconds,
+                        x.topology_kept});
     }
     runs_next_ += count;
   }
@@ -467,8 +493,8 @@ class LedgerFileReader {
   std::vector<std::int64_t> origins_, steps_, curve_;
   std::vector<RunStatus> statuses_;
   std::vector<std::string> columns_;
-  std::vector<std::vector<std::int64_t>> runs_;
-  std::vector<double> seconds_, attributes_, linkage_;
+  std::vector<RunRow> runs_;
+  std::vector<double> attributes_, linkage_;
   std::vector<std::int64_t> state_, representative_, members_;
   size_t n_ = 0, linkage_rows_ = 0;
   size_t runs_next_ = 0, eq_next_ = 0, linkage_next_ = 0, states_next_ = 0;
