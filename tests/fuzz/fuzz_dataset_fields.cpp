@@ -100,7 +100,9 @@ void field(FuzzedDataProvider& in, hid_t parent, const std::string& name, Kind k
   write_values(in, parent, name, kind, shape, attr, text);
 }
 
-void root(FuzzedDataProvider& in, hid_t f) {
+/// The root's attributes; returns the format version written (both the
+/// current one and the oldest the reader reads, whose runs name a column otherwise).
+std::int64_t root(FuzzedDataProvider& in, hid_t f) {
   // the format tag must be right for anything else to be read
   Handle str = string_type();
   if (in.ConsumeIntegralInRange<int>(0, 15) != 0) {
@@ -109,8 +111,8 @@ void root(FuzzedDataProvider& in, hid_t f) {
     Handle a(H5Acreate2(f, "format", str.id(), space.id(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
     H5Awrite(a.id(), str.id(), &tag);
   }
+  const std::int64_t version = in.ConsumeBool() ? 2 : 1;
   if (in.ConsumeIntegralInRange<int>(0, 15) != 0) {
-    const std::int64_t version = 1;
     Handle space(H5Screate(H5S_SCALAR), H5Sclose);
     Handle a(H5Acreate2(f, "format_version", H5T_NATIVE_INT64, space.id(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
     H5Awrite(a.id(), H5T_NATIVE_INT64, &version);
@@ -121,9 +123,10 @@ void root(FuzzedDataProvider& in, hid_t f) {
     field(in, f, p.name, p.kind == ek::FieldKind::Real ? Kind::Double : text ? Kind::String : Kind::Int, {}, true,
           p.kind == ek::FieldKind::List ? "0.001,0.1" : "");
   }
+  return version;
 }
 
-void knot(FuzzedDataProvider& in, hid_t knots, const std::string& name) {
+void knot(FuzzedDataProvider& in, hid_t knots, const std::string& name, std::int64_t version) {
   Handle g(H5Gcreate2(knots, name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
   const hsize_t m = in.ConsumeIntegralInRange<hsize_t>(0, 3), n = in.ConsumeIntegralInRange<hsize_t>(0, 6),
                 k = in.ConsumeIntegralInRange<hsize_t>(0, 3), r = in.ConsumeIntegralInRange<hsize_t>(0, 4);
@@ -136,7 +139,8 @@ void knot(FuzzedDataProvider& in, hid_t knots, const std::string& name) {
   field(in, g.id(), "attribute_names", Kind::String, {k}, false);
   if (in.ConsumeIntegralInRange<int>(0, 15) != 0) {
     Handle runs(H5Gcreate2(g.id(), "runs", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
-    for (const char* c : {"sample", "seed", "equilibrium", "iterations", "contacts", "alexander_preserved"})
+    for (const char* c : {"sample", "seed", "equilibrium", "iterations", "contacts",
+                          version < 2 ? "alexander_preserved" : "topology_preserved"})
       field(in, runs.id(), c, Kind::Int, {r}, false);
     for (const char* c : {"seconds", "energy", "gradient_norm"}) field(in, runs.id(), c, Kind::Double, {r}, false);
     for (const char* c : {"status", "message"}) field(in, runs.id(), c, Kind::String, {r}, false);
@@ -158,7 +162,7 @@ const std::string& path() {
 
 void write_file(FuzzedDataProvider& in) {
   Handle f = ek::h5::create_file(path());
-  root(in, f.id());
+  const std::int64_t version = root(in, f.id());
   const std::vector<std::string> names{"3_1", "4_1"};
   std::vector<std::string> listed;
   for (const auto& name : names)
@@ -167,7 +171,7 @@ void write_file(FuzzedDataProvider& in) {
   if (in.ConsumeIntegralInRange<int>(0, 15) != 0) ek::h5::write_strings(f.id(), "knot_names", listed);
   Handle knots(H5Gcreate2(f.id(), "knots", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose);
   for (const auto& name : names)
-    if (in.ConsumeIntegralInRange<int>(0, 15) != 0) knot(in, knots.id(), name);
+    if (in.ConsumeIntegralInRange<int>(0, 15) != 0) knot(in, knots.id(), name, version);
   knots.reset();
   if (!f.close()) ek::fuzz::check_failed("cannot write the scratch file", __FILE__, __LINE__);
   ek::h5::seal(path());
