@@ -44,7 +44,7 @@ std::vector<Row> rows() {
           {7, false, 42, -std::numeric_limits<double>::denorm_min(), "", fixtures::circle(5, 2.0)}};
 }
 
-/// A file with the table of rows() in the group "t"; `edit` may change the group before it is read.
+/// A file with the table of rows() in the group "t".
 std::string table_file(const std::string& name) {
   const std::string path = ::testing::TempDir() + name;
   std::filesystem::remove(path);
@@ -71,7 +71,8 @@ TEST(H5Columns, EveryTypeRoundTripsBitForBit) {
     EXPECT_EQ(back[k].text, want[k].text);
     EXPECT_TRUE(back[k].curve == want[k].curve);
   }
-  EXPECT_EQ(h5::read_doubles(g.id(), "scaled"), (std::vector<double>{0.2, -2 * std::numeric_limits<double>::denorm_min()}));
+  const std::vector<double> scaled{0.2, -2 * std::numeric_limits<double>::denorm_min()};
+  EXPECT_EQ(h5::read_doubles(g.id(), "scaled"), scaled);
   std::filesystem::remove(path);
 }
 
@@ -84,12 +85,14 @@ TEST(H5Columns, DamagedTablesAreInputErrorsNamingTheColumn) {
   fixtures::expect_input_error([&] { h5::read_columns(g.id(), more, "t"); }, "the column 't/absent' is missing");
   std::vector<h5::Column<Row, Scale>> derived_absent = columns();
   derived_absent.push_back(h5::derived_column<Row, Scale>("gone", [](const Row&, const Scale&) { return 0.0; }));
-  fixtures::expect_input_error([&] { h5::read_columns(g.id(), derived_absent, "t"); }, "the column 't/gone' is missing");
+  fixtures::expect_input_error([&] { h5::read_columns(g.id(), derived_absent, "t"); },
+                               "the column 't/gone' is missing");
   const double one = 1.0;
   h5::write_doubles(g.id(), "short", {1}, &one);
   std::vector<h5::Column<Row, Scale>> uneven = columns();
   uneven.push_back(h5::member_column<Row, Scale>("short", &Row::value));
-  fixtures::expect_input_error([&] { h5::read_columns(g.id(), uneven, "t"); }, "t: column 'short' has 1 rows, 'index' 2");
+  fixtures::expect_input_error([&] { h5::read_columns(g.id(), uneven, "t"); },
+                               "t: column 'short' has 1 rows, 'index' 2");
   const double square[4] = {1, 2, 3, 4};
   h5::write_doubles(g.id(), "square", {2, 2}, square);
   std::vector<h5::Column<Row, Scale>> flat = columns();

@@ -127,7 +127,8 @@ TEST(Journal, RecordsOfTheFirstLayoutAreRead) {
   EXPECT_EQ(now.link, 1.5);
   EXPECT_EQ(now.min_distance, 0.25);
   EXPECT_FALSE(now.first_layout);
-  const JournalRun first = parse_journal(testing_journal::to_first_layout(bytes, head.size(), false), head, path).runs.at(0);
+  const std::string old = testing_journal::to_first_layout(bytes, head.size(), false);
+  const JournalRun first = parse_journal(old, head, path).runs.at(0);
   EXPECT_TRUE(first.first_layout);
   EXPECT_EQ(first.link, 1.5);
   EXPECT_TRUE(std::isnan(first.min_distance));
