@@ -232,12 +232,30 @@ std::vector<Summary> summary_table(const std::vector<Run>& runs, const std::vect
   return table;
 }
 
+/// The columns of solver_macro.csv (docs/performance.md).
+const std::vector<ek::exp::CsvColumn<Summary>> kSummaryColumns = {
+    {"knot", [](const Summary& s) { return s.name; }},
+    {"method", [](const Summary& s) { return s.method; }},
+    {"runs", [](const Summary& s) { return cell(s.runs); }},
+    {"converged_stable", [](const Summary& s) { return cell(s.stable); }},
+    {"statuses", [](const Summary& s) { return statuses_text(s); }},
+    {"median_seconds", [](const Summary& s) { return fmt(s.median_seconds, "%.6g"); }},
+    {"mean_seconds", [](const Summary& s) { return fmt(s.mean_seconds, "%.6g"); }},
+    {"max_seconds", [](const Summary& s) { return fmt(s.max_seconds, "%.6g"); }},
+    {"median_cpu_seconds", [](const Summary& s) { return fmt(s.median_cpu, "%.6g"); }},
+    {"median_iterations", [](const Summary& s) { return cell(s.median_iterations); }},
+    {"symbolic_per_run", [](const Summary& s) { return fmt(s.symbolic, "%.6g"); }},
+    {"numeric_per_run", [](const Summary& s) { return fmt(s.numeric, "%.6g"); }},
+    {"frac_assembly", [](const Summary& s) { return fmt(s.assembly, "%.4f"); }},
+    {"frac_factorization", [](const Summary& s) { return fmt(s.factorization, "%.4f"); }},
+    {"frac_collision", [](const Summary& s) { return fmt(s.collision, "%.4f"); }},
+    {"frac_line_search", [](const Summary& s) { return fmt(s.line_search, "%.4f"); }},
+    {"frac_eigen", [](const Summary& s) { return fmt(s.eigen, "%.4f"); }},
+    {"frac_other", [](const Summary& s) { return fmt(s.other, "%.4f"); }},
+    {"failed_per_run", [](const Summary& s) { return fmt(s.failed, "%.6g"); }},
+};
+
 void print_summary_table(const std::vector<Summary>& table, int count, const std::string& out) {
-  ek::exp::Csv csv(out + "/solver_macro.csv",
-                   {"knot", "method", "runs", "converged_stable", "statuses", "median_seconds", "mean_seconds",
-                    "max_seconds", "median_cpu_seconds", "median_iterations", "symbolic_per_run", "numeric_per_run",
-                    "frac_assembly", "frac_factorization", "frac_collision", "frac_line_search", "frac_eigen",
-                    "frac_other", "failed_per_run"});
   std::printf("solver macro benchmark (n = 400, %d samples per knot)\n", count);
   std::printf("%-9s %-9s %5s %6s %8s %8s %8s %8s %6s %7s %7s %8s | %6s %6s %6s %6s %6s %6s | %s\n", "knot", "method",
               "runs", "stable", "median s", "mean s", "max s", "cpu s", "med it", "sym/run", "num/run", "fail/run", "asm",
@@ -249,13 +267,8 @@ void print_summary_table(const std::vector<Summary>& table, int count, const std
                 s.median_cpu, s.median_iterations, s.symbolic, s.numeric, s.failed, 100 * s.assembly,
                 100 * s.factorization, 100 * s.collision, 100 * s.line_search, 100 * s.eigen, 100 * s.other,
                 statuses_text(s).c_str());
-    csv.row({s.name, s.method, cell(s.runs), cell(s.stable), statuses_text(s), fmt(s.median_seconds, "%.6g"),
-             fmt(s.mean_seconds, "%.6g"), fmt(s.max_seconds, "%.6g"), fmt(s.median_cpu, "%.6g"),
-             cell(s.median_iterations), fmt(s.symbolic, "%.6g"), fmt(s.numeric, "%.6g"), fmt(s.assembly, "%.4f"),
-             fmt(s.factorization, "%.4f"), fmt(s.collision, "%.4f"), fmt(s.line_search, "%.4f"),
-             fmt(s.eigen, "%.4f"), fmt(s.other, "%.4f"), fmt(s.failed, "%.6g")});
   }
-  csv.commit();
+  ek::exp::write_csv(out + "/solver_macro.csv", kSummaryColumns, table);
 }
 
 /// With two or more methods: each method's median time and iterations over
@@ -263,8 +276,11 @@ void print_summary_table(const std::vector<Summary>& table, int count, const std
 void print_ratio_table(const std::vector<Summary>& table, const std::vector<Method>& methods,
                        const std::string& out) {
   if (methods.size() < 2) return;
-  ek::exp::Csv csv(out + "/solver_ratio.csv",
-                   {"knot", "method", "reference", "time_ratio", "cpu_ratio", "iteration_ratio"});
+  struct Ratio {
+    std::string knot, method, reference;
+    double time, cpu, iterations;
+  };
+  std::vector<Ratio> rows;
   std::printf("ratios to %s (median time and iterations of the method / of %s)\n", methods[0].name.c_str(),
               methods[0].name.c_str());
   std::printf("%-9s %-9s %9s %9s %9s\n", "knot", "method", "time", "cpu", "iters");
@@ -276,36 +292,56 @@ void print_ratio_table(const std::vector<Summary>& table, const std::vector<Meth
       const double t = s.median_seconds / ref.median_seconds, c = s.median_cpu / ref.median_cpu;
       const double it = s.median_iterations / std::max(1.0, ref.median_iterations);
       std::printf("%-9s %-9s %8.2fx %8.2fx %8.2fx\n", s.name.c_str(), s.method.c_str(), t, c, it);
-      csv.row({s.name, s.method, ref.method, fmt(t, "%.4f"), fmt(c, "%.4f"), fmt(it, "%.4f")});
+      rows.push_back({s.name, s.method, ref.method, t, c, it});
     }
-  csv.commit();
+  ek::exp::write_csv<Ratio>(out + "/solver_ratio.csv",
+                            {{"knot", [](const Ratio& r) { return r.knot; }},
+                             {"method", [](const Ratio& r) { return r.method; }},
+                             {"reference", [](const Ratio& r) { return r.reference; }},
+                             {"time_ratio", [](const Ratio& r) { return fmt(r.time, "%.4f"); }},
+                             {"cpu_ratio", [](const Ratio& r) { return fmt(r.cpu, "%.4f"); }},
+                             {"iteration_ratio", [](const Ratio& r) { return fmt(r.iterations, "%.4f"); }}},
+                            rows);
 }
 
 void write_runs_csv(const std::vector<Run>& runs, const std::string& out) {
-  ek::exp::Csv csv(out + "/solver_macro_runs.csv",
-                   {"knot", "sample", "method", "status", "seconds", "cpu_seconds", "iterations", "energy",
-                    "gradient_norm", "contacts", "min_distance", "writhe", "symbolic", "numeric", "line_search_trials",
-                    "saddle_escapes", "marginal", "failed"});
-  for (const Run& r : runs) {
-    const ek::NewtonReport rep = r.result.all_phases();
-    csv.row({r.knot, cell(r.sample), r.method, to_string(r.result.status()), fmt(r.seconds, "%.6g"),
-             fmt(r.cpu_seconds, "%.6g"), cell(rep.iterations), fmt(r.result.energy.total, "%.15g"),
-             fmt(rep.gradient_norm, "%.3e"), cell(r.result.contacts), fmt(r.result.min_distance, "%.6g"),
-             fmt(r.result.writhe, "%.6g"), cell(rep.symbolic_factorizations), cell(rep.numeric_factorizations),
-             cell(rep.line_search_trials), cell(rep.saddle_escapes), rep.marginal ? "1" : "0",
-             cell(rep.failed_factorizations)});
-  }
-  csv.commit();
+  struct Row {
+    const Run& run;
+    ek::NewtonReport all;  ///< of every phase
+  };
+  std::vector<Row> rows;
+  for (const Run& r : runs) rows.push_back({r, r.result.all_phases()});
+  ek::exp::write_csv<Row>(
+      out + "/solver_macro_runs.csv",
+      {{"knot", [](const Row& r) { return r.run.knot; }},
+       {"sample", [](const Row& r) { return cell(r.run.sample); }},
+       {"method", [](const Row& r) { return r.run.method; }},
+       {"status", [](const Row& r) { return to_string(r.run.result.status()); }},
+       {"seconds", [](const Row& r) { return fmt(r.run.seconds, "%.6g"); }},
+       {"cpu_seconds", [](const Row& r) { return fmt(r.run.cpu_seconds, "%.6g"); }},
+       {"iterations", [](const Row& r) { return cell(r.all.iterations); }},
+       {"energy", [](const Row& r) { return fmt(r.run.result.energy.total, "%.15g"); }},
+       {"gradient_norm", [](const Row& r) { return fmt(r.all.gradient_norm, "%.3e"); }},
+       {"contacts", [](const Row& r) { return cell(r.run.result.contacts); }},
+       {"min_distance", [](const Row& r) { return fmt(r.run.result.min_distance, "%.6g"); }},
+       {"writhe", [](const Row& r) { return fmt(r.run.result.writhe, "%.6g"); }},
+       {"symbolic", [](const Row& r) { return cell(r.all.symbolic_factorizations); }},
+       {"numeric", [](const Row& r) { return cell(r.all.numeric_factorizations); }},
+       {"line_search_trials", [](const Row& r) { return cell(r.all.line_search_trials); }},
+       {"saddle_escapes", [](const Row& r) { return cell(r.all.saddle_escapes); }},
+       {"marginal", [](const Row& r) { return std::string(r.all.marginal ? "1" : "0"); }},
+       {"failed", [](const Row& r) { return cell(r.all.failed_factorizations); }}},
+      rows);
 }
 
 /// Where the iterations and the time went, per method and knot (from the traces).
 void print_trace_summary(const std::vector<Run>& runs, const std::vector<Method>& methods,
                          const std::vector<std::string>& knots, const std::string& out) {
-  ek::exp::Csv csv(out + "/solver_trace_summary.csv",
-                   {"knot", "method", "iterations", "excess_above_1e-1", "excess_1e-2_1e-1", "excess_1e-3_1e-2",
-                    "excess_1e-4_1e-3", "excess_below_1e-4", "full_steps", "short_steps", "collision_limited",
-                    "exact_iterations", "factorizations", "failed_factorizations", "pattern_changes", "seconds",
-                    "seconds_exact"});
+  struct Row {
+    std::string knot, method;
+    ek::TraceSummary s;
+  };
+  std::vector<Row> rows;
   std::printf("where the iterations went (%% of iterations; excess energy over the end of the phase)\n");
   std::printf("%-9s %-9s %7s | %6s %6s %6s %6s %6s | %6s %6s %6s %6s | %7s %7s\n", "knot", "method", "iters", ">1e-1",
               ">1e-2", ">1e-3", ">1e-4", "<1e-4", "t=1", "t<1/64", "ccd<1", "exact", "fail/fc", "exact s");
@@ -318,14 +354,7 @@ void print_trace_summary(const std::vector<Run>& runs, const std::vector<Method>
                 100 * s.full_steps / it, 100 * s.short_steps / it, 100 * s.collision_limited / it,
                 100 * s.exact_iterations / it, 100.0 * s.failed_factorizations / std::max(1, s.factorizations),
                 100 * s.seconds_exact / std::max(1e-300, s.seconds));
-    std::vector<std::string> cells = {name, method, cell(s.iterations)};
-    for (int b : s.by_excess) cells.push_back(cell(b));
-    for (int v : {s.full_steps, s.short_steps, s.collision_limited, s.exact_iterations, s.factorizations,
-                  s.failed_factorizations, s.pattern_changes})
-      cells.push_back(cell(v));
-    cells.push_back(fmt(s.seconds, "%.6g"));
-    cells.push_back(fmt(s.seconds_exact, "%.6g"));
-    csv.row(cells);
+    rows.push_back({name, method, s});
   };
   for (const Method& m : methods) {
     ek::TraceSummary all;
@@ -337,7 +366,24 @@ void print_trace_summary(const std::vector<Run>& runs, const std::vector<Method>
     }
     row("all", m.name, all);
   }
-  csv.commit();
+  std::vector<ek::exp::CsvColumn<Row>> columns = {{"knot", [](const Row& r) { return r.knot; }},
+                                                  {"method", [](const Row& r) { return r.method; }},
+                                                  {"iterations", [](const Row& r) { return cell(r.s.iterations); }}};
+  const char* excess[] = {"excess_above_1e-1", "excess_1e-2_1e-1", "excess_1e-3_1e-2", "excess_1e-4_1e-3",
+                          "excess_below_1e-4"};
+  for (size_t b = 0; b < 5; ++b) columns.push_back({excess[b], [b](const Row& r) { return cell(r.s.by_excess[b]); }});
+  const std::pair<const char*, int ek::TraceSummary::*> counts[] = {
+      {"full_steps", &ek::TraceSummary::full_steps},
+      {"short_steps", &ek::TraceSummary::short_steps},
+      {"collision_limited", &ek::TraceSummary::collision_limited},
+      {"exact_iterations", &ek::TraceSummary::exact_iterations},
+      {"factorizations", &ek::TraceSummary::factorizations},
+      {"failed_factorizations", &ek::TraceSummary::failed_factorizations},
+      {"pattern_changes", &ek::TraceSummary::pattern_changes}};
+  for (const auto& [name, m] : counts) columns.push_back({name, [m = m](const Row& r) { return cell(r.s.*m); }});
+  columns.push_back({"seconds", [](const Row& r) { return fmt(r.s.seconds, "%.6g"); }});
+  columns.push_back({"seconds_exact", [](const Row& r) { return fmt(r.s.seconds_exact, "%.6g"); }});
+  ek::exp::write_csv(out + "/solver_trace_summary.csv", columns, rows);
 }
 
 void write_trace(const std::string& out, const Run& run) {
@@ -419,8 +465,7 @@ int skips(const Config& c) {
         print_run(runs[v].back());
       }
   }
-  ek::exp::Csv csv(c.out + "/solver_skips.csv",
-                   {"variant", "runs", "converged_stable", "total_seconds", "median_seconds", "median_iterations"});
+  std::vector<Summary> rows;
   std::printf("solver skips (n = 400, %d samples each of %zu knots, method %s)\n", c.count, c.knots.size(),
               c.methods.front().name.c_str());
   std::printf("%-11s %5s %7s %9s %9s %7s\n", "variant", "runs", "stable", "total s", "median s", "med it");
@@ -433,10 +478,17 @@ int skips(const Config& c) {
     kept = kept && !sm.statuses.count(to_string(ek::RelaxStatus::TopologyChanged));
     std::printf("%-11s %5d %7d %9.3f %9.3f %7.0f\n", sm.name.c_str(), sm.runs, sm.stable, total, sm.median_seconds,
                 sm.median_iterations);
-    csv.row({sm.name, cell(sm.runs), cell(sm.stable), fmt(total, "%.6g"), fmt(sm.median_seconds, "%.6g"),
-             cell(sm.median_iterations)});
+    rows.push_back(sm);
   }
-  csv.commit();
+  ek::exp::write_csv<Summary>(
+      c.out + "/solver_skips.csv",
+      {{"variant", [](const Summary& s) { return s.name; }},
+       {"runs", [](const Summary& s) { return cell(s.runs); }},
+       {"converged_stable", [](const Summary& s) { return cell(s.stable); }},
+       {"total_seconds", [](const Summary& s) { return fmt(s.mean_seconds * s.runs, "%.6g"); }},
+       {"median_seconds", [](const Summary& s) { return fmt(s.median_seconds, "%.6g"); }},
+       {"median_iterations", [](const Summary& s) { return cell(s.median_iterations); }}},
+      rows);
   std::printf("wrote %s/solver_skips.csv\n", c.out.c_str());
   return kept ? 0 : 1;
 }
@@ -450,7 +502,12 @@ int peer(const Config& c) {
   }
   std::sort(files.begin(), files.end());
   if (files.empty()) throw ek::InputError("--peer: no .obj or .txt curve in " + c.peer);
-  ek::exp::Csv csv(c.out + "/solver_peer.csv", {"file", "method", "vertices", "status", "seconds", "iterations", "energy"});
+  struct Row {
+    std::string file;
+    Run best;  ///< the fastest of three
+    int vertices;
+  };
+  std::vector<Row> rows;
   std::printf("peer curves (knots relax FILE, fastest of 3 runs)\n%-28s %-9s %6s %-18s %9s %7s %14s\n", "file",
               "method", "n", "status", "seconds", "iters", "energy");
   bool kept = true;
@@ -463,15 +520,22 @@ int peer(const Config& c) {
         Run run = timed_relax(name, 0, P, m);
         if (rep == 0 || run.seconds < best.seconds) best = std::move(run);
       }
-      kept = kept && best.result.alexander_preserved;
+      kept = kept && best.result.topology_preserved();
       const int it = best.result.all_phases().iterations;
       std::printf("%-28s %-9s %6d %-18s %9.4f %7d %14.10f\n", name.c_str(), m.name.c_str(), static_cast<int>(P.rows()),
                   to_string(best.result.status()).c_str(), best.seconds, it, best.result.energy.total);
-      csv.row({name, m.name, cell(P.rows()), to_string(best.result.status()), fmt(best.seconds, "%.6g"), cell(it),
-               fmt(best.result.energy.total, "%.15g")});
+      rows.push_back({name, std::move(best), static_cast<int>(P.rows())});
     }
   }
-  csv.commit();
+  ek::exp::write_csv<Row>(c.out + "/solver_peer.csv",
+                          {{"file", [](const Row& r) { return r.file; }},
+                           {"method", [](const Row& r) { return r.best.method; }},
+                           {"vertices", [](const Row& r) { return cell(r.vertices); }},
+                           {"status", [](const Row& r) { return to_string(r.best.result.status()); }},
+                           {"seconds", [](const Row& r) { return fmt(r.best.seconds, "%.6g"); }},
+                           {"iterations", [](const Row& r) { return cell(r.best.result.all_phases().iterations); }},
+                           {"energy", [](const Row& r) { return fmt(r.best.result.energy.total, "%.15g"); }}},
+                          rows);
   std::printf("wrote %s/solver_peer.csv\n", c.out.c_str());
   return kept ? 0 : 1;
 }
@@ -494,8 +558,12 @@ double fitted_exponent(const std::vector<double>& n, const std::vector<double>& 
 /// Median time per equilibrium at n = 200, 400, 800 for 4_1 and 8_19.
 int scaling(const Config& c) {
   const std::vector<int> sizes = {200, 400, 800};
-  ek::exp::Csv csv(c.out + "/solver_scaling.csv", {"knot", "method", "vertices", "runs", "converged_stable",
-                                                   "median_seconds", "median_iterations", "exponent"});
+  struct Row {
+    Summary s;  ///< of one knot, method and n
+    int vertices;
+    double exponent;
+  };
+  std::vector<Row> rows;
   std::printf("cost against n (median per equilibrium, %d samples per knot and n)\n", c.count);
   std::printf("%-9s %-9s %9s %9s %9s %9s\n", "knot", "method", "n=200 s", "n=400 s", "n=800 s", "exponent");
   bool kept = true;
@@ -512,12 +580,19 @@ int scaling(const Config& c) {
                                        {s[0].median_seconds, s[1].median_seconds, s[2].median_seconds});
       std::printf("%-9s %-9s %9.3f %9.3f %9.3f %9.2f\n", knot.c_str(), m.name.c_str(), s[0].median_seconds,
                   s[1].median_seconds, s[2].median_seconds, p);
-      for (size_t i = 0; i < sizes.size(); ++i)
-        csv.row({knot, m.name, cell(sizes[i]), cell(s[i].runs), cell(s[i].stable), fmt(s[i].median_seconds, "%.6g"),
-                 cell(s[i].median_iterations), fmt(p, "%.4f")});
+      for (size_t i = 0; i < sizes.size(); ++i) rows.push_back({s[i], sizes[i], p});
     }
   }
-  csv.commit();
+  ek::exp::write_csv<Row>(c.out + "/solver_scaling.csv",
+                          {{"knot", [](const Row& r) { return r.s.name; }},
+                           {"method", [](const Row& r) { return r.s.method; }},
+                           {"vertices", [](const Row& r) { return cell(r.vertices); }},
+                           {"runs", [](const Row& r) { return cell(r.s.runs); }},
+                           {"converged_stable", [](const Row& r) { return cell(r.s.stable); }},
+                           {"median_seconds", [](const Row& r) { return fmt(r.s.median_seconds, "%.6g"); }},
+                           {"median_iterations", [](const Row& r) { return cell(r.s.median_iterations); }},
+                           {"exponent", [](const Row& r) { return fmt(r.exponent, "%.4f"); }}},
+                          rows);
   std::printf("wrote %s/solver_scaling.csv\n", c.out.c_str());
   return kept ? 0 : 1;
 }

@@ -109,6 +109,29 @@ class Csv {
   size_t columns_;
 };
 
+/// One column of a results table: its name and the text of its cell in a
+/// row (Csv::num, Csv::flag, ...), so that a table is described once.
+template <class Row>
+struct CsvColumn {
+  std::string name;                              ///< the header's cell
+  std::function<std::string(const Row&)> cell;  ///< a row's cell
+};
+
+/// Writes `rows` as the table of `columns` to `path` (a header line of the
+/// columns' names, one line per row) atomically, as Csv does.
+template <class Row>
+void write_csv(const std::string& path, const std::vector<CsvColumn<Row>>& columns, const std::vector<Row>& rows) {
+  std::vector<std::string> header;
+  for (const CsvColumn<Row>& c : columns) header.push_back(c.name);
+  Csv csv(path, header);
+  for (const Row& r : rows) {
+    std::vector<std::string> cells;
+    for (const CsvColumn<Row>& c : columns) cells.push_back(c.cell(r));
+    csv.row(cells);
+  }
+  csv.commit();
+}
+
 /// A row of a results table read back: column → cell.
 using CsvRow = std::map<std::string, std::string>;
 

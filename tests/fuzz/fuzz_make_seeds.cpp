@@ -69,6 +69,8 @@ void write_dataset(const std::string& path, const std::vector<ek::KnotEntry>& kn
   meta.coarse_continuation = std::vector<double>{0.01};
   meta.newton_hessian = "exact";
   meta.remove_rigid_motions = true;
+  meta.contact_hessian = "eigen-projected";
+  meta.damp_short_steps = false;
   meta.max_iterations = 5000;
   meta.burn_in = 0;
   meta.sampling = "fixed:2";

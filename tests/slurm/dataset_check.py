@@ -27,11 +27,11 @@ import zlib
 import h5py
 import numpy as np
 
-JOURNAL_MAGIC = 0x314E5552  # "RUN1"
+JOURNAL_MAGICS = (0x324E5552, 0x314E5552)  # "RUN2", and "RUN1" of the first record layout
 # file attributes that legitimately differ between two runs
 VOLATILE_ATTRS = {"created"}
 RUN_COLUMNS_DETERMINISTIC = ["sample", "seed", "status", "equilibrium", "iterations", "energy",
-                             "gradient_norm", "contacts", "alexander_preserved", "message"]
+                             "gradient_norm", "contacts", "topology_preserved", "message"]
 CUTS = ["0.05", "0.2", "0.5"]
 
 
@@ -49,7 +49,7 @@ def journal_records(path):
     count = 0
     while pos + 8 <= len(data):
         magic, length = struct.unpack_from("<II", data, pos)
-        if magic != JOURNAL_MAGIC or pos + 12 + length > len(data):
+        if magic not in JOURNAL_MAGICS or pos + 12 + length > len(data):
             break
         (crc,) = struct.unpack_from("<I", data, pos + 8 + length)
         if zlib.crc32(data[pos + 8:pos + 8 + length]) != crc:
