@@ -13,8 +13,9 @@ namespace ek::testing_journal {
 
 /// `bytes` (a journal whose records follow a header of `head_size` bytes)
 /// with every record in the first layout. For a link (`link` true) the slot
-/// takes min_distance and energy.total loses the contact part; for a knot
-/// it keeps Lk.
+/// takes min_distance, energy.total loses the contact part and contacts
+/// are 0 (the first layout's link runs did not count them); for a knot the
+/// slot keeps Lk.
 inline std::string to_first_layout(const std::string& bytes, size_t head_size, bool link) {
   std::string out = bytes.substr(0, head_size);
   for (size_t pos = head_size; pos + 12 <= bytes.size();) {
@@ -28,6 +29,7 @@ inline std::string to_first_layout(const std::string& bytes, size_t head_size, b
       at += 4 + n;
     };
     skip_string();                     // status
+    const size_t contacts = at + 4 + 4 + 8 + 8 + 8;
     at += 4 + 4 + 8 + 8 + 8 + 4 + 4;   // equilibrium .. topology flag
     skip_string();                     // message
     const size_t total = at, contact = at + 4 * 8, link_slot = at + 7 * 8, min_distance = at + 8 * 8;
@@ -38,6 +40,8 @@ inline std::string to_first_layout(const std::string& bytes, size_t head_size, b
       e -= c;
       std::memcpy(&p[total], &e, 8);
       std::memcpy(&p[link_slot], p.data() + min_distance, 8);
+      const std::int32_t none = 0;
+      std::memcpy(&p[contacts], &none, 4);
     }
     p.erase(min_distance, 8);
     const std::uint32_t magic = 0x314E5552, n = static_cast<std::uint32_t>(p.size());

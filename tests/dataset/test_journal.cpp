@@ -103,8 +103,6 @@ TEST(Journal, DamagedRecordsEndTheJournal) {
   EXPECT_EQ(c.good, starts[2]);
 }
 
-// A header cut short (killed while creating the journal) is an empty journal;
-// another run's journal, or another file, is refused with one line.
 // A run keeps its link and min_distance through the journal; a record of
 // the first layout (magic "RUN1", without min_distance) is read with its
 // slot as `link`, min_distance NaN and first_layout set, the rest the same.
@@ -138,6 +136,8 @@ TEST(Journal, RecordsOfTheFirstLayoutAreRead) {
   EXPECT_EQ(first.record.status, a.record.status);
 }
 
+// A header cut short (killed while creating the journal) is an empty journal;
+// another run's journal, or another file, is refused with one line.
 TEST(Journal, HeaderChecks) {
   const std::string head = journal_head(kOptions);
   EXPECT_EQ(parse_journal(head.substr(0, 10), head, "j").good, 0u);

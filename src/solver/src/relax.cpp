@@ -397,7 +397,7 @@ RelaxResult relax_components(const Link& link, const RelaxOptions& options) {
   require_input(!options.smallest_eigenvalue, "relax: the smallest eigenvalue is computed for a knot only");
   RodModel m(link, options);
   RelaxResult result;
-  if (options.check_topology) result.link_type = link_type(link);
+  result.link_type = link_type(link);  // the input's, always: results and their JSON report it
   result.model = m.resolved().model;
   result.lambda_min = m.lambda_min();
   NewtonSolver solver(m.newton());
@@ -407,7 +407,7 @@ RelaxResult relax_components(const Link& link, const RelaxOptions& options) {
   result.positions = m.positions();
   for (const Points& P : link) result.component_sizes.push_back(static_cast<int>(P.rows()));
   if (options.check_topology) {
-    const LinkType after = ek::link_type(m.components());
+    const LinkType after = link_type(m.components());
     result.alexander_preserved = after.alexander == result.link_type->alexander;
     result.linking_preserved = after.linking_numbers == result.link_type->linking_numbers;
     result.conway_preserved = after.conway == result.link_type->conway;

@@ -211,6 +211,7 @@ void KnotSaddleOptions::validate() const {
 }
 
 PointCheck check_point(const Points& x, const VecX& rest, const RelaxOptions& model, int count) {
+  require_input(!model.slab, "check_point: the planarity slab is not part of the saddles' model");
   RodModel sys(x, rest, with_method(model, "hybrid"));
   Objective& f = sys.objective();
   PointCheck c;

@@ -4,9 +4,9 @@
 /// holding one dataset per column, one row per record, and is described
 /// once by a list of Column<Row, Context> that both the writer and the
 /// reader walk in order (the order is the file's: datasets are created in
-/// it). The data set's runs (dataset_file.hpp) and every table of the
-/// transitions file (ek/transitions/transitions_file.hpp) are written and
-/// read through it.
+/// it). The data set's runs (dataset_file.hpp), the ledger's runs
+/// (ledger.hpp) and every table of the transitions file
+/// (ek/transitions/transitions_file.hpp) are written and read through it.
 ///
 /// ~~~{.unparsed}
 ///   ColumnType  stored as

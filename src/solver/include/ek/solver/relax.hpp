@@ -121,7 +121,9 @@ struct RelaxOptions {
   /// transported (full model), so that time-parallel transport stays well defined.
   double max_tangent_rotation = 0.5;  ///< [rad]
   bool stop_at_critical_point = false;  ///< report converged-unstable instead of leaving saddles
-  bool check_topology = true;         ///< compare the Alexander polynomial of input and result
+  /// Compare the input's knot type (its Alexander polynomial) or link type
+  /// (every component's polynomial, the linking numbers, ∇) with the result's.
+  bool check_topology = true;
   bool smallest_eigenvalue = false;   ///< also compute the smallest non-rigid eigenvalue of H (stiffness)
   /// How Newton's method steps (shift ε, Hessian, Armijo constant, ...);
   /// relax() adds the goal: the tolerance, iteration cap and
@@ -241,8 +243,9 @@ struct RelaxResult {
   ///@}
   AlexanderPolynomial alexander;          ///< of the input (one component)
   AlexanderPolynomial result_alexander;   ///< of the result (one component)
-  /// Of the input with several components: each component's Alexander
-  /// polynomial, the linking numbers and ∇ (invariants.hpp).
+  /// Of the input with several components (computed with or without
+  /// check_topology): each component's Alexander polynomial, the linking
+  /// numbers and ∇ (invariants.hpp).
   std::optional<LinkType> link_type;
   std::optional<double> smallest_eigenvalue;  ///< of H without rigid modes, when asked
   double lambda_min = 0.0;          ///< straight-rod λ_min used for the shift
@@ -292,7 +295,8 @@ RelaxResult relax(const Points& curve, const RelaxOptions& options = {});
 /// the options, then Newton at ω with their tolerance, iteration cap and
 /// Newton settings. Since no accepted step lets two edges touch, no
 /// component changes its knot type and no two components pass through each
-/// other; the link type is checked again on the result (link_type()).
+/// other; the link type is checked again on the result (link_type(), with
+/// check_topology, the default).
 /// link, twist and writhe are 0 for several components (their linking
 /// numbers are link_type's). Throws InputError for components that touch
 /// or are not simple polygons, for options a link of several components

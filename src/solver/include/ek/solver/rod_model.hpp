@@ -55,7 +55,8 @@ class RodModel {
   RodModel(const RodModel&) = delete;             ///< Not copyable.
   RodModel& operator=(const RodModel&) = delete;  ///< Not copyable.
 
-  const RelaxOptions& options() const;   ///< As given.
+  /// As given (with rest_lengths set to `rest` by the constructor of one curve).
+  const RelaxOptions& options() const;
   const ResolvedModel& resolved() const;  ///< d̂, ω, the tolerance and the twist model.
   int num_components() const;            ///< [1] the link's components (1: a knot)
   int num_vertices() const;              ///< [1] of all components
@@ -64,7 +65,10 @@ class RodModel {
 
   /// The objective E_rod + f·ω E_contact [+ E_slab] at the rods' current
   /// dofs: `contact_factor` f > 0 (1: the model's contact, whose state the
-  /// model keeps; otherwise a fresh contact potential with stiffness f·ω),
+  /// model keeps from its construction on: with a Hessian margin
+  /// (RelaxOptions::contact_hessian_margin) its pattern carries over from
+  /// one objective to the next; otherwise a fresh contact potential with
+  /// stiffness f·ω),
   /// `with_slab` whether the slab (when the model has one) is a term. The
   /// same object while the arguments are those of the previous call; a call
   /// with others builds a new one and invalidates the previous reference.

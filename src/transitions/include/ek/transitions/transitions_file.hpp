@@ -31,9 +31,9 @@
 /// checkpoints its graph in this format (complete = 0) after every state's
 /// searches and every double-ended search.
 ///
-/// Version policy (the data set's): the reader accepts format_version 1
-/// only; a file of another version is one InputError line naming the file
-/// and both versions. Every column and every other attribute is required.
+/// Version policy: the reader accepts format_version 1 only; a file of
+/// another version is one InputError line naming the file and both
+/// versions. Every column and every other attribute is required.
 #include <string>
 
 #include "ek/transitions/graph.hpp"
