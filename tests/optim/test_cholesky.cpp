@@ -7,22 +7,13 @@
 
 #include "ek/core/sparse_assembler.hpp"
 #include "ek/optim/cholesky.hpp"
+#include "matrices.hpp"
 
 using namespace ek;
 
 namespace {
 
-/// 1D Laplacian-like tridiagonal matrix (upper triangle) with diagonal d.
-CholeskySolver::Matrix tridiagonal(int n, double d) {
-  SparseAssembler A;
-  A.begin(n);
-  for (int i = 0; i < n; ++i) {
-    A.add(i, i, d);
-    if (i + 1 < n) A.add(i, i + 1, -1.0);
-  }
-  A.end();
-  return A.matrix();
-}
+using test_matrices::tridiagonal;
 
 }  // namespace
 

@@ -7,6 +7,7 @@
 
 #include "ek/core/sparse_assembler.hpp"
 #include "ek/optim/eigen_analysis.hpp"
+#include "matrices.hpp"
 
 using namespace ek;
 
@@ -14,20 +15,14 @@ TEST(EigenAnalysis, SmallestEigenvaluesOfTridiagonal) {
   // tridiag(d, -1) of size n: λ_k = d - 2 cos(k π / (n + 1)), k = 1..n
   const int n = 200;
   const double d = 1.5;  // indefinite: some λ < 0
-  SparseAssembler A;
-  A.begin(n);
-  for (int i = 0; i < n; ++i) {
-    A.add(i, i, d);
-    if (i + 1 < n) A.add(i, i + 1, -1.0);
-  }
-  A.end();
+  const auto upper = test_matrices::tridiagonal(n, d);
   EigenOptions o;
   o.count = 3;
-  const EigenResult r = smallest_eigenpairs(A.matrix(), Eigen::MatrixXd(), 1e-3, o);
+  const EigenResult r = smallest_eigenpairs(upper, Eigen::MatrixXd(), 1e-3, o);
   ASSERT_TRUE(r.converged);
   for (int k = 0; k < 3; ++k) EXPECT_NEAR(r.values(k), d - 2.0 * std::cos((k + 1) * M_PI / (n + 1)), 1e-9);
   // eigenvector residual
-  const Eigen::MatrixXd H = Eigen::MatrixXd(A.matrix()).selfadjointView<Eigen::Upper>();
+  const Eigen::MatrixXd H = Eigen::MatrixXd(upper).selfadjointView<Eigen::Upper>();
   for (int k = 0; k < 3; ++k)
     EXPECT_LT((H * r.vectors.col(k) - r.values(k) * r.vectors.col(k)).norm(), 1e-7);
 }

@@ -9,26 +9,26 @@
 #include "ek/solver/rod_terms.hpp"
 
 namespace ek {
-namespace {
 
-/// The rest edge lengths of one closed curve after checking it (InputError).
-VecX checked_rest(const Points& curve, const std::optional<VecX>& given) {
+VecX checked_rest_lengths(const Points& curve, const RelaxOptions& options) {
   const auto n = curve.rows();
   require_input(n >= 4, "relax: a closed curve needs at least 4 vertices");
   require_input(curve.allFinite(), "relax: the curve has non-finite coordinates");
   require_input(edge_lengths(curve).minCoeff() > 0.0, "relax: the curve has a zero-length edge");
-  const VecX rest = given ? *given : edge_lengths(curve);
+  const VecX rest = options.rest_lengths ? *options.rest_lengths : edge_lengths(curve);
   require_input(rest.size() == n && rest.minCoeff() > 0.0 && rest.allFinite(),
                 "relax: rest lengths must be n positive numbers");
   return rest;
 }
+
+namespace {
 
 /// The rest lengths of every component: a knot's checked (options.rest_lengths
 /// or its edges), a link's its edges after checking the link and the
 /// options it does not have.
 std::vector<VecX> rest_lengths_of(const Link& link, const RelaxOptions& o) {
   require_input(!link.empty(), "relax: no curve");
-  if (link.size() == 1) return {checked_rest(link[0], o.rest_lengths)};
+  if (link.size() == 1) return {checked_rest_lengths(link[0], o)};
   require_input(!o.link, "relax: a prescribed link Lk applies to a knot, not to a link of several components");
   require_input(!o.full_model, "relax: links are relaxed in the twist-free model");
   require_input(!o.slab, "relax: the planarity slab applies to knots only");
@@ -46,10 +46,6 @@ CurveTopology topology_of(const Link& link) {
 }
 
 }  // namespace
-
-VecX checked_rest_lengths(const Points& curve, const RelaxOptions& options) {
-  return checked_rest(curve, options.rest_lengths);
-}
 
 struct RodModel::Impl {
   RelaxOptions options;
