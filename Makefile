@@ -208,8 +208,8 @@ claims: build
 	cd $(BUILD) && EK_PAPER_RESULTS=$(abspath $(RESULTS)) KNOT_TABLE=$(KNOT_TABLE) \
 	  ctest --output-on-failure -L '^paper$$' -E '^(paper_run_|figure_)' -FS '.*'
 	@echo "== claims not reproduced (paper_checks/open_claims.cpp), measured at SCALE=$(SCALE):"
-	-@cd $(BUILD) && EK_PAPER_RESULTS=$(abspath $(RESULTS)) $(abspath $(BUILD))/paper_checks/open_claims \
-	  | grep -E 'measured|OK|FAILED' || true
+	-@cd $(BUILD) && EK_PAPER_RESULTS=$(abspath $(RESULTS)) $(abspath $(BUILD))/paper_checks/paper_checks \
+	  --gtest_filter='PaperOpen*' | grep -E 'measured|OK|FAILED' || true
 
 # The claims this project does not reproduce (paper_checks/open_claims.cpp),
 # after every experiment at the ci scale; expected to fail, prints the values.
@@ -274,7 +274,7 @@ stopping-truth: build
 	@if [ ! -f $(TRUTH_DATASET) ]; then \
 	  $(BUILD)/bin/knots merge results/truth/shards/shard-*-of-04.h5 -o $(TRUTH_DATASET); fi
 	$(EXP)/exp_adaptive --scale paper --fixed $(TRUTH_DATASET) --out docs/results/truth/adaptive --jobs $(JOBS)
-	EK_PAPER_RESULTS=$(CURDIR)/docs/results/truth KNOT_TABLE=$(KNOT_TABLE) $(BUILD)/paper_checks/check_adaptive \
+	EK_PAPER_RESULTS=$(CURDIR)/docs/results/truth KNOT_TABLE=$(KNOT_TABLE) $(BUILD)/paper_checks/paper_checks \
 	  --gtest_filter='StoppingRules.*'
 
 ledger-results: build
@@ -289,8 +289,8 @@ ledger-results: build
 	  MPLBACKEND=Agg $(PYTHON) figures/fig09_milnor.py --results $$d --out $$d && \
 	  MPLBACKEND=Agg $(PYTHON) figures/fig_planarity.py --results $$d --out $$d && \
 	  MPLBACKEND=Agg $(PYTHON) figures/fig_ledger_states.py --results $$d --knot $$(case $$s in paper10) echo 8_1;; *) echo 12a_81;; esac) --out $$d && \
-	  EK_PAPER_RESULTS=$(CURDIR)/$$d KNOT_TABLE=$(KNOT_TABLE) $(BUILD)/paper_checks/check_milnor && \
-	  EK_PAPER_RESULTS=$(CURDIR)/$$d KNOT_TABLE=$(KNOT_TABLE) $(BUILD)/paper_checks/check_planarity || exit 1; \
+	  EK_PAPER_RESULTS=$(CURDIR)/$$d KNOT_TABLE=$(KNOT_TABLE) $(BUILD)/paper_checks/paper_checks \
+	    --gtest_filter='PaperMilnor.*:PaperPlanarity.*' || exit 1; \
 	done
 
 # The default relaxation method (multilevel) against another named method

@@ -50,13 +50,16 @@ function(ek_add_module NAME)
   set_property(GLOBAL PROPERTY EK_MODULE_DEPS_${NAME} "${ARG_DEPS}")
 endfunction()
 
-# ek_add_gtest(NAME SOURCES ... LIBS ... [LABEL label] [TIMEOUT seconds] [FIXTURE name])
+# ek_add_gtest(NAME SOURCES ... LIBS ... [LABEL label] [TIMEOUT seconds] [NO_DISCOVERY])
 # One GoogleTest executable; each TEST becomes a CTest entry with the label:
 # unit (default), parsers (also built with sanitizers), stress (short, in
-# `make test`), stress-long (`make stress` only), paper (claims of the paper).
+# `make test`), stress-long (`make stress` only). Tests are gathered in one
+# program per module and label: fewer programs compile and link faster, and
+# CTest still runs each test on its own. NO_DISCOVERY leaves the discovery to
+# the caller (the paper checks: one discovery per check, each with its fixture).
 # (gtest_discover_tests cannot pass a list of labels, hence one label.)
 function(ek_add_gtest NAME)
-  cmake_parse_arguments(ARG "" "TIMEOUT;LABEL;FIXTURE" "SOURCES;LIBS" ${ARGN})
+  cmake_parse_arguments(ARG "NO_DISCOVERY" "TIMEOUT;LABEL" "SOURCES;LIBS" ${ARGN})
   if(EK_PARSERS_ONLY AND NOT ARG_LABEL STREQUAL "parsers")
     return()  # the sanitizer build runs the parsers' tests only
   endif()
@@ -66,17 +69,14 @@ function(ek_add_gtest NAME)
     target_compile_options(${NAME} PRIVATE -O1)
     target_precompile_headers(${NAME} REUSE_FROM ek_test_pch)
   endif()
+  if(ARG_NO_DISCOVERY)
+    return()
+  endif()
   if(NOT ARG_LABEL)
     set(ARG_LABEL unit)
   endif()
   if(NOT ARG_TIMEOUT)
     set(ARG_TIMEOUT 600)
   endif()
-  set(fixture_properties "")
-  if(ARG_FIXTURE)
-    set(fixture_properties FIXTURES_REQUIRED ${ARG_FIXTURE})
-  endif()
-  gtest_discover_tests(${NAME}
-    PROPERTIES LABELS ${ARG_LABEL} TIMEOUT ${ARG_TIMEOUT} ${fixture_properties}
-    DISCOVERY_TIMEOUT 60)
+  gtest_discover_tests(${NAME} PROPERTIES LABELS ${ARG_LABEL} TIMEOUT ${ARG_TIMEOUT} DISCOVERY_TIMEOUT 60)
 endfunction()

@@ -14,13 +14,14 @@
 #include "results.hpp"
 #include "thresholds.hpp"
 
+using ek::paper::number;
+
 namespace {
 std::map<std::string, std::string> row(const std::string& knot, double mu, double h) {
   for (const auto& r : ek::paper::csv(ek::paper::results("jumping_dynamics") + "/dynamics.csv"))
     if (r.at("knot") == knot && std::atof(r.at("mu").c_str()) == mu && std::atof(r.at("time_step").c_str()) == h) return r;
   throw std::runtime_error("dynamics.csv has no row for " + knot);
 }
-double num(const std::map<std::string, std::string>& r, const std::string& c) { return std::atof(r.at(c).c_str()); }
 }  // namespace
 
 TEST(PaperJumpingDynamics, TwelveA1019JumpsWithoutFrictionAndStaysFlatWithIt) {
@@ -37,10 +38,10 @@ TEST(PaperJumpingDynamics, TwelveA1019JumpsWithoutFrictionAndStaysFlatWithIt) {
   EXPECT_DOUBLE_EQ(s.planar_threshold, kPlanarThreedim);
   EXPECT_EQ(free.at("status"), "rest");                   // it comes to rest within the duration
   EXPECT_EQ(free.at("outcome"), "jumped");                // 3D-ness at least 0.3 at rest
-  EXPECT_GE(num(free, "end_threedim"), kJumpThreedim);
-  EXPECT_LT(num(free, "end_energy"), num(free, "start_energy"));  // it released stored energy
+  EXPECT_GE(number(free, "end_threedim"), kJumpThreedim);
+  EXPECT_LT(number(free, "end_energy"), number(free, "start_energy"));  // it released stored energy
   EXPECT_TRUE(ek::paper::flag(free.at("alexander_preserved")));   // the knot type kept at every step
-  EXPECT_LE(num(free, "link_error"), 1e-6);                       // Lk_B fixed throughout (Appendix C), 1e-6
+  EXPECT_LE(number(free, "link_error"), 1e-6);                    // Lk_B fixed throughout (Appendix C), 1e-6
   EXPECT_EQ(held.at("outcome"), "flat");                  // enough friction holds it: 3D-ness below 0.1
   EXPECT_TRUE(ek::paper::flag(held.at("alexander_preserved")));
   EXPECT_NE(std::find(s.jumping_without_friction.begin(), s.jumping_without_friction.end(), "12a_1019"),

@@ -10,13 +10,14 @@
 #include "jumping_knots_summary.hpp"
 #include "results.hpp"
 
+using ek::paper::number;
+
 namespace {
 std::map<std::string, std::string> row(const std::string& knot) {
   for (const auto& r : ek::paper::csv(ek::paper::results("jumping_knots") + "/jumping.csv"))
     if (r.at("knot") == knot) return r;
   throw std::runtime_error("jumping.csv has no row for " + knot);
 }
-double num(const std::map<std::string, std::string>& r, const std::string& c) { return std::atof(r.at(c).c_str()); }
 }  // namespace
 
 TEST(PaperJumpingKnots, TwelveA1019Jumps) {
@@ -31,11 +32,11 @@ TEST(PaperJumpingKnots, TwelveA1019Jumps) {
   // multi-covered-circle state" (a stable equilibrium under the slab) first.
   EXPECT_EQ(r.at("flat_status"), "converged-stable");
   EXPECT_EQ(r.at("final_status"), "converged-stable");
-  EXPECT_LT(num(r, "flat_threedim"), kPlanarThreedim);       // flat: 3D-ness below the planarity threshold
+  EXPECT_LT(number(r, "flat_threedim"), kPlanarThreedim);    // flat: 3D-ness below the planarity threshold
   EXPECT_DOUBLE_EQ(s.threedim_threshold, kJumpThreedim);     // the experiment's threshold is the shared one
-  EXPECT_GE(num(r, "final_threedim"), kJumpThreedim);        // 3D-ness at least 0.3 after release
-  EXPECT_LT(num(r, "final_energy"), num(r, "flat_energy"));  // it releases stored energy
-  EXPECT_LE(num(r, "link_error"), 1e-6);                     // Lk_B preserved throughout (Appendix C), 1e-6
+  EXPECT_GE(number(r, "final_threedim"), kJumpThreedim);     // 3D-ness at least 0.3 after release
+  EXPECT_LT(number(r, "final_energy"), number(r, "flat_energy"));  // it releases stored energy
+  EXPECT_LE(number(r, "link_error"), 1e-6);                  // Lk_B preserved throughout (Appendix C), 1e-6
   EXPECT_TRUE(ek::paper::flag(r.at("jumps")));               // the experiment's verdict agrees
   EXPECT_NE(std::find(s.jumping.begin(), s.jumping.end(), "12a_1019"), s.jumping.end());  // and its summary
 }

@@ -19,11 +19,11 @@
 #include "loads_summary.hpp"
 #include "results.hpp"
 
+using ek::paper::number;
+
 namespace {
 
 using Row = std::map<std::string, std::string>;
-
-double num(const Row& r, const std::string& key) { return std::atof(r.at(key).c_str()); }
 
 /// The curve file of state `state` of `knot` in exp_puzzles' table.
 std::string puzzle_curve(const std::vector<Row>& puzzles, const std::string& knot, const std::string& state) {
@@ -108,15 +108,15 @@ TEST(PaperLoads, EverySnapIsNamedByItsSimilarity) {
       const std::string at = "run " + r.at("run") + " snap " + z.at("snap");
       const ek::Points x = curve(z.at("curve_released"));
       const double to_start = sim(x, start), to_other = sim(x, other);
-      EXPECT_NEAR(to_start, num(z, "similarity_start"), 1e-9) << at;
-      EXPECT_NEAR(to_other, num(z, "similarity_other"), 1e-9) << at;
+      EXPECT_NEAR(to_start, number(z, "similarity_start"), 1e-9) << at;
+      EXPECT_NEAR(to_other, number(z, "similarity_other"), 1e-9) << at;
       const std::string name = to_other >= s.reach && to_other > to_start ? "other"
                                : to_start >= s.reach                        ? "start"
                                                                             : "neither";
       EXPECT_EQ(z.at("released_state"), name) << at;
       EXPECT_EQ(z.at("released_status"), "converged-stable") << at;
-      EXPECT_GT(num(z, "jump"), 0.0) << at;
-      EXPECT_GT(num(z, "energy_drop_scaled"), 0.0) << at;
+      EXPECT_GT(number(z, "jump"), 0.0) << at;
+      EXPECT_GT(number(z, "energy_drop_scaled"), 0.0) << at;
       if (name == "other" && first_other.empty()) first_other = z.at("snap");
     }
     EXPECT_EQ(r.at("flip"), first_other.empty() ? "false" : "true") << "run " << r.at("run");

@@ -20,7 +20,7 @@
 using ek::results::PeriodicMember;
 
 namespace {
-const std::vector<PeriodicMember>& members() {
+const std::vector<PeriodicMember>& braid_members() {
   static const auto s = ek::paper::summary<ek::results::PeriodicBraidsSummary>("periodic_braids");
   return s.members;
 }
@@ -32,9 +32,9 @@ bool is_3d(double threedim) { return threedim >= ek::results::kPlanarThreedim; }
 // all knots; the tabulated ones (4_1, 8_18, 10_123, 9_40) carry the table's
 // Alexander polynomial after relaxation. Tolerance: exact (integer polynomials).
 TEST(PaperPeriodicBraids, TabulatedMembersKeepTheTablesKnotType) {
-  ASSERT_EQ(members().size(), 8u);
+  ASSERT_EQ(braid_members().size(), 8u);
   int tabulated = 0;
-  for (const auto& m : members()) {
+  for (const auto& m : braid_members()) {
     EXPECT_TRUE(m.alexander_preserved) << label(m);
     if (m.tabulated().empty()) {
       EXPECT_FALSE(m.alexander_matches_table.has_value()) << label(m);  // nothing to compare with
@@ -52,7 +52,7 @@ TEST(PaperPeriodicBraids, TabulatedMembersKeepTheTablesKnotType) {
 // Every member relaxes to a stable equilibrium (gradient below tolerance,
 // Hessian positive semidefinite up to the rigid motions).
 TEST(PaperPeriodicBraids, EveryMemberIsAStableEquilibrium) {
-  for (const auto& m : members()) {
+  for (const auto& m : braid_members()) {
     std::cout << "[ measured ] " << label(m) << ": " << m.status << ", 3D-ness " << m.threedim << std::endl;
     EXPECT_EQ(m.status, "converged-stable") << label(m);
   }
@@ -67,7 +67,7 @@ TEST(PaperPeriodicBraids, EveryMemberIsAStableEquilibrium) {
 // stops next to, not on, the symmetric equilibrium; the symmetric critical
 // point below is exactly symmetric).
 TEST(PaperPeriodicBraids, EveryStateHasPFoldSymmetry) {
-  for (const auto& m : members()) {
+  for (const auto& m : braid_members()) {
     const double err = m.symmetry_error, control = m.control_error;
     std::cout << "[ measured ] " << label(m) << ": p-fold symmetry error " << err << ", (p+1)-fold control " << control
               << std::endl;
@@ -85,7 +85,7 @@ TEST(PaperPeriodicBraids, EveryStateHasPFoldSymmetry) {
 // asymmetric neighbour, 9_40's 3.6e-4 above it).
 TEST(PaperPeriodicBraids, FourOneAndNineFortyReachTheirSymmetric3DStatesFromTheCylinder) {
   int found = 0;
-  for (const auto& m : members()) {
+  for (const auto& m : braid_members()) {
     if (m.tabulated() != "4_1" && m.tabulated() != "9_40") continue;
     ++found;
     const auto& s = m.symmetric_critical_point;
@@ -112,8 +112,8 @@ TEST(PaperPeriodicBraids, FourOneAndNineFortyReachTheirSymmetric3DStatesFromTheC
 // classes summing to 1. Printed: its energy against the equilibrium's,
 // 3D-ness, index, and for each unstable mode its wavenumber (0: symmetric).
 TEST(PaperPeriodicBraids, EveryMemberHasAVerifiedSymmetricCriticalPoint) {
-  ASSERT_EQ(members().size(), 8u);
-  for (const auto& m : members()) {
+  ASSERT_EQ(braid_members().size(), 8u);
+  for (const auto& m : braid_members()) {
     const auto& s = m.symmetric_critical_point;
     std::cout << "[ measured ] " << label(m) << ": symmetric critical point (" << s.solve << ") energy " << s.energy
               << " (equilibrium from the cylinder " << m.equilibrium.energy << ", 3D-ness " << m.equilibrium.threedim
@@ -148,7 +148,7 @@ TEST(PaperPeriodicBraids, EveryMemberHasAVerifiedSymmetricCriticalPoint) {
 // to each other by π/p"; measured, it follows the family: docs/reproducing.md.)
 TEST(PaperPeriodicBraids, Symmetric3DCriticalPointsHaveTwoRegularPolygons) {
   bool four_one = false, nine_forty = false;
-  for (const auto& m : members()) {
+  for (const auto& m : braid_members()) {
     const auto& s = m.symmetric_critical_point;
     if (!is_3d(s.threedim)) continue;
     four_one |= m.tabulated() == "4_1";
@@ -172,7 +172,7 @@ TEST(PaperPeriodicBraids, Symmetric3DCriticalPointsHaveTwoRegularPolygons) {
 // the bottleneck's gradient norm, energy and p-gons (the state Fig. 16 draws
 // for these members, labelled "not a critical point").
 TEST(PaperPeriodicBraids, FlatMembersBottleneckIsNotCritical) {
-  for (const auto& m : members()) {
+  for (const auto& m : braid_members()) {
     if (is_3d(m.symmetric_critical_point.threedim)) {
       // 3D from the subspace's minimum, or found by the search
       if (m.three_d_search) {
@@ -198,7 +198,7 @@ TEST(PaperPeriodicBraids, FlatMembersBottleneckIsNotCritical) {
 // the recorded axis and centre, the p-fold error equals the recorded one
 // (the curve is written with 17 significant digits; tolerance 1e-9).
 TEST(PaperPeriodicBraids, RecordedAxisReproducesTheSymmetryError) {
-  for (const auto& m : members()) {
+  for (const auto& m : braid_members()) {
     const ek::Vec3 axis(m.axis[0], m.axis[1], m.axis[2]), c(m.center[0], m.center[1], m.center[2]);
     EXPECT_NEAR(axis.norm(), 1.0, 1e-12) << label(m);
     const ek::Points P = ek::read_curve(ek::paper::results("periodic_braids") + "/" + m.curve);

@@ -13,7 +13,7 @@
 using ek::results::PeriodicLinksMember;
 
 namespace {
-const std::vector<PeriodicLinksMember>& members() {
+const std::vector<PeriodicLinksMember>& link_members() {
   static const auto s = ek::paper::summary<ek::results::PeriodicLinksSummary>("periodic_links");
   return s.members;
 }
@@ -29,7 +29,7 @@ std::string label(const PeriodicLinksMember& m) { return m.family + " p=" + std:
 // the nearest 3D states; a member that deploys at no link of the scan is
 // listed with the scan's range.
 TEST(StudyPeriodicLinks, LinkScanHoldsTheLinkAndFindsTheOnsets) {
-  for (const auto& m : members()) {
+  for (const auto& m : link_members()) {
     const auto& ls = m.link_scan;
     ASSERT_FALSE(ls.runs.empty()) << label(m);
     for (const auto& r : ls.runs) {
@@ -65,7 +65,7 @@ TEST(StudyPeriodicLinks, LinkScanHoldsTheLinkAndFindsTheOnsets) {
 // of p instead: docs/reproducing.md).
 TEST(StudyPeriodicLinks, SymmetricDeployedStatesHaveTwoRegularPolygons) {
   bool four_one = false, nine_forty = false;
-  for (const auto& m : members()) {
+  for (const auto& m : link_members()) {
     if (!m.link_scan.symmetric) continue;
     const auto& y = *m.link_scan.symmetric;
     const double exp = m.expected_rotation_deg;

@@ -19,7 +19,7 @@ namespace {
 
 /// [1] relative energy agreement of the stored start with the reported barrier
 /// (E_start = E_saddle − barrier; the start is polished to the tolerance).
-constexpr double kEnergyTolerance = 1e-8;
+constexpr double kSaddleEnergyTolerance = 1e-8;
 /// [1] the descent's minimum is the start at this similarity or more (the
 /// verification's threshold).
 constexpr double kStartSimilarity = 0.99;
@@ -58,7 +58,7 @@ TEST(PaperSaddles, EveryReportedSaddleIsVerified) {
     ASSERT_TRUE(c.index.converged) << at;
     EXPECT_EQ(c.index.negative, 1) << at << "eigenvalues " << c.index.values.transpose();
     EXPECT_EQ(c.index.near_zero, 0) << at << "within " << c.threshold << " of zero";
-    EXPECT_NEAR(c.energy, v.energy, kEnergyTolerance * std::abs(v.energy)) << at;
+    EXPECT_NEAR(c.energy, v.energy, kSaddleEnergyTolerance * std::abs(v.energy)) << at;
     EXPECT_GT(v.barrier, 0.0) << at;
     std::vector<double> energies;
     const std::vector<ek::Points> path = ek::read_path_obj(dir + "/" + v.folder + "/path.obj", energies);
@@ -69,7 +69,7 @@ TEST(PaperSaddles, EveryReportedSaddleIsVerified) {
       EXPECT_GT(m.index.values(0), m.threshold) << at << "an end is not stable";
     }
     const ek::PointCheck start = ek::check_point(path.front(), rest, ek::RelaxOptions{});
-    EXPECT_NEAR(v.energy - start.energy, v.barrier, kEnergyTolerance * std::abs(v.energy)) << at;
+    EXPECT_NEAR(v.energy - start.energy, v.barrier, kSaddleEnergyTolerance * std::abs(v.energy)) << at;
     const ek::Points& state = e.equilibria[static_cast<size_t>(clusters.at(static_cast<size_t>(v.state)).representative)];
     EXPECT_GE(sim(path.front(), state), kStartSimilarity) << at;
     for (size_t k = 0; k < path.size(); ++k) {

@@ -25,7 +25,7 @@ namespace {
 
 /// [1] relative agreement of a stored energy with the one computed again
 /// (the saddle is converged to the model's gradient tolerance).
-constexpr double kEnergyTolerance = 1e-8;
+constexpr double kGraphEnergyTolerance = 1e-8;
 
 ek::TransitionGraph graph() {
   return ek::read_transitions(ek::paper::results("transitions") + "/transitions_4_1.h5");
@@ -62,7 +62,7 @@ void expect_saddles_verified(const ek::TransitionGraph& g) {
     ASSERT_TRUE(c.index.converged) << at;
     EXPECT_EQ(c.index.negative, 1) << at << "eigenvalues " << c.index.values.transpose();
     EXPECT_EQ(c.index.near_zero, 0) << at;
-    EXPECT_NEAR(c.energy, s.energy, kEnergyTolerance * std::abs(s.energy)) << at;
+    EXPECT_NEAR(c.energy, s.energy, kGraphEnergyTolerance * std::abs(s.energy)) << at;
     ASSERT_FALSE(s.path.empty()) << at;
     for (const ek::Points* end : {&s.path.front(), &s.path.back()}) {
       const ek::PointCheck m = ek::check_point(*end, rest, ek::RelaxOptions{});
@@ -194,7 +194,7 @@ void expect_verified_chain(const ek::TransitionGraph& g, int a, int b, const ek:
     ASSERT_TRUE(c.index.converged) << at;
     EXPECT_EQ(c.index.negative, 1) << at << "edge " << k << ": eigenvalues " << c.index.values.transpose();
     EXPECT_EQ(c.index.near_zero, 0) << at << "edge " << k;
-    EXPECT_NEAR(c.energy, x.energy, kEnergyTolerance * std::abs(x.energy)) << at << "edge " << k;
+    EXPECT_NEAR(c.energy, x.energy, kGraphEnergyTolerance * std::abs(x.energy)) << at << "edge " << k;
     top = std::max(top, e.energy);
   }
   const double forward = (top - g.states[static_cast<size_t>(a)].energy) / g.energy_scale;

@@ -41,6 +41,11 @@ inline bool flag(const std::string& cell) {
   throw std::runtime_error("CSV flag '" + cell + "': expected true or false");
 }
 
+/// A numeric CSV cell of `row` (as read by csv()) in `column`.
+inline double number(const std::map<std::string, std::string>& row, const std::string& column) {
+  return std::atof(row.at(column).c_str());
+}
+
 /// An optional measured value for printing: the value, or "n/a".
 template <class T>
 std::string or_na(const std::optional<T>& v) {

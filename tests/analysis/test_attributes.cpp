@@ -15,17 +15,8 @@ using namespace ek;
 
 namespace {
 
-Points ellipse(int n, double a, double b) {
-  Points P(n, 3);
-  for (int i = 0; i < n; ++i) {
-    const double t = 2 * M_PI * i / n;
-    P.row(i) << a * std::cos(t), b * std::sin(t), 0.0;
-  }
-  return P;
-}
-
 /// Helix (R cos θ, R sin θ, hθ) for θ in [0, 2π·turns], m vertices (closed by the chord).
-Points helix(int m, double R, double h, double turns) {
+Points helix_turns(int m, double R, double h, double turns) {
   Points P(m, 3);
   for (int i = 0; i < m; ++i) {
     const double t = 2 * M_PI * turns * i / (m - 1);
@@ -71,7 +62,7 @@ TEST(Attributes, Circle) {
 TEST(Attributes, Ellipse) {
   const int n = 256;
   const double a = 2.0, b = 0.8;
-  const Points E = fixtures::rigid_copy(ellipse(n, a, b), fixtures::random_rotation(2), Vec3(-1, 0, 4), 9);
+  const Points E = fixtures::rigid_copy(fixtures::ellipse(n, a, b), fixtures::random_rotation(2), Vec3(-1, 0, 4), 9);
   const GeometricAttributes g = geometric_attributes(E);
   EXPECT_NEAR(g.total_curvature, 2 * M_PI, 1e-12);  // convex planar
   EXPECT_NEAR(g.threedim, 0.0, 1e-12);
@@ -88,7 +79,7 @@ TEST(Attributes, Ellipse) {
 TEST(Attributes, Helix) {
   const double R = 1.0, h = 0.5, turns = 4;  // height H = 2π·4·0.5 ≈ 12.6 > 2R
   const int m = 1001;
-  const Points P = helix(m, R, h, turns);
+  const Points P = helix_turns(m, R, h, turns);
   const GeometricAttributes g = geometric_attributes(P);
   const double H = 2 * M_PI * turns * h;
   // bounding box: 2R x 2R x H (the vertex set reaches ±R in every direction to O(1/m²))
@@ -158,7 +149,7 @@ TEST(Attributes, MinimalBoxFromTheHullBoundaryIsTheBoxFromEveryPoint) {
   curves.push_back(fixtures::torus_knot(400, 2, 3));
   curves.push_back(fixtures::rigid_copy(box_polygon(4.0, 2.0, 1.0, 5), fixtures::random_rotation(2), Vec3(1, 2, 3), 0));
   curves.push_back(fixtures::random_lattice_walk(400, 11));
-  curves.push_back(ellipse(100, 3.0, 1.0));
+  curves.push_back(fixtures::ellipse(100, 3.0, 1.0));
   for (const char* name : {"4_1-smooth.obj", "12n_838-braid.obj", "9_47-cubiclattice.txt"})
     curves.push_back(read_curve(fixtures::peer_dir() + "/" + name));
   for (size_t c = 0; c < curves.size(); ++c) {

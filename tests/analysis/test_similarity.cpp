@@ -14,15 +14,6 @@ namespace {
 
 Points reverse_order(const Points& P) { return P.colwise().reverse(); }
 
-Points ellipse(int n, double a, double b) {
-  Points P(n, 3);
-  for (int i = 0; i < n; ++i) {
-    const double t = 2 * M_PI * i / n;
-    P.row(i) << a * std::cos(t), b * std::sin(t), 0.0;
-  }
-  return P;
-}
-
 std::vector<SimilarityOptions> all_option_sets() {
   std::vector<SimilarityOptions> v;
   for (bool r : {false, true})
@@ -42,7 +33,7 @@ std::vector<Points> test_curves(int n) {
   c.push_back(fixtures::torus_knot(n, 2, 5));
   for (std::uint64_t seed = 1; seed <= 5; ++seed) c.push_back(fixtures::random_fourier_curve(n, 4, seed));
   c.push_back(fixtures::circle(n, 1.0));
-  c.push_back(ellipse(n, 2.0, 1.0));
+  c.push_back(fixtures::ellipse(n, 2.0, 1.0));
   return c;
 }
 
@@ -184,7 +175,7 @@ TEST(Similarity, FftEqualsDirectEvaluation) {
 TEST(Similarity, ZeroTorsionRule) {
   const int n = 160;
   const Points C = fixtures::circle(n, 1.0);
-  const Points E = ellipse(n, 2.0, 1.0);
+  const Points E = fixtures::ellipse(n, 2.0, 1.0);
   const Points K = fixtures::torus_knot(n, 2, 3);
   SimilarityEngine engine(n);
   const SignatureSpectrum sc = engine.spectrum(C), se = engine.spectrum(E), sk = engine.spectrum(K);

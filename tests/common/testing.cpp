@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
+#include <iterator>
 
 #include <Eigen/Geometry>
 
@@ -13,6 +15,15 @@ std::string peer_dir() {
   const char* env = std::getenv("EK_PEER_DATA");
   if (env && env[0]) return env;
   return config::kPeerDataDir;
+}
+
+std::string read_bytes(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+void write_bytes(const std::string& path, const std::string& bytes) {
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
 }
 
 Points random_lattice_walk(int n, std::uint64_t seed) {
@@ -62,6 +73,21 @@ Points circle(int n, const Vec3& c, double r, const Vec3& u, const Vec3& v) {
   for (int i = 0; i < n; ++i) {
     const double t = 2.0 * M_PI * i / n;
     P.row(i) = (c + r * (std::cos(t) * u + std::sin(t) * v)).transpose();
+  }
+  return P;
+}
+
+Points unit_ring(int n, double z0) {
+  Points P = circle(n, 0.5 / std::sin(M_PI / n));
+  P.col(2).setConstant(z0);
+  return P;
+}
+
+Points ellipse(int n, double a, double b) {
+  Points P(n, 3);
+  for (int i = 0; i < n; ++i) {
+    const double t = 2 * M_PI * i / n;
+    P.row(i) << a * std::cos(t), b * std::sin(t), 0.0;
   }
   return P;
 }

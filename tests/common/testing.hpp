@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <cstring>
 #include <initializer_list>
 #include <functional>
 #include <random>
@@ -26,6 +27,20 @@ Matrix rows3(std::initializer_list<std::array<typename Matrix::Scalar, 3>> rows)
 /// Folder of the peer implementation's curves (../shared/data/peer).
 std::string peer_dir();
 
+/// The bytes of the file at `path` ("" when it cannot be read).
+std::string read_bytes(const std::string& path);
+
+/// Writes `bytes` as the whole file at `path` (created or truncated).
+void write_bytes(const std::string& path, const std::string& bytes);
+
+/// The value of type T stored at byte `offset` of `bytes` (native byte order).
+template <class T>
+T read_at(const std::string& bytes, size_t offset) {
+  T x;
+  std::memcpy(&x, bytes.data() + offset, sizeof(T));
+  return x;
+}
+
 /// A random smooth closed curve: a sum of `modes` random Fourier modes,
 /// sampled at n points (not necessarily simple).
 Points random_fourier_curve(int n, int modes, std::uint64_t seed, double amplitude = 1.0);
@@ -40,6 +55,12 @@ Points circle(int n, double R);
 /// Circle of centre c and radius r in the plane of the unit vectors u, v,
 /// n vertices, run from c + r·u towards c + r·v.
 Points circle(int n, const Vec3& c, double r, const Vec3& u, const Vec3& v);
+
+/// A ring of n unit edges (a regular n-gon) in the plane z = z0, centred on the z axis.
+Points unit_ring(int n, double z0 = 0.0);
+
+/// Ellipse (a cos t, b sin t, 0), t = 2πi/n, n vertices.
+Points ellipse(int n, double a, double b);
 
 /// Torus knot T(p, q) on a torus with radii R (core) and r (tube), n vertices.
 Points torus_knot(int n, int p, int q, double R = 2.0, double r = 1.0);

@@ -20,6 +20,7 @@
 #include "cli_runner.hpp"
 #include "ek/core/errors.hpp"
 #include "ek/dataset/dataset_file.hpp"
+#include "testing.hpp"
 #include "unsealed_copy.hpp"
 
 using ek::clitest::run;
@@ -28,15 +29,6 @@ namespace fs = std::filesystem;
 namespace {
 
 enum class Outcome { Correct, Refused, Wrong, Crash };
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
-void spit(const std::string& path, const std::string& bytes) {
-  std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
-}
 
 bool same_runs(const std::vector<ek::RunRecord>& a, const std::vector<ek::RunRecord>& b) {
   if (a.size() != b.size()) return false;
@@ -112,7 +104,7 @@ Outcome read_all_ways(const std::string& file, const std::string& dir, const Ref
     const std::string obj = dir + "/case.obj";
     fs::remove(obj);
     outcomes.push_back(cli("export " + file + " 3_1 " + std::to_string(i) + " -o " + obj, "export",
-                           [&](const auto&) { return slurp(obj) == ref.exports[i]; }));
+                           [&](const auto&) { return ek::fixtures::read_bytes(obj) == ref.exports[i]; }));
   }
   Outcome worst = Outcome::Correct;
   for (Outcome o : outcomes)
@@ -141,7 +133,7 @@ Reference reference_of(const std::string& file, const std::string& dir) {
   for (size_t i = 0; i < ref.entries.front().equilibria.size(); ++i) {
     const std::string obj = dir + "/ref" + std::to_string(i) + ".obj";
     EXPECT_EQ(run("export " + file + " 3_1 " + std::to_string(i) + " -o " + obj).status, 0);
-    ref.exports.push_back(slurp(obj));
+    ref.exports.push_back(ek::fixtures::read_bytes(obj));
   }
   return ref;
 }
@@ -150,11 +142,11 @@ Reference reference_of(const std::string& file, const std::string& dir) {
 /// (seeded positions, each XORed with a nonzero byte); one table each.
 std::pair<Table, Table> damage(const std::string& file, const std::string& dir, std::uint64_t seed) {
   const Reference ref = reference_of(file, dir);
-  const std::string bytes = slurp(file);
+  const std::string bytes = ek::fixtures::read_bytes(file);
   const std::string damaged = dir + "/damaged.h5";
   std::pair<Table, Table> tables;
   for (int k = 0; k < 20; ++k) {
-    spit(damaged, bytes.substr(0, bytes.size() * static_cast<size_t>(k) / 20));
+    ek::fixtures::write_bytes(damaged, bytes.substr(0, bytes.size() * static_cast<size_t>(k) / 20));
     tables.first.add(read_all_ways(damaged, dir, ref));
   }
   std::mt19937_64 rng(seed);
@@ -162,7 +154,7 @@ std::pair<Table, Table> damage(const std::string& file, const std::string& dir, 
     std::string flipped = bytes;
     const size_t at = std::uniform_int_distribution<size_t>(0, bytes.size() - 1)(rng);
     flipped[at] = static_cast<char>(flipped[at] ^ std::uniform_int_distribution<int>(1, 255)(rng));
-    spit(damaged, flipped);
+    ek::fixtures::write_bytes(damaged, flipped);
     const Outcome o = read_all_ways(damaged, dir, ref);
     tables.second.add(o);
     if (o == Outcome::Wrong) std::printf("  changed byte at %zu of %zu: a read returned other values\n", at, bytes.size());

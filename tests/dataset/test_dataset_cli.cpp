@@ -15,6 +15,7 @@
 #include "cli_runner.hpp"
 #include "ek/dataset/dataset_file.hpp"
 #include "metadata_testing.hpp"
+#include "testing.hpp"
 #include "journal.hpp"
 
 using ek::clitest::run;
@@ -24,13 +25,6 @@ namespace fs = std::filesystem;
 namespace {
 
 const std::string kSmall = " -n 100 --no-stiffness --quiet ";
-
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 /// Equilibria of every knot in the file (the deterministic part of a data set).
 std::map<std::string, std::vector<ek::Points>> equilibria(const std::string& path) {
@@ -170,7 +164,7 @@ int finished_runs(const std::string& work, const std::string& knot, int samples)
     EXPECT_EQ(static_cast<int>(r.read(knot).runs.size()), samples);
     return samples;
   }
-  const std::string data = slurp(work + "/" + knot + ".journal");
+  const std::string data = ek::fixtures::read_bytes(work + "/" + knot + ".journal");
   const size_t line1 = data.find('\n'), line2 = line1 == std::string::npos ? line1 : data.find('\n', line1 + 1);
   if (line2 == std::string::npos) return 0;  // no journal, or killed while writing its header
   return static_cast<int>(ek::parse_journal(data, data.substr(0, line2 + 1), knot).runs.size());
@@ -283,7 +277,7 @@ TEST(DatasetCli, BadInputOverwritesNothing) {
   const std::string dir = temp_dir("ds_bad");
   const std::string file = dir + "/d.h5";
   ASSERT_EQ(run("explore 3_1 --samples 2" + kSmall + "-o " + file).status, 0);
-  const std::string before = slurp(file);
+  const std::string before = ek::fixtures::read_bytes(file);
   expect_bad_input("explore 13_7 --samples 2" + kSmall + "-o " + file, "unknown knot '13_7'");
   expect_bad_input("explore 4_1 --samples 2 -n 100 --radius 0.1 --quiet -o " + file, "radius 0.2 vs 0.1");
   expect_bad_input("explore 4_1 --samples 2 -n 120 --no-stiffness --quiet -o " + file, "vertices 100 vs 120");
@@ -301,7 +295,7 @@ TEST(DatasetCli, BadInputOverwritesNothing) {
                    "contact_continuation factors must be in (0, 1)");
   expect_bad_input("explore 4_1 --samples 2 --continuation 1e-3," + kSmall + "-o " + file,
                    "--continuation: '' is not a number");
-  EXPECT_EQ(slurp(file), before);
+  EXPECT_EQ(ek::fixtures::read_bytes(file), before);
   // a second explore of the same knot is a no-op; another knot extends the file
   const auto again = run("explore 3_1 --samples 2" + kSmall + "-o " + file + " --json");
   ASSERT_EQ(again.status, 0);
@@ -319,7 +313,7 @@ TEST(DatasetCli, EveryParameterMustMatchToExtendOrMerge) {
   const std::string file = dir + "/d.h5";
   const std::string same = " --samples 1 -n 100 --quiet -o " + file;
   ASSERT_EQ(run("explore 3_1 --no-stiffness" + same).status, 0);
-  const std::string before = slurp(file);
+  const std::string before = ek::fixtures::read_bytes(file);
   const std::vector<std::pair<std::string, std::string>> options = {
       {"--young 2500", "young"},       {"--poisson 0.35", "poisson"},        {"--radius 0.15", "radius"},
       {"--tol 1e-7", "tolerance"},     {"--max-iter 300", "max_iterations"}, {"--burn-in 2", "burn_in"},
@@ -330,7 +324,7 @@ TEST(DatasetCli, EveryParameterMustMatchToExtendOrMerge) {
   expect_bad_input("explore 4_1 --no-stiffness --samples 2 -n 100 --quiet -o " + file, "(sampling fixed:1 vs fixed:2)");
   expect_bad_input("explore 4_1 --no-stiffness --adaptive -n 100 --quiet -o " + file, "(sampling fixed:1 vs adaptive:");
   expect_bad_input("explore 4_1 --no-stiffness --samples 1 -n 120 --quiet -o " + file, "(vertices 100 vs 120)");
-  EXPECT_EQ(slurp(file), before);
+  EXPECT_EQ(ek::fixtures::read_bytes(file), before);
   EXPECT_FALSE(fs::exists(file + ".work"));
   // merge: a second data set (knot 4_1) with one field of the table changed
   const ek::KnotEntry knot = ek::DatasetReader(file).read("3_1");
@@ -346,12 +340,12 @@ TEST(DatasetCli, EveryParameterMustMatchToExtendOrMerge) {
       w.add(renamed);
       w.commit();
     }
-    const std::string other_before = slurp(dir + "/other.h5");
+    const std::string other_before = ek::fixtures::read_bytes(dir + "/other.h5");
     expect_bad_input("merge " + file + " " + dir + "/other.h5 -o " + dir + "/merged.h5", "(" + f.name + " ");
     EXPECT_FALSE(fs::exists(dir + "/merged.h5")) << f.name;
-    EXPECT_EQ(slurp(dir + "/other.h5"), other_before) << f.name;
+    EXPECT_EQ(ek::fixtures::read_bytes(dir + "/other.h5"), other_before) << f.name;
   }
-  EXPECT_EQ(slurp(file), before);
+  EXPECT_EQ(ek::fixtures::read_bytes(file), before);
   // describe: every field of the table, with the values of the file
   const auto d = run("describe " + file + " --json");
   ASSERT_EQ(d.status, 0) << d.err;

@@ -143,7 +143,6 @@ TEST(DatasetFile, BadFilesAreInputErrors) {
   std::remove(path.c_str());
 }
 
-
 namespace {
 
 bool is_empty(const FieldValue& v) { return std::holds_alternative<std::monostate>(v); }
@@ -382,15 +381,6 @@ TEST(DatasetMetadataTable, TextAndJsonDescriptions) {
 
 namespace {
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
-void spit(const std::string& path, const std::string& bytes) {
-  std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
-}
-
 /// A data set of two knots (2 and 0 equilibria of 20 vertices).
 std::string small_dataset(const std::string& name) {
   const std::string path = ::testing::TempDir() + name;
@@ -435,29 +425,29 @@ void expect_refused(F read, const std::string& needle) {
 // refused before HDF5 parses anything.
 TEST(DatasetFile, ChecksumDetectsDamage) {
   const std::string path = small_dataset("sealed.h5");
-  const std::string good = slurp(path);
+  const std::string good = fixtures::read_bytes(path);
   ASSERT_EQ(good.compare(0, 33, "elastic-knots-dataset checksum 1\n"), 0);
   EXPECT_EQ(good.compare(512, 4, "\x89HDF"), 0);
   const std::string damaged = path + ".damaged.h5";
-  spit(damaged, good.substr(0, good.size() - 100));
+  fixtures::write_bytes(damaged, good.substr(0, good.size() - 100));
   expect_refused([&] { DatasetReader r(damaged); }, "bytes, but it was written with " + std::to_string(good.size()));
   for (size_t at : {size_t{600}, good.size() / 2, good.size() - 1}) {
     std::string flipped = good;
     flipped[at] = static_cast<char>(flipped[at] ^ 0x10);
-    spit(damaged, flipped);
+    fixtures::write_bytes(damaged, flipped);
     expect_refused([&] { DatasetReader r(damaged); }, "its checksum does not match");
   }
   std::string header = good;
   header[40] = static_cast<char>(header[40] ^ 0x01);  // a digit of the CRC
-  spit(damaged, header);
+  fixtures::write_bytes(damaged, header);
   expect_refused([&] { DatasetReader r(damaged); }, "damaged");
   header = good;
   header[300] = 'x';  // the zero padding
-  spit(damaged, header);
+  fixtures::write_bytes(damaged, header);
   expect_refused([&] { DatasetReader r(damaged); }, "checksum header is unreadable");
-  spit(damaged, good + "x");
+  fixtures::write_bytes(damaged, good + "x");
   expect_refused([&] { DatasetReader r(damaged); }, "truncated or extended");
-  spit(damaged, std::string(600, '\0'));
+  fixtures::write_bytes(damaged, std::string(600, '\0'));
   expect_refused([&] { DatasetReader r(damaged); }, "is not a readable HDF5 data set");
   std::remove(damaged.c_str());
   std::remove(path.c_str());
@@ -469,7 +459,7 @@ TEST(DatasetFile, FilesWithoutChecksumAreStillRead) {
   const std::string path = small_dataset("with_checksum.h5");
   const std::string old = ::testing::TempDir() + "without_checksum.h5";
   fixtures::write_unsealed_copy(path, old);
-  ASSERT_EQ(slurp(old).compare(0, 4, "\x89HDF"), 0);
+  ASSERT_EQ(fixtures::read_bytes(old).compare(0, 4, "\x89HDF"), 0);
   expect_same_content(path, old);
   std::remove(old.c_str());
   std::remove(path.c_str());
@@ -523,9 +513,9 @@ void replace_dataset(hid_t parent, const char* name, hid_t type, std::vector<hsi
 // another name. Each is now an InputError naming the problem.
 TEST(DatasetFile, ShapesAndTypesAreChecked) {
   const std::string path = ::testing::TempDir() + "edited.h5";
-  const std::string good = slurp(small_dataset("shapes.h5"));
+  const std::string good = fixtures::read_bytes(small_dataset("shapes.h5"));
   auto check = [&](const std::function<void(hid_t)>& edit, const std::string& needle) {
-    spit(path, good);
+    fixtures::write_bytes(path, good);
     edit_file(path, edit);
     expect_refused(
         [&] {

@@ -19,7 +19,7 @@ namespace {
 
 const std::string kOptions = "knot=3_1 n=4 test";
 
-JournalRun run(int sample, bool stable) {
+JournalRun journal_run(int sample, bool stable) {
   JournalRun r;
   r.record.sample = sample;
   r.record.status = stable ? RunStatus::ConvergedStable : RunStatus::Stalled;
@@ -34,9 +34,9 @@ std::string three_runs() {
   std::filesystem::remove(path);
   {
     Journal j(path, kOptions);
-    j.append(run(0, true));
-    j.append(run(1, false));
-    j.append(run(2, true));
+    j.append(journal_run(0, true));
+    j.append(journal_run(1, false));
+    j.append(journal_run(2, true));
   }
   std::ifstream in(path, std::ios::binary);
   std::string bytes((std::istreambuf_iterator<char>(in)), {});
@@ -109,7 +109,7 @@ TEST(Journal, DamagedRecordsEndTheJournal) {
 TEST(Journal, RecordsOfTheFirstLayoutAreRead) {
   const std::string path = ::testing::TempDir() + "layouts.journal";
   std::filesystem::remove(path);
-  JournalRun a = run(0, true);
+  JournalRun a = journal_run(0, true);
   a.link = 1.5;
   a.min_distance = 0.25;
   a.energy.contact = 0.125;

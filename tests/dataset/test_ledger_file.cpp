@@ -62,17 +62,6 @@ Ledger sample_ledger() {
   return l;
 }
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
-void spit(const std::string& path, const std::string& bytes) {
-  std::ofstream(path, std::ios::binary) << bytes;
-}
-
 }  // namespace
 
 // Every field reads back: integers and attributes exactly, the kept curves
@@ -140,16 +129,16 @@ TEST(LedgerFile, SpreadIsOverTheStatesMembers) {
 TEST(LedgerFile, DamagedAndForeignFilesAreRefused) {
   const std::string path = ::testing::TempDir() + "good.ledger.h5", bad = ::testing::TempDir() + "bad.ledger.h5";
   write_ledger(path, sample_ledger());
-  const std::string good = slurp(path);
+  const std::string good = fixtures::read_bytes(path);
   std::string flipped = good;
   flipped[good.size() / 2] = static_cast<char>(flipped[good.size() / 2] ^ 0x10);
-  spit(bad, flipped);
+  fixtures::write_bytes(bad, flipped);
   fixtures::expect_input_error([&] { read_ledger(bad); }, "ledger '" + bad + "' is damaged");
-  spit(bad, good.substr(0, good.size() - 100));
+  fixtures::write_bytes(bad, good.substr(0, good.size() - 100));
   fixtures::expect_input_error([&] { read_ledger(bad); }, "truncated");
-  spit(bad, good.substr(512));  // the HDF5 file without its checksum header
+  fixtures::write_bytes(bad, good.substr(512));  // the HDF5 file without its checksum header
   fixtures::expect_input_error([&] { read_ledger(bad); }, "not a ledger");
-  spit(bad, "knot,crossings\n3_1,3\n");
+  fixtures::write_bytes(bad, "knot,crossings\n3_1,3\n");
   fixtures::expect_input_error([&] { read_ledger(bad); }, "not a readable HDF5 ledger");
   const std::string dataset = ::testing::TempDir() + "a.h5";
   {

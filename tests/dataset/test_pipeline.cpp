@@ -12,6 +12,7 @@
 #include "ek/core/errors.hpp"
 #include "ek/dataset/run.hpp"
 #include "ek/knots/alexander.hpp"
+#include "testing.hpp"
 #include "unsealed_copy.hpp"
 
 using namespace ek;
@@ -409,13 +410,6 @@ std::vector<Change> every_parameter_change() {
   };
 }
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 DatasetRunSummary run_one_knot(const ExploreOptions& o, const std::string& knot, const std::string& out) {
   DatasetRunOptions ro;
   ro.explore = o;
@@ -490,7 +484,7 @@ TEST(Pipeline, ExtendingNeedsEveryParameterEqual) {
   const std::string out = dir + "/d.h5";
   const ExploreOptions base = small_fixed_run(1, 1);
   ASSERT_EQ(run_one_knot(base, "3_1", out).runs, 1);
-  const std::string before = slurp(out);
+  const std::string before = fixtures::read_bytes(out);
   std::set<std::string> covered = {"edge_length"};
   for (const Change& change : every_parameter_change()) {
     ExploreOptions o = base;
@@ -505,7 +499,7 @@ TEST(Pipeline, ExtendingNeedsEveryParameterEqual) {
       EXPECT_NE(what.find("exists with different parameters (" + change.field + " "), std::string::npos) << what;
       EXPECT_EQ(what.find('\n'), std::string::npos) << what;
     }
-    EXPECT_EQ(slurp(out), before) << change.field;
+    EXPECT_EQ(fixtures::read_bytes(out), before) << change.field;
     EXPECT_FALSE(fs::exists(out + ".work")) << change.field;
   }
   for (const auto& f : metadata_fields()) {

@@ -34,11 +34,6 @@ void expect_lattice_sample(const std::string& file, int n, const ek::AlexanderPo
   EXPECT_EQ(ek::alexander(P), alex) << file;
 }
 
-std::string slurp(const std::string& p) {
-  std::ifstream in(p);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
 }  // namespace
 
 TEST(SampleCli, TableKnotBatch) {
@@ -59,15 +54,15 @@ TEST(SampleCli, TableKnotBatch) {
   EXPECT_EQ(j["alexander"], nlohmann::json(alex.coefficients));
   for (int k = 0; k < 3; ++k) expect_lattice_sample(j["files"][k].get<std::string>(), 120, alex);
   // same seed, same files; an existing file is an error and stays untouched
-  const std::string before = slurp(dir + "/out/5_2-0000.obj");
+  const std::string before = ek::fixtures::read_bytes(dir + "/out/5_2-0000.obj");
   expect_bad_input("sample 5_2 --count 3 -n 120 --seed 4 -o " + dir + "/out", "exists (use --overwrite");
-  EXPECT_EQ(slurp(dir + "/out/5_2-0000.obj"), before);
+  EXPECT_EQ(ek::fixtures::read_bytes(dir + "/out/5_2-0000.obj"), before);
   const auto again = run("sample 5_2 --count 1 -n 120 --seed 4 -o " + dir + "/out --overwrite");
   ASSERT_EQ(again.status, 0) << again.err;
-  EXPECT_EQ(slurp(dir + "/out/5_2-0000.obj"), before);
+  EXPECT_EQ(ek::fixtures::read_bytes(dir + "/out/5_2-0000.obj"), before);
   const auto other = run("sample 5_2 --count 1 -n 120 --seed 5 -o " + dir + "/out --overwrite");
   ASSERT_EQ(other.status, 0) << other.err;
-  EXPECT_NE(slurp(dir + "/out/5_2-0000.obj"), before);
+  EXPECT_NE(ek::fixtures::read_bytes(dir + "/out/5_2-0000.obj"), before);
   fs::remove_all(dir);
 }
 

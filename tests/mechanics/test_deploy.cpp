@@ -18,7 +18,7 @@ namespace {
 constexpr int kVertices = 40;
 
 /// A flat ring of unit edges in z = 0.
-Points ring() { return fixtures::circle(kVertices, 0.5 / std::sin(M_PI / kVertices)); }
+Points ring() { return fixtures::unit_ring(kVertices); }
 
 }  // namespace
 

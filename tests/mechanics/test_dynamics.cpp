@@ -19,13 +19,6 @@ using namespace ek;
 
 namespace {
 
-/// A ring of n unit edges in the plane z = z0.
-Points ring(int n, double z0 = 0.0) {
-  Points P = fixtures::circle(n, 0.5 / std::sin(M_PI / n));
-  P.col(2).setConstant(z0);
-  return P;
-}
-
 /// The upper triangle assembled by `term` at x, made symmetric.
 Eigen::MatrixXd dense_hessian(Potential& term, const VecX& x) {
   term.set_dofs(x);
@@ -83,7 +76,7 @@ double mode2(const Points& X, const Points& R) {
 /// A ring of n unit edges with the inextensional in-plane mode 2 of
 /// amplitude eps: u_r = eps cos 2φ, u_φ = −(eps/2) sin 2φ.
 Points ring_mode2(int n, double eps) {
-  const Points R = ring(n);
+  const Points R = fixtures::unit_ring(n);
   Points X = R;
   for (int i = 0; i < n; ++i) {
     const double phi = 2.0 * M_PI * i / n;
@@ -123,7 +116,7 @@ TEST(Dynamics, LumpedMassesAreTheWiresMass) {
 
 TEST(Dynamics, InertiaTermMatchesFiniteDifferences) {
   const int n = 12;
-  const Points x0 = ring(n), v = fixtures::random_fourier_curve(n, 3, 7, 0.3);
+  const Points x0 = fixtures::unit_ring(n), v = fixtures::random_fourier_curve(n, 3, 7, 0.3);
   InertiaTerm inertia(lumped_masses(VecX::Ones(n), 1.3, 0.2), 0.7, 0.4, Vec3(0.1, -0.2, -9.8));
   inertia.start_step(x0, v);
   const VecX x = as_vector(x0) + 0.05 * as_vector(fixtures::random_fourier_curve(n, 2, 3));
@@ -180,7 +173,7 @@ TEST(Dynamics, FrictionTermMatchesFiniteDifferencesAndIsConvex) {
 
 TEST(Dynamics, FrictionForceIsMuLambdaAgainstTheSlip) {
   // One plate contact sliding by u: −∇D = −μλ u/|u| (sliding regime).
-  const Points start = ring(4);
+  const Points start = fixtures::unit_ring(4);
   std::vector<FrictionContact> contacts(1);
   contacts[0].vertices = {2, -1, -1, -1};
   contacts[0].weights = {1, 0, 0, 0};
@@ -205,7 +198,7 @@ TEST(Dynamics, RingOscillatesAtItsInPlaneBendingFrequency) {
   o.frame_every = 1;
   const DynamicsResult r = simulate(ring_mode2(n, 1e-3 * R), VecX::Ones(n), o);
   ASSERT_EQ(r.status, DynamicsStatus::Duration);
-  const std::vector<double> t = zero_crossings(r, ring(n));
+  const std::vector<double> t = zero_crossings(r, fixtures::unit_ring(n));
   ASSERT_GE(t.size(), 4u);
   const double measured = 2.0 * (t.back() - t.front()) / static_cast<double>(t.size() - 1);
   // [2%] the discrete ring against the thin-ring formula (discretisation
@@ -221,7 +214,7 @@ TEST(Dynamics, BackwardEulerDissipatesAtFirstOrderInTheTimeStep) {
   const double w = ring_mode2_frequency(o.model.material, o.density, R), period = 2 * M_PI / w;
   CurveEnergyOptions eo;
   eo.rest_length = 1.0;
-  const double base = curve_energy(ring(n), eo).energy.total;  // the unperturbed ring's bending energy
+  const double base = curve_energy(fixtures::unit_ring(n), eo).energy.total;  // the unperturbed ring's bending energy
   std::vector<double> lost;
   for (const double steps : {100.0, 200.0}) {
     o.time_step = period / steps;
@@ -244,8 +237,8 @@ TEST(Dynamics, UniformMotionIsExact) {
   o.time_step = 0.5;
   o.duration = 10.0;
   const Points v = Points::Constant(n, 3, 0.0).rowwise() + Eigen::RowVector3d(0.3, -0.1, 0.2);
-  const DynamicsResult r = simulate(ring(n), VecX::Ones(n), o, v);
-  EXPECT_LT((r.positions - (ring(n) + 10.0 * v)).cwiseAbs().maxCoeff(), 1e-9);
+  const DynamicsResult r = simulate(fixtures::unit_ring(n), VecX::Ones(n), o, v);
+  EXPECT_LT((r.positions - (fixtures::unit_ring(n) + 10.0 * v)).cwiseAbs().maxCoeff(), 1e-9);
   EXPECT_LT((r.velocities - v).cwiseAbs().maxCoeff(), 1e-9);
 }
 
@@ -284,7 +277,7 @@ TEST(Dynamics, RingSlidingOnAPlateStopsAtTheCoulombDistance) {
   o.envelope = f.plates;
   o.gravity = Vec3(0, 0, -g);
   o.time_step = 0.01;
-  const Points start = ring(n, f.z);
+  const Points start = fixtures::unit_ring(n, f.z);
   const Points v = Points::Constant(n, 3, 0.0).rowwise() + Eigen::RowVector3d(v0, 0, 0);
   for (const double mu : {0.2, 0.4}) {
     o.friction = mu;
@@ -321,7 +314,7 @@ TEST(Dynamics, RingFollowsTheOpeningEnvelope) {
   o.time_step = 0.05;
   o.duration = duration;
   const double gap = f.z + f.plates.half_thickness;
-  const DynamicsResult r = simulate(ring(n, f.plates.half_thickness - gap), VecX::Ones(n), o);
+  const DynamicsResult r = simulate(fixtures::unit_ring(n, f.plates.half_thickness - gap), VecX::Ones(n), o);
   ASSERT_EQ(r.status, DynamicsStatus::Duration) << (r.failed_status ? to_string(*r.failed_status) : "");
   // [5% of the distance] the viscous drag γ m s takes 5% of the weight off the barrier (measured 0.0045)
   const double plate = f.plates.half_thickness + speed * duration;
@@ -381,7 +374,7 @@ TEST(Dynamics, FullModelKeepsItsLink) {
 }
 
 TEST(Dynamics, BadOptionsAndStartsAreInputErrors) {
-  const Points P = ring(12);
+  const Points P = fixtures::unit_ring(12);
   const VecX rest = VecX::Ones(12);
   DynamicsOptions o;
   o.time_step = 0.0;
@@ -394,7 +387,7 @@ TEST(Dynamics, BadOptionsAndStartsAreInputErrors) {
   o.envelope->half_thickness = 0.1;  // plates thinner than the wire
   fixtures::expect_input_error([&] { simulate(P, rest, o); }, "thickness 2r = 0.4");
   o.envelope->half_thickness = 0.3;
-  fixtures::expect_input_error([&] { simulate(ring(12, 0.5), rest, o); }, "inside the envelope");
+  fixtures::expect_input_error([&] { simulate(fixtures::unit_ring(12, 0.5), rest, o); }, "inside the envelope");
   o = DynamicsOptions();
   fixtures::expect_input_error([&] { simulate(P, rest, o, Points::Zero(3, 3)); }, "velocities");
 }

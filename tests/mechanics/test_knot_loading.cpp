@@ -21,6 +21,7 @@
 #include "ek/mechanics/loads.hpp"
 #include "ek/optim/saddle.hpp"
 #include "ek/solver/rod_model.hpp"
+#include "snapper.hpp"
 #include "testing.hpp"
 
 using namespace ek;
@@ -29,32 +30,6 @@ namespace {
 
 /// A trefoil (96 vertices, wire radius 1 of the default model).
 Points trefoil() { return fixtures::torus_knot(96, 2, 3, 12.0, 4.0); }
-
-/// E(x, y; μ) = x⁴/4 − x²/2 − μx + y²/2 (as in test_loads.cpp): stable
-/// branches x < −1/√3 and x > 1/√3, folds at μ = ±2/(3√3).
-class Snapper : public ParameterizedObjective {
- public:
-  int num_dofs() const override { return 2; }
-  VecX dofs() const override { return x_; }
-  void set_dofs(const VecX& x) override { x_ = x; }
-  double energy() override { return std::pow(x_(0), 4) / 4 - x_(0) * x_(0) / 2 - mu_ * x_(0) + x_(1) * x_(1) / 2; }
-  VecX gradient() override { return Eigen::Vector2d(x_(0) * x_(0) * x_(0) - x_(0) - mu_, x_(1)); }
-  void assemble_hessian(SparseAssembler& A, HessianKind) override {
-    A.begin(2);
-    A.segment(0, 1);
-    A.add(0, 0, 3 * x_(0) * x_(0) - 1);
-    A.add(1, 1, 1.0);
-    A.end();
-  }
-  double parameter() const override { return mu_; }
-  void set_parameter(double mu) override { mu_ = mu; }
-  VecX parameter_gradient() override { return Eigen::Vector2d(-1.0, 0.0); }
-  double parameter_derivative() override { return -x_(0); }
-
- private:
-  VecX x_ = Eigen::Vector2d(-1.2, 0.1);
-  double mu_ = -0.6;
-};
 
 /// A small snap under a large load: a stiff spring K between x and the
 /// control (and one between x and 0) carries a large reaction, and the
@@ -271,7 +246,7 @@ TEST(KnotLoading, PressedTrefoilSnapsAndItsReleasedStateIsATrefoil) {
 // snap to the right branch's x = 2/√3 (the double root's partner), a jump
 // of √3 in x (to 1e-2), then on to μ = 0.6 with x³ − x = μ at every point.
 TEST(Continuation, StablePathSnapsAtTheFoldWithTheKnownJump) {
-  Snapper f;
+  fixtures::Snapper f;
   const ContinuationOptions o = snapper_path_options(1e-10);
   const LoadPath p = follow_path(f, o);
   EXPECT_EQ(p.status, PathStatus::Reached);

@@ -14,6 +14,7 @@
 #include "ek/mechanics/loads.hpp"
 #include "ek/optim/saddle.hpp"
 #include "ek/solver/rod_model.hpp"
+#include "snapper.hpp"
 #include "testing.hpp"
 
 using namespace ek;
@@ -71,36 +72,6 @@ void check_load(ControlledLoad& load, const VecX& x0, double h = 1e-6) {
   EXPECT_NEAR(load.parameter_derivative(), (ep - em) / (2 * hm), 1e-5 * (1.0 + std::abs(ep)));
 }
 
-/// E(x, y; μ) = x⁴/4 − x²/2 − μx + y²/2: equilibria μ = x³ − x, y = 0, with
-/// folds at x = ±1/√3, μ = ∓2/(3√3) (a snapping system with two limit loads).
-class Snapper : public ParameterizedObjective {
- public:
-  int num_dofs() const override { return 2; }
-  VecX dofs() const override { return x_; }
-  void set_dofs(const VecX& x) override { x_ = x; }
-  double energy() override { return std::pow(x_(0), 4) / 4 - x_(0) * x_(0) / 2 - mu_ * x_(0) + x_(1) * x_(1) / 2; }
-  VecX gradient() override { return Eigen::Vector2d(std::pow(x_(0), 3) - x_(0) - mu_, x_(1)); }
-  void assemble_hessian(SparseAssembler& A, HessianKind) override {
-    A.begin(2);
-    A.segment(0, 1);
-    A.add(0, 0, 3 * x_(0) * x_(0) - 1);
-    A.add(0, 1, 0.0);
-    A.add(1, 1, 1.0);
-    A.end();
-  }
-  double parameter() const override { return mu_; }
-  void set_parameter(double mu) override { mu_ = mu; }
-  VecX parameter_gradient() override { return Eigen::Vector2d(-1.0, 0.0); }
-  double parameter_derivative() override { return -x_(0); }
-
- private:
-  VecX x_ = Eigen::Vector2d(-1.0, 0.0);
-  double mu_ = 0.0;
-};
-
-/// A flat ring of n unit edges.
-Points ring(int n) { return fixtures::circle(n, 0.5 / std::sin(M_PI / n)); }
-
 }  // namespace
 
 TEST(Loads, PullForceAndPlatesMatchFiniteDifferences) {
@@ -130,7 +101,7 @@ TEST(Continuation, PassesBothFoldsOfTheSnapperAtTheirKnownLoads) {
   // from μ = −1 on the lower branch to μ = +1: the parameter rises to the
   // first fold (2/(3√3) = 0.3849), falls along the unstable branch (index
   // 1) to the second (−0.3849) and rises again to the target
-  Snapper f;
+  fixtures::Snapper f;
   f.set_parameter(-1.0);
   f.set_dofs(Eigen::Vector2d(-1.3247, 0.0));
   ContinuationOptions o;
@@ -168,7 +139,7 @@ TEST(Continuation, RingPulledAcrossADiameterHasTheClassicalStiffness) {
   // spring 1e4 times stiffer than the ring along the pull)
   double previous_error = INFINITY;
   for (int n : {128, 256}) {
-    const Points P = ring(n);
+    const Points P = fixtures::unit_ring(n);
     const double R = 0.5 / std::sin(M_PI / n), EI = RodMaterial().bending_stiffness();
     const double expected = EI / ((M_PI / 4.0 - 2.0 / M_PI) * R * R * R);
     RodModel system(P, edge_lengths(P), RelaxOptions{});
@@ -197,7 +168,7 @@ TEST(Continuation, WorkEqualsTheEnergyChangeAndUnloadingReturnsTheRing) {
   // E_knot + E_load to the integration error; loading to 1.2·D0 and back
   // returns the ring (similarity >= 0.999, the same energy)
   const int n = 128;
-  const Points P = ring(n);
+  const Points P = fixtures::unit_ring(n);
   const double R = 0.5 / std::sin(M_PI / n), D0 = 2.0 * R;
   RodModel system(P, edge_lengths(P), RelaxOptions{});
   PullLoad pull(0, n / 2, D0, 10.0);

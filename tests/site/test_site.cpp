@@ -20,6 +20,7 @@
 #include "testing.hpp"
 
 using namespace ek;
+using fixtures::read_at;
 namespace fs = std::filesystem;
 
 namespace {
@@ -83,18 +84,6 @@ std::string fresh_dir(const std::string& name) {
   const std::string dir = ::testing::TempDir() + "site_" + name;
   fs::remove_all(dir);
   return dir;
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
-template <class T>
-T read_at(const std::string& bin, size_t offset) {
-  T x;
-  std::memcpy(&x, bin.data() + offset, sizeof(T));
-  return x;
 }
 
 }  // namespace
@@ -276,18 +265,18 @@ TEST(Site, FolderIsWrittenSafely) {
   const SiteFiles files = {{"index.html", "a"}, {"data/site.json", R"({"format": "elastic-knots-site"})"}};
   const std::string dir = fresh_dir("write");
   write_site(files, dir, false);
-  EXPECT_EQ(slurp(fs::path(dir) / "index.html"), "a");
+  EXPECT_EQ(fixtures::read_bytes(fs::path(dir) / "index.html"), "a");
   EXPECT_THROW(write_site(files, dir, false), InputError);
   SiteFiles second = files;
   second["index.html"] = "b";
   write_site(second, dir + "/", true);
-  EXPECT_EQ(slurp(fs::path(dir) / "index.html"), "b");
+  EXPECT_EQ(fixtures::read_bytes(fs::path(dir) / "index.html"), "b");
   const std::string other = fresh_dir("other");
   fs::create_directories(other);
   std::ofstream(other + "/notes.txt") << "mine\n";
   EXPECT_THROW(write_site(files, other, false), InputError);
   EXPECT_THROW(write_site(files, other, true), InputError);
-  EXPECT_EQ(slurp(fs::path(other) / "notes.txt"), "mine\n");
+  EXPECT_EQ(fixtures::read_bytes(fs::path(other) / "notes.txt"), "mine\n");
   EXPECT_FALSE(fs::exists(fs::path(other) / "index.html"));
   const std::string empty = fresh_dir("empty");
   fs::create_directories(empty);

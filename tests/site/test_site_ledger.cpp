@@ -16,10 +16,12 @@
 #include "ek/dataset/dataset_file.hpp"
 #include "ek/dataset/ledger.hpp"
 #include "ek/site/site.hpp"
+#include "testing.hpp"
 
 using ek::clitest::run;
 using ek::clitest::temp_dir;
 using namespace ek;
+using fixtures::read_at;
 namespace fs = std::filesystem;
 using PlainJson = nlohmann::json;  // key order ignored in comparisons
 
@@ -43,13 +45,6 @@ SmallRun small_run(const std::string& name) {
 }
 
 PlainJson site_json(const SiteFiles& files) { return PlainJson::parse(files.at("data/site.json")); }
-
-template <class T>
-T read_at(const std::string& bin, size_t offset) {
-  T x;
-  std::memcpy(&x, bin.data() + offset, sizeof(T));
-  return x;
-}
 
 SiteOptions at_cut(double cut) {
   SiteOptions o;

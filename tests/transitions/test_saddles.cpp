@@ -45,7 +45,7 @@ struct SearchRun {
   std::vector<SaddleRecord> records;
 };
 
-SearchRun run(const Points& state, int modes) {
+SearchRun search_from(const Points& state, int modes) {
   KnotSaddleOptions o;
   o.modes = modes;
   SearchRun r{prepare_start(state, unit_rest(), o), {}};
@@ -62,7 +62,7 @@ SearchRun run(const Points& state, int modes) {
 // 1e-8 relative), the second not; the path's highest image is the saddle;
 // the Alexander polynomial on every image.
 TEST(KnotSaddles, VerifiedSaddlesOf41PassTheChecksAgain) {
-  const SearchRun r = run(states()[1], 3);
+  const SearchRun r = search_from(states()[1], 3);
   const AlexanderPolynomial a41 = alexander(states()[1]);
   int verified = 0;
   for (const SaddleRecord& s : r.records) {
@@ -111,7 +111,7 @@ TEST(KnotSaddles, VerifiedSaddlesOf41PassTheChecksAgain) {
 TEST(KnotSaddles, StatusesFollowFromTheDescents) {
   std::map<std::string, int> seen;
   for (int state : {0, 1}) {
-    const SearchRun r = run(states()[static_cast<size_t>(state)], 3);
+    const SearchRun r = search_from(states()[static_cast<size_t>(state)], 3);
     const auto is_start = [&](const SaddleMinimum& m) {
       return !m.images.empty() && m.start_similarity >= 0.99 &&
              std::abs(m.energy - r.start.energy) <= 1e-8 * std::abs(r.start.energy);
@@ -141,7 +141,7 @@ TEST(KnotSaddles, StatusesFollowFromTheDescents) {
 // state 1 leads to state 2 (its other minimum has state 2's polished energy
 // within 1e-8 relative and similarity >= 0.99 to it), above both.
 TEST(KnotSaddles, APathJoinsTwoRelaxedSamples) {
-  const SearchRun a = run(states()[1], 3);
+  const SearchRun a = search_from(states()[1], 3);
   const SaddleStart b = prepare_start(states()[2], unit_rest(), KnotSaddleOptions{});
   bool found = false;
   for (const SaddleRecord& x : a.records) {
@@ -162,7 +162,7 @@ TEST(KnotSaddles, StartMustBeAStableEquilibrium) {
   const Points lattice = to_points(batch.samples[0]);
   fixtures::expect_input_error([&] { prepare_start(lattice, unit_rest(), o); }, "not an equilibrium");
   // a verified saddle is an equilibrium but not stable
-  const SearchRun r = run(states()[1], 2);
+  const SearchRun r = search_from(states()[1], 2);
   for (const SaddleRecord& s : r.records) {
     if (!s.verified) continue;
     fixtures::expect_input_error([&] { prepare_start(s.saddle, unit_rest(), o); }, "not a stable equilibrium");

@@ -148,7 +148,7 @@ bool kill_when_written(const std::string& args, const std::string& file) {
 }
 
 /// Equal graphs up to the timings.
-void expect_same_graph(const ek::TransitionGraph& a, const ek::TransitionGraph& b) {
+void expect_same_graph_but_timings(const ek::TransitionGraph& a, const ek::TransitionGraph& b) {
   ASSERT_EQ(a.states.size(), b.states.size());
   for (size_t k = 0; k < a.states.size(); ++k) {
     EXPECT_EQ(a.states[k].energy, b.states[k].energy) << "state " << k;
@@ -210,7 +210,7 @@ TEST(TransitionsCli, KilledRunResumesFromItsCheckpoint) {
   const auto slash = resumed.err.rfind('/', units), comma = resumed.err.rfind(", ", slash);
   EXPECT_GE(std::stoi(resumed.err.substr(comma + 2, slash - comma - 2)), 1) << resumed.err;  // resumed past unit 1
   EXPECT_FALSE(fs::exists(out + ".work"));
-  expect_same_graph(ek::read_transitions(out), ek::read_transitions(dir + "/full.h5"));
+  expect_same_graph_but_timings(ek::read_transitions(out), ek::read_transitions(dir + "/full.h5"));
   fs::remove_all(dir);
 }
 
