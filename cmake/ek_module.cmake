@@ -54,8 +54,9 @@ endfunction()
 # One GoogleTest executable; each TEST becomes a CTest entry with the label:
 # unit (default), parsers (also built with sanitizers), stress (short, in
 # `make test`), stress-long (`make stress` only). Tests are gathered in one
-# program per module and label: fewer programs compile and link faster, and
-# CTest still runs each test on its own. NO_DISCOVERY leaves the discovery to
+# program per module and label, compiled in unity batches of up to 16
+# sources: fewer programs and batches compile and link faster, and CTest
+# still runs each test on its own. NO_DISCOVERY leaves the discovery to
 # the caller (the paper checks: one discovery per check, each with its fixture).
 # (gtest_discover_tests cannot pass a list of labels, hence one label.)
 function(ek_add_gtest NAME)
@@ -64,6 +65,7 @@ function(ek_add_gtest NAME)
     return()  # the sanitizer build runs the parsers' tests only
   endif()
   add_executable(${NAME} ${ARG_SOURCES})
+  set_target_properties(${NAME} PROPERTIES UNITY_BUILD_BATCH_SIZE 16)
   target_link_libraries(${NAME} PRIVATE ${ARG_LIBS} ek_testing GTest::gtest GTest::gtest_main ek_warnings)
   if(TARGET ek_test_pch)  # tests/CMakeLists.txt: -O1 and the shared precompiled header
     target_compile_options(${NAME} PRIVATE -O1)
