@@ -264,12 +264,8 @@ TEST(Cli, ReadmeAndCliReferenceListEveryCommand) {
     commands.push_back(line.substr(2, line.find(' ', 2) - 2));
   }
   ASSERT_GE(commands.size(), 24u);
-  const auto slurp = [](const std::string& path) {
-    std::ifstream in(path);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-  };
-  const std::string readme = slurp(std::string(ek::config::kSourceDir) + "/README.md");
-  const std::string cli = slurp(std::string(ek::config::kSourceDir) + "/docs/cli.md");
+  const std::string readme = ek::fixtures::read_bytes(std::string(ek::config::kSourceDir) + "/README.md");
+  const std::string cli = ek::fixtures::read_bytes(std::string(ek::config::kSourceDir) + "/docs/cli.md");
   ASSERT_FALSE(readme.empty());
   ASSERT_FALSE(cli.empty());
   for (const std::string& c : commands) {

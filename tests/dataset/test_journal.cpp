@@ -38,8 +38,7 @@ std::string three_runs() {
     j.append(journal_run(1, false));
     j.append(journal_run(2, true));
   }
-  std::ifstream in(path, std::ios::binary);
-  std::string bytes((std::istreambuf_iterator<char>(in)), {});
+  std::string bytes = fixtures::read_bytes(path);
   std::filesystem::remove(path);
   return bytes;
 }
@@ -117,8 +116,7 @@ TEST(Journal, RecordsOfTheFirstLayoutAreRead) {
     Journal j(path, kOptions);
     j.append(a);
   }
-  std::ifstream in(path, std::ios::binary);
-  const std::string bytes((std::istreambuf_iterator<char>(in)), {});
+  const std::string bytes = fixtures::read_bytes(path);
   std::filesystem::remove(path);
   const std::string head = journal_head(kOptions);
   const JournalRun now = parse_journal(bytes, head, path).runs.at(0);

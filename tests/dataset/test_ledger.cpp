@@ -101,11 +101,7 @@ TEST(Ledger, DatasetRunWritesTheLedgerOfItsStates) {
   EXPECT_EQ(merged.status, 2) << merged.err;  // the same knots twice
   EXPECT_NE(merged.err.find("in two of the ledgers"), std::string::npos) << merged.err;
   // a damaged ledger: one line naming it, exit status 2
-  std::string bytes;
-  {
-    std::ifstream in(ledger, std::ios::binary);
-    bytes.assign(std::istreambuf_iterator<char>(in), {});
-  }
+  std::string bytes = fixtures::read_bytes(ledger);
   bytes[bytes.size() / 2] = static_cast<char>(bytes[bytes.size() / 2] ^ 1);
   std::ofstream(dir + "/bad.ledger.h5", std::ios::binary) << bytes;
   const auto bad = run("describe " + dir + "/bad.ledger.h5");

@@ -93,11 +93,7 @@ TEST(LinkDataset, AJournalOfTheFirstLayoutResumesToTheSameEntry) {
   const ExploreOptions o = link_options(2, 180);
   const KnotEntry fresh = explore_link(*find_link("borromean"), o, journal);
   ASSERT_GT(fresh.attributes.col(fresh.attribute_column("energy_contact")).maxCoeff(), 0.0);  // in contact
-  std::string bytes;
-  {
-    std::ifstream in(journal, std::ios::binary);
-    bytes.assign(std::istreambuf_iterator<char>(in), {});
-  }
+  std::string bytes = fixtures::read_bytes(journal);
   const size_t head = bytes.find('\n', bytes.find('\n') + 1) + 1;  // the header line and the options line
   {
     std::ofstream out(journal, std::ios::binary | std::ios::trunc);

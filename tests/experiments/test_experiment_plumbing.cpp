@@ -11,6 +11,7 @@
 
 #include "ek/core/errors.hpp"
 #include "experiment.hpp"
+#include "testing.hpp"
 
 namespace fs = std::filesystem;
 using namespace ek::exp;
@@ -30,11 +31,6 @@ struct Folder {
 
 void touch(const fs::path& p, const std::string& text) {
   std::ofstream(p) << text;
-}
-
-std::string read(const fs::path& p) {
-  std::ifstream in(p);
-  return std::string(std::istreambuf_iterator<char>(in), {});
 }
 
 // A folder holding a finished run of a data-set experiment.
@@ -61,14 +57,14 @@ TEST(ExperimentReruns, AFinishedRunIsRecomputedFromAnEmptyFolder) {
   bool saw_old_files = true, saw_previous = false;
   const int status = run(out, [&](const Args& a) {
     saw_old_files = fs::exists(fs::path(a.out) / "dataset.h5") || fs::exists(fs::path(a.out) / "summary.json");
-    saw_previous = read(previous_folder(a.out) / "dataset.h5") == "old equilibria";
+    saw_previous = ek::fixtures::read_bytes(previous_folder(a.out) / "dataset.h5") == "old equilibria";
     touch(fs::path(a.out) / "summary.json", "{\"new\": 1}");
   });
   EXPECT_EQ(status, 0);
   EXPECT_FALSE(saw_old_files) << "the rerun must start from an empty folder";
   EXPECT_TRUE(saw_previous) << "the finished run is kept as DIR.previous while the rerun runs";
   EXPECT_FALSE(fs::exists(previous_folder(out.string()))) << "DIR.previous is removed once the rerun finished";
-  EXPECT_EQ(read(out / "summary.json"), "{\"new\": 1}");
+  EXPECT_EQ(ek::fixtures::read_bytes(out / "summary.json"), "{\"new\": 1}");
 }
 
 TEST(ExperimentReruns, AFailedRerunKeepsTheFinishedRunAndTheNextRunResumesIt) {
@@ -80,12 +76,12 @@ TEST(ExperimentReruns, AFailedRerunKeepsTheFinishedRunAndTheNextRunResumesIt) {
     throw ek::InputError("unwritable output");
   });
   EXPECT_EQ(failed, 2);
-  EXPECT_EQ(read(previous_folder(out.string()) / "dataset.h5"), "old equilibria");
-  EXPECT_EQ(read(out / "journal"), "half the runs");
+  EXPECT_EQ(ek::fixtures::read_bytes(previous_folder(out.string()) / "dataset.h5"), "old equilibria");
+  EXPECT_EQ(ek::fixtures::read_bytes(out / "journal"), "half the runs");
   // No summary.json: the next run resumes the unfinished folder as it is.
   std::string journal_seen;
   const int resumed = run(out, [&](const Args& a) {
-    journal_seen = read(fs::path(a.out) / "journal");
+    journal_seen = ek::fixtures::read_bytes(fs::path(a.out) / "journal");
     touch(fs::path(a.out) / "summary.json", "{}");
   });
   EXPECT_EQ(resumed, 0);

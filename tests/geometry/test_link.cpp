@@ -104,8 +104,7 @@ TEST(Link, RoundTripIsExactAndOneComponentIsACurve) {
     const std::string one = ::testing::TempDir() + "link_one" + ext, curve = ::testing::TempDir() + "curve_one" + ext;
     write_link(one, Link{link[0]});
     write_curve(curve, link[0]);
-    std::ifstream a(one), b(curve);
-    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(a), {}), std::string(std::istreambuf_iterator<char>(b), {}));
+    EXPECT_EQ(fixtures::read_bytes(one), fixtures::read_bytes(curve));
     EXPECT_EQ(read_link(curve).at(0), read_curve(curve));
     for (const std::string& p : {path, one, curve}) std::remove(p.c_str());
   }

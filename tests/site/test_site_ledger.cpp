@@ -198,11 +198,7 @@ TEST(SiteLedger, FolderOfTwoLedgersIsOneSite) {
 // and exit status 2, and writes nothing.
 TEST(SiteLedger, DamagedLedgerIsRefused) {
   const SmallRun r = small_run("site_ledger_damaged");
-  std::string bytes;
-  {
-    std::ifstream in(r.ledger, std::ios::binary);
-    bytes.assign(std::istreambuf_iterator<char>(in), {});
-  }
+  std::string bytes = fixtures::read_bytes(r.ledger);
   bytes[bytes.size() / 2] = static_cast<char>(bytes[bytes.size() / 2] ^ 1);
   fs::create_directories(r.dir + "/folder");
   std::ofstream(r.dir + "/folder/bad.ledger.h5", std::ios::binary) << bytes;
