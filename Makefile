@@ -294,7 +294,7 @@ ledger-results: build
 	done
 
 # The default relaxation method (multilevel) against another named method
-# (METHOD=hybrid, the direct one, unless given; gauss-newton, exact, paper): both
+# (METHOD=hybrid, the direct one, unless given; eigen-projected, exact, paper): both
 # methods' data sets and their paper checks, then their comparison
 # (docs/reproducing.md). SCALE=default by default; SCALE=ci is a smoke run.
 METHOD ?= hybrid

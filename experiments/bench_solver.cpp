@@ -22,7 +22,8 @@
 // block factorisation), projected (hybrid without its exact region), exact (the
 // exact Hessian every iteration), paper (NewtonOptions::paper()), levels2
 // (the multilevel method with two coarse levels, n/4 and n/2), gauss-newton
-// (default with RelaxOptions::contact_gauss_newton). The
+// (the same as default), eigen-projected (default with each contact pair's
+// Hessian eigen-projected and no damping of short steps). The
 // default is "default,hybrid-simplicial". --method M is --methods M.
 //
 // --peer DIR: instead of the lattice samples, every curve file of DIR (the

@@ -139,7 +139,8 @@ int main(int argc, char** argv) {
   const ExtraOption against_option{"--against", "[--against M]",
                                    [&](const std::string& v) {
                                      with_method(RelaxOptions{}, v);  // InputError for an unknown name
-                                     if (v == "default") throw InputError("the default method against itself");
+                                     if (v == "default" || v == "gauss-newton")
+                                       throw InputError("the default method against itself");
                                      against = v;
                                    },
                                    {}};

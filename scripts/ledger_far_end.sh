@@ -15,7 +15,7 @@ set -euo pipefail
 usage() {
   cat <<'EOF2'
 usage: scripts/ledger_far_end.sh SCALE (--names A,B,... | --until-decided) [--per-piece N] [--jobs J]
-                                 [--knots PATH] [--commit] [--nice]
+                                 [--knots PATH] [--method M] [--commit] [--nice]
 
   SCALE          sample12 or paper10
   --names LIST   the knots to sample at the full budget (comma-separated)
@@ -24,6 +24,8 @@ usage: scripts/ledger_far_end.sh SCALE (--names A,B,... | --until-decided) [--pe
   --per-piece N  knots per piece (default: sample12 6, paper10 12; about 15 minutes each on 2 cores)
   --jobs J       relaxations in parallel (default 2)
   --knots PATH   the knots program (default build/bin/knots of this checkout)
+  --method M     the relaxation method (default eigen-projected, the method of the committed
+                 ledgers of these scales)
   --commit       git commit each finished piece's ledger (that file alone) as soon as it is written
   --nice         run at the lowest CPU priority (nice 19)
 
@@ -38,7 +40,7 @@ source "$here/scripts/lib/commit_ledger.sh"
 [[ "$1" == "-h" || "$1" == "--help" ]] && { usage; exit 0; }
 scale=$1
 shift
-names="" until=0 per_piece="" jobs=2 knots="$here/build/bin/knots" commit=0 nice_cmd=()
+names="" until=0 per_piece="" jobs=2 knots="$here/build/bin/knots" method=eigen-projected commit=0 nice_cmd=()
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --names) [[ $# -ge 2 ]] || fail "--names needs a value"; names=$2; shift 2 ;;
@@ -46,6 +48,7 @@ while [[ $# -gt 0 ]]; do
     --per-piece) [[ $# -ge 2 ]] || fail "--per-piece needs a value"; per_piece=$2; shift 2 ;;
     --jobs) [[ $# -ge 2 ]] || fail "--jobs needs a value"; jobs=$2; shift 2 ;;
     --knots) [[ $# -ge 2 ]] || fail "--knots needs a value"; knots=$2; shift 2 ;;
+    --method) [[ $# -ge 2 ]] || fail "--method needs a value"; method=$2; shift 2 ;;
     --commit) commit=1; shift ;;
     --nice) nice_cmd=(nice -n 19); shift ;;
     -h | --help) usage; exit 0 ;;
@@ -80,8 +83,8 @@ run_pieces() {
     name=$(printf 'piece-%02d' "$n")
     echo "$(date -u +%FT%TZ) $scale $name ($piece): started" >>"$log"
     start=$(date +%s)
-    "${nice_cmd[@]}" "$knots" dataset --names "$piece" --samples 500 --novelty-distance 0.05 --jobs "$jobs" \
-      --quiet -o "$work/$name.h5" --ledger "$ledgers/$name.ledger.h5"
+    "${nice_cmd[@]}" "$knots" dataset --names "$piece" --samples 500 --novelty-distance 0.05 --method "$method" \
+      --jobs "$jobs" --quiet -o "$work/$name.h5" --ledger "$ledgers/$name.ledger.h5"
     echo "$(date -u +%FT%TZ) $scale $name: finished in $(($(date +%s) - start)) s" >>"$log"
     if [[ $commit -eq 1 ]]; then
       commit_ledger "$here" "$ledgers/$name.ledger.h5" \

@@ -4,7 +4,7 @@
 # so that an interrupted run loses at most the shard in progress. Each shard
 # is `knots dataset` with the experiments' parameters of SCALE (those of
 # exp_dataset: adaptive sampling 50 + 10 up to 500, novelty distance 0.05, the
-# default model and method, seed 1) and --shard I/N; its data set goes to
+# default model, the eigen-projected method unless --method, seed 1) and --shard I/N; its data set goes to
 # results/SCALE/shards/ (not committed), its ledger to
 # docs/results/SCALE/ledgers/shard-II-of-NN.ledger.h5. A shard whose ledger
 # exists is skipped; an interrupted shard resumes from its journals.
@@ -17,7 +17,7 @@ set -euo pipefail
 usage() {
   cat <<'EOF'
 usage: scripts/ledger_shards.sh SCALE [--shards N] [--only I,J,...] [--jobs J] [--knots PATH]
-                                [--commit] [--nice] [--datasets]
+                                [--method M] [--commit] [--nice] [--datasets]
 
   SCALE          sample12 (the stratified 10% of the 11- and 12-crossing knots, every BB knot),
                  paper10 (every knot with 3 to 10 crossings) or truth (30 knots of 5 to 12
@@ -27,6 +27,8 @@ usage: scripts/ledger_shards.sh SCALE [--shards N] [--only I,J,...] [--jobs J] [
   --only LIST    these shards only (comma-separated, 1-based); default every shard without a ledger
   --jobs J       relaxations in parallel per shard (default 2)
   --knots PATH   the knots program (default build/bin/knots of this checkout)
+  --method M     the relaxation method (default eigen-projected, the method of the committed
+                 ledgers of these scales, so that a lost shard is run again as it was)
   --commit       git commit each finished shard's ledger (that file alone) as soon as it is written
   --nice         run the shards at the lowest CPU priority (nice 19)
   --datasets     also run a shard whose ledger exists when its data set is missing (the data
@@ -44,13 +46,14 @@ source "$here/scripts/lib/commit_ledger.sh"
 [[ "$1" == "-h" || "$1" == "--help" ]] && { usage; exit 0; }
 scale=$1
 shift
-shards="" only="" jobs=2 knots="$here/build/bin/knots" commit=0 nice_cmd=() datasets=0
+shards="" only="" jobs=2 knots="$here/build/bin/knots" method=eigen-projected commit=0 nice_cmd=() datasets=0
 while [[ $# -gt 0 ]]; do
   case "$1" in
     --shards) [[ $# -ge 2 ]] || fail "--shards needs a value"; shards=$2; shift 2 ;;
     --only) [[ $# -ge 2 ]] || fail "--only needs a value"; only=$2; shift 2 ;;
     --jobs) [[ $# -ge 2 ]] || fail "--jobs needs a value"; jobs=$2; shift 2 ;;
     --knots) [[ $# -ge 2 ]] || fail "--knots needs a value"; knots=$2; shift 2 ;;
+    --method) [[ $# -ge 2 ]] || fail "--method needs a value"; method=$2; shift 2 ;;
     --commit) commit=1; shift ;;
     --nice) nice_cmd=(nice -n 19); shift ;;
     --datasets) datasets=1; shift ;;
@@ -101,8 +104,8 @@ for i in "${list[@]}"; do
   fi
   echo "$(date -u +%FT%TZ) $scale $name: started" >>"$log"
   start=$(date +%s)
-  "${nice_cmd[@]}" "$knots" dataset "${select[@]}" "${sampling[@]}" --novelty-distance 0.05 --jobs "$jobs" \
-    --shard "$i/$shards" --quiet -o "$work/$name.h5" --ledger "$ledger"
+  "${nice_cmd[@]}" "$knots" dataset "${select[@]}" "${sampling[@]}" --novelty-distance 0.05 --method "$method" \
+    --jobs "$jobs" --shard "$i/$shards" --quiet -o "$work/$name.h5" --ledger "$ledger"
   echo "$(date -u +%FT%TZ) $scale $name: finished in $(($(date +%s) - start)) s, ledger $(du -k "$ledger" | cut -f1) kB" >>"$log"
   if [[ $commit -eq 1 && $keep -eq 0 ]]; then
     commit_ledger "$here" "$ledger" "Ledger of $scale $name (knots dataset --shard $i/$shards)"

@@ -35,7 +35,7 @@ struct Args {
   std::string results;    ///< results root (parent of the experiments' folders)
   int jobs = 2;           ///< parallel relaxations
   /// The relaxation method of the twist-free data-set runs (`--method`, as
-  /// `knots relax --method`: default, gauss-newton, hybrid, exact, paper;
+  /// `knots relax --method`: default, gauss-newton, eigen-projected, hybrid, exact, paper;
   /// with_method()).
   std::string method = "default";
   /// The run seed of the data-set runs (`--seed`; every knot's walk and every

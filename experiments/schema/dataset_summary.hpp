@@ -39,7 +39,8 @@ struct DatasetSummary {
   int jobs = 0;                        ///< [1] parallel relaxations
   double equilibria_per_second = 0.0;  ///< [1/s]
   std::string sampling;                ///< ExploreOptions::sampling_description()
-  std::string method;  ///< the relaxation method (--method: default, gauss-newton, hybrid, exact, paper)
+  /// the relaxation method (--method: default, gauss-newton, eigen-projected, hybrid, exact, paper)
+  std::string method;
   double estimated_seconds = 0.0;  ///< [s] the estimate printed before the run (wall, on `jobs`)
   int budget = 0;                  ///< [1] the most samples per knot (500 when adaptive)
   // The sampling cost: null when the data set holds no knot.

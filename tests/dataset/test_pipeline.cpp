@@ -394,8 +394,8 @@ std::vector<Change> every_parameter_change() {
       {"coarse_continuation", [](ExploreOptions& o) { o.relax.coarse_continuation = {1e-2}; }},
       {"newton_hessian", [](ExploreOptions& o) { o.relax.newton.hessian = HessianMode::Exact; }},
       {"remove_rigid_motions", [](ExploreOptions& o) { o.relax.newton.remove_rigid_motions = false; }},
-      {"contact_hessian", [](ExploreOptions& o) { o.relax.contact_gauss_newton = true; }},
-      {"damp_short_steps", [](ExploreOptions& o) { o.relax.newton.damp_short_steps = true; }},
+      {"contact_hessian", [](ExploreOptions& o) { o.relax.contact_gauss_newton = !o.relax.contact_gauss_newton; }},
+      {"damp_short_steps", [](ExploreOptions& o) { o.relax.newton.damp_short_steps ^= true; }},
       {"max_iterations", [](ExploreOptions& o) { o.relax.max_iterations = 300; }},
       {"burn_in", [](ExploreOptions& o) { o.burn_in = 2; }},
       {"sampling", [](ExploreOptions& o) { o.samples = 2; }},
@@ -432,13 +432,14 @@ std::string fresh_dir(const std::string& name) {
 // Journals written by earlier versions keep their key, so an interrupted run
 // resumes after an upgrade; the parameters added to the key since (model,
 // edge length, relaxation method) are left out at the values those keys
-// imply. Earlier versions relaxed by the direct method.
+// imply. Earlier versions relaxed by the direct method (with eigen-projected
+// contact pair Hessians, undamped: the "hybrid" method).
 TEST(Pipeline, JournalKeyIsTheEarlierKeyForTheEarlierParameters) {
   ExploreOptions direct = small_fixed_run(3, 1);
-  direct.relax.method = RelaxMethod::Direct;
+  direct.relax = with_method(direct.relax, "hybrid");
   std::vector<ExploreOptions> runs(6, direct);
   runs[1] = ExploreOptions{};
-  runs[1].relax.method = RelaxMethod::Direct;
+  runs[1].relax = with_method(runs[1].relax, "hybrid");
   runs[2].relax.contact_continuation = {1e-3, 0.1};
   runs[3].adaptive = true;
   runs[3].burn_in = 4;
@@ -452,7 +453,8 @@ TEST(Pipeline, JournalKeyIsTheEarlierKeyForTheEarlierParameters) {
   full.relax.full_model = true;
   EXPECT_NE(journal_key(dataset_metadata(full)).find(" dhat=0.40000000000000002 model=free-theta iterations="),
             std::string::npos);
-  // every named method of with_method() has its own key and metadata
+  // every named method of with_method() has its own key and metadata, but
+  // for gauss-newton, the default's former name
   std::set<std::string> keys;
   for (const std::string& name : method_names()) {
     ExploreOptions o = small_fixed_run(3, 1);
@@ -461,16 +463,22 @@ TEST(Pipeline, JournalKeyIsTheEarlierKeyForTheEarlierParameters) {
     if (name == "hybrid") {
       EXPECT_EQ(journal_key(dataset_metadata(o)), journal_key(dataset_metadata(direct)));
     }
-    if (name == "gauss-newton") {
+    if (name == "default" || name == "gauss-newton") {
       EXPECT_EQ(dataset_metadata(o).contact_hessian, "gauss-newton");
       EXPECT_EQ(dataset_metadata(o).damp_short_steps, true);
       EXPECT_NE(journal_key(dataset_metadata(o)).find(" contact=gauss-newton"), std::string::npos);
     }
+    if (name == "eigen-projected") {
+      EXPECT_EQ(dataset_metadata(o).contact_hessian, "eigen-projected");
+      EXPECT_EQ(dataset_metadata(o).damp_short_steps, false);
+      EXPECT_EQ(journal_key(dataset_metadata(o)).find(" contact="), std::string::npos);
+    }
   }
-  EXPECT_EQ(keys.size(), method_names().size());
+  EXPECT_EQ(keys.size(), method_names().size() - 1);
   // the multilevel method (the default) names itself and its settings
   const std::string multilevel = journal_key(dataset_metadata(small_fixed_run(3, 1)));
-  EXPECT_NE(multilevel.find(" dhat=0.40000000000000002 method=multilevel levels=1 coarse=0.001 iterations=5000 "),
+  EXPECT_NE(multilevel.find(" dhat=0.40000000000000002 method=multilevel levels=1 coarse=0.001 contact=gauss-newton "
+                            "damp=1 iterations=5000 "),
             std::string::npos)
       << multilevel;
 }
@@ -520,7 +528,7 @@ TEST(Pipeline, OldFormatFileReadsAndExtends) {
   const std::string dir = fresh_dir("oldformat");
   const std::string out = dir + "/d.h5";
   ExploreOptions base = small_fixed_run(1, 1);
-  base.relax.method = RelaxMethod::Direct;  // the method of earlier versions
+  base.relax = with_method(base.relax, "hybrid");  // the method of earlier versions
   ASSERT_EQ(run_one_knot(base, "3_1", out).runs, 1);
   // files of earlier versions carry no checksum either
   fixtures::write_unsealed_copy(out, out + ".old");
@@ -564,7 +572,9 @@ TEST(Pipeline, OldFormatFileReadsAndExtends) {
   EXPECT_EQ(r.metadata().difference(dataset_metadata(other)), "");
   other.sampling.grow_fugacity = 0.45;
   EXPECT_EQ(r.metadata().difference(dataset_metadata(other)), "grow_fugacity 0.4 vs 0.45");
-  EXPECT_EQ(r.metadata().difference(dataset_metadata(small_fixed_run(1, 1))), "relax_method direct vs multilevel");
+  ExploreOptions multilevel = small_fixed_run(1, 1);
+  multilevel.relax = with_method(multilevel.relax, "eigen-projected");
+  EXPECT_EQ(r.metadata().difference(dataset_metadata(multilevel)), "relax_method direct vs multilevel");
   fs::remove_all(dir);
 }
 

@@ -55,8 +55,9 @@ bool parse_relax(int argc, char** argv, RelaxCommand& c) {
   args.option("--method", &r.method,
               "default (multilevel: coarse-to-fine from n/2 vertices with contact-stiffness continuation at the "
               "coarse level, for the twist-free model without a slab; hybrid Newton directions: projected Hessian "
-              "far from equilibrium, exact near it), gauss-newton (the default with the contact pairs' Gauss-Newton "
-              "Hessians in the projected iterations), hybrid (hybrid Newton at n vertices from the input), "
+              "far from equilibrium, exact near it; the contact pairs' Gauss-Newton Hessians in the projected "
+              "iterations), gauss-newton (the same as default), eigen-projected (the default with the contact pairs' "
+              "eigen-projected Hessians), hybrid (hybrid Newton at n vertices from the input), "
               "exact (exact Hessian every iteration, at n) or paper (NewtonOptions::paper(), at n)");
   args.option("--coarse-levels", &r.coarse_levels,
               "multilevel: coarse levels below n, each halving the vertices (default " +

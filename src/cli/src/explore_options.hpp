@@ -47,9 +47,10 @@ inline void add_explore_options(ArgParser& args, ExploreArgs& a) {
               "contact-stiffness continuation F[,F...]: each relaxation first solves with the stiffness times each "
               "factor in (0, 1), then at the stiffness (default: off; recorded in the data set)");
   args.option("--method", &a.method,
-              "relaxation method as for knots relax: default (multilevel), gauss-newton (multilevel with the contact "
-              "pairs' Gauss-Newton Hessians), hybrid (Newton at n from the sample), "
-              "exact or paper (recorded in the data set)");
+              "relaxation method as for knots relax: default (multilevel with the contact pairs' Gauss-Newton "
+              "Hessians; gauss-newton is the same), eigen-projected (multilevel with the contact pairs' "
+              "eigen-projected Hessians), hybrid (Newton at n from the sample), exact or paper (recorded in the "
+              "data set)");
   args.option("--coarse-levels", &a.options.relax.coarse_levels,
               "multilevel: coarse levels below n (default " + std::to_string(kDefaultCoarseLevels) +
                   "; recorded in the data set)");
@@ -63,12 +64,12 @@ inline void add_explore_options(ArgParser& args, ExploreArgs& a) {
 /// them, so the knots' method is never changed behind the user's back.
 inline void prepare_for_links(ExploreArgs& a, bool knots_too) {
   if (knots_too) {
-    if (a.method == "default" || a.method == "gauss-newton" || !a.no_stiffness)
+    if (a.method == "default" || a.method == "gauss-newton" || a.method == "eigen-projected" || !a.no_stiffness)
       throw InputError("links are relaxed by the direct method without the stiffness attribute: give --method hybrid "
                        "(or exact, paper) and --no-stiffness to compute knots and links in one data set");
     return;
   }
-  if (a.method == "gauss-newton")
+  if (a.method == "gauss-newton" || a.method == "eigen-projected")
     throw InputError("links are relaxed by the direct method: give --method default, hybrid, exact or paper");
   if (a.method == "default") a.method = "hybrid";
   a.no_stiffness = true;

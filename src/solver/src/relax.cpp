@@ -175,7 +175,8 @@ ResolvedModel resolve_model(const RelaxOptions& options, double mean_edge_length
 }
 
 const std::vector<std::string>& method_names() {
-  static const std::vector<std::string> names = {"default", "gauss-newton", "hybrid", "exact", "paper"};
+  static const std::vector<std::string> names = {"default", "gauss-newton", "eigen-projected", "hybrid", "exact",
+                                                  "paper"};
   return names;
 }
 
@@ -186,12 +187,10 @@ RelaxOptions with_method(RelaxOptions o, const std::string& name) {
     for (size_t k = 0; k < names.size(); ++k) list += (k == 0 ? "" : k + 1 < names.size() ? ", " : " or ") + names[k];
     throw InputError("the method must be " + list + ", not '" + name + "'");
   }
-  if (name == "default") return o;
-  if (name == "gauss-newton") {
-    o.contact_gauss_newton = true;
-    o.newton.damp_short_steps = true;
-    return o;
-  }
+  if (name == "default" || name == "gauss-newton") return o;
+  o.contact_gauss_newton = false;
+  o.newton.damp_short_steps = false;
+  if (name == "eigen-projected") return o;
   o.method = RelaxMethod::Direct;
   if (name == "exact") o.newton.hessian = HessianMode::Exact;
   if (name == "paper") {

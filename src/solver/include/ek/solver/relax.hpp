@@ -58,6 +58,12 @@ inline constexpr int kMinCoarseVertices = 24;
 /// planarity slab, and the Newton settings. Unset optional fields are resolved
 /// by resolve_model().
 struct RelaxOptions {
+  /// NewtonMethodOptions with damp_short_steps on: the relaxation's default.
+  static NewtonMethodOptions damped_newton() {
+    NewtonMethodOptions n;
+    n.damp_short_steps = true;
+    return n;
+  }
   RodMaterial material;             ///< E, ν, r (paper defaults)
   /// [length] rest edge lengths (n); default: the input curve's edge lengths.
   std::optional<VecX> rest_lengths;
@@ -101,10 +107,11 @@ struct RelaxOptions {
   /// [bool] ContactOptions::gauss_newton_projection: in the projected
   /// iterations each contact pair's Hessian is its Gauss–Newton term
   /// b''∇d∇dᵀ instead of its eigen-projection (docs/performance.md: median
-  /// time per equilibrium 30% lower on the solver benchmark, and other
-  /// equilibria for some samples). Off by default; the "gauss-newton" method
-  /// of with_method() sets it.
-  bool contact_gauss_newton = false;
+  /// time per equilibrium about 20% lower on the solver benchmark, and other
+  /// equilibria for some samples). On by default, together with
+  /// newton.damp_short_steps; the "eigen-projected" method of with_method()
+  /// and the direct methods turn both off.
+  bool contact_gauss_newton = true;
   /// [1] Multilevel: levels below n, each with half the vertices of the next;
   /// a level is used while the count is even, the coarse curve has at least
   /// kMinCoarseVertices vertices and its coarsening is certified.
@@ -128,7 +135,9 @@ struct RelaxOptions {
   /// How Newton's method steps (shift ε, Hessian, Armijo constant, ...);
   /// relax() adds the goal: the tolerance, iteration cap and
   /// stop_at_critical_point above, and λ_min of the straight rod.
-  NewtonMethodOptions newton;
+  /// Default: NewtonMethodOptions with damp_short_steps on (it goes with
+  /// contact_gauss_newton, whose model can let strands slide too far).
+  NewtonMethodOptions newton = damped_newton();
   /// Throws InputError for impossible values (non-positive radius, ...).
   void validate() const;
 };
@@ -269,12 +278,17 @@ struct RelaxResult {
 
 /// The named methods of `knots relax --method` (and of explore, dataset and
 /// the experiments) applied to `options`: "default" (RelaxMethod::Multilevel
-/// with the hybrid Hessian: `options` as they are), "gauss-newton" (the
-/// default with RelaxOptions::contact_gauss_newton and
-/// NewtonMethodOptions::damp_short_steps), "hybrid" (Direct: the
-/// default before the multilevel relaxation), "exact" (Direct with the exact
-/// Hessian every iteration) or "paper" (Direct with NewtonOptions::paper()).
-/// The trace and verbosity settings are kept. Throws InputError for another name.
+/// with the hybrid Hessian, Gauss–Newton contact pair Hessians and damped
+/// short steps: `options` as they are), "gauss-newton" (the same as
+/// "default", the name it had while it was not the default),
+/// "eigen-projected" (the default with each contact pair's Hessian
+/// eigen-projected and no damping: the method of the committed ledgers under
+/// docs/results), "hybrid" (Direct: the default
+/// before the multilevel relaxation), "exact" (Direct with the exact Hessian
+/// every iteration) or "paper" (Direct with NewtonOptions::paper()). The
+/// three direct methods use eigen-projected pair Hessians without damping,
+/// as they always did. The trace and verbosity settings are kept. Throws
+/// InputError for another name.
 RelaxOptions with_method(RelaxOptions options, const std::string& name);
 
 /// The names with_method() accepts, in the order above.
