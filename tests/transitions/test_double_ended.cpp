@@ -24,7 +24,12 @@ using namespace ek::transitionstest;
 
 namespace {
 
-/// The stable states of `count` BFACF samples of a knot (seed 1, unit edges).
+/// The stable states of `count` BFACF samples of a knot (seed 1, unit edges),
+/// relaxed by the eigen-projected method: the Gauss–Newton default reaches
+/// the same states of 4_1 (energies 2.70252 and 2.70296 for samples 1 and 2)
+/// at positions that differ within the tolerance, and the double-ended search
+/// between these two is sensitive to that much (from the default's positions
+/// its saddle descends to other minima), so the inputs are pinned.
 std::vector<Points> relaxed_samples(const std::string& knot, int count) {
   SampleOptions so;
   so.vertices = kVertices;
@@ -32,7 +37,7 @@ std::vector<Points> relaxed_samples(const std::string& knot, int count) {
   const SampleBatch batch = sample_knot(KnotTable::global().at(knot), so);
   std::vector<Points> s;
   for (const auto& p : batch.samples) {
-    const RelaxResult r = relax(to_points(p), RelaxOptions{});
+    const RelaxResult r = relax(to_points(p), with_method(RelaxOptions{}, "eigen-projected"));
     EXPECT_EQ(r.status(), RelaxStatus::ConvergedStable);
     s.push_back(r.positions);
   }
