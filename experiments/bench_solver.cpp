@@ -23,7 +23,9 @@
 // exact Hessian every iteration), paper (NewtonOptions::paper()), levels2
 // (the multilevel method with two coarse levels, n/4 and n/2), gauss-newton
 // (the same as default), eigen-projected (default with each contact pair's
-// Hessian eigen-projected and no damping of short steps). The
+// Hessian eigen-projected and no damping of short steps), no-skip (default
+// climbing every rung of the shift ladder: NewtonOptions::shift_skip_proven
+// off; the ladder then searched around the last shift, shift_hint). The
 // default is "default,hybrid-simplicial". --method M is --methods M.
 //
 // --peer DIR: instead of the lattice samples, every curve file of DIR (the
@@ -120,6 +122,11 @@ Method method_named(const std::string& name, const ek::RelaxOptions& base) {
   if (name == "projected") {
     Method m{name, ek::with_method(base, "hybrid")};
     m.options.newton.exact_after_full_steps = 0;
+    return m;
+  }
+  if (name == "no-skip") {  // every rung of the shift ladder tried, none skipped as proven to fail
+    Method m{name, ek::with_method(base, "default")};
+    m.options.newton.shift_skip_proven = false;
     return m;
   }
   if (name == "levels2") {  // the multilevel method with two coarse levels (n/4, n/2)

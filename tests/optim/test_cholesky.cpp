@@ -274,3 +274,38 @@ TEST(Cholesky, BlockFactorisationOfTinyAndBlockDiagonalMatrices) {
   EXPECT_THROW(block.factorize(upper_of(Eigen::MatrixXd::Ones(6, 6) + S), 0.0), std::invalid_argument);
   EXPECT_THROW(block.solve(VecX::Ones(6)), std::invalid_argument);
 }
+
+// A failed block factorisation at shift s proves that H + (s + δ')·I is
+// indefinite for every δ' <= δ = shift_deficit(): the Rayleigh quotient of
+// x = (−L₁₁⁻ᵀ L_kᵀ v, v) is μ / ‖x‖² = −δ below λ_min(H + s·I). Checked
+// against the dense spectrum on random indefinite matrices (δ <= the true
+// deficit −λ_min − s, and δ > 0), exact on an uncoupled matrix (its failing
+// pivot block is its own eigen-problem), 0 after a success and for CHOLMOD.
+TEST(Cholesky, ShiftDeficitIsALowerBoundOnTheMissingShift) {
+  std::mt19937_64 rng(23);
+  for (int trial = 0; trial < 20; ++trial) {
+    const int n = 60 + 3 * trial;
+    const Eigen::MatrixXd S = random_symmetric(n, 80, rng);
+    const double lmin = smallest_eigenvalue(S);
+    ASSERT_LT(lmin, -0.1);
+    const CholeskySolver::Matrix U = upper_of(S);
+    CholeskySolver chol(CholeskyMode::Block);
+    for (double s : {0.0, 0.5 * -lmin, 0.99 * -lmin}) {
+      ASSERT_FALSE(chol.factorize(U, s, 1)) << trial;
+      const double missing = -lmin - s, delta = chol.shift_deficit();
+      EXPECT_GT(delta, 0.0) << trial;
+      EXPECT_LE(delta, missing * (1.0 + 1e-10) + 1e-14) << trial << " s " << s;
+    }
+    ASSERT_TRUE(chol.factorize(U, -lmin + 0.01, 1));
+    EXPECT_EQ(chol.shift_deficit(), 0.0);
+  }
+  // uncoupled: the second diagonal block has eigenvalues −1, 2, 3; at s = 0.5
+  // the missing shift is exactly 0.5
+  Eigen::MatrixXd D = Eigen::MatrixXd::Identity(9, 9);
+  D.block<3, 3>(3, 3) << 0.5, 1.5, 0.0, 1.5, 0.5, 0.0, 0.0, 0.0, 3.0;
+  CholeskySolver block(CholeskyMode::Block), simplicial(CholeskyMode::Simplicial);
+  ASSERT_FALSE(block.factorize(upper_of(D), 0.5, 1));
+  EXPECT_NEAR(block.shift_deficit(), 0.5, 1e-12);
+  ASSERT_FALSE(simplicial.factorize(upper_of(D), 0.5, 1));
+  EXPECT_EQ(simplicial.shift_deficit(), 0.0);
+}

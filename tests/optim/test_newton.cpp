@@ -241,17 +241,23 @@ TEST(Newton, ReportsMaxIterations) {
 // The report counts the failed rungs of the shift ladder: at x = (0.1, 0)
 // without coupling, H = diag(12·0.01 − 4, 4) = diag(−3.88, 4), and with
 // ε·λ_min = 1e-4 the shifts 1e-4, 1e-3, 1e-2, 0.1 and 1 fail; 10 succeeds.
+// With shift_skip_proven the first failure proves that every shift below
+// 1e-4 + 3.88 fails (the pivot −3.8799 of an uncoupled dof: the bound is
+// exact), so 1e-3 … 1 are skipped: one failure, then 10.
 TEST(Newton, CountsFailedFactorisations) {
-  DoubleWell f(1, 0.0);
-  f.set_dofs((VecX(2) << 0.1, 0.0).finished());
-  NewtonOptions o;
-  o.lambda_min = 1.0;
-  o.max_iterations = 0;  // one factorisation search, no step
-  const NewtonReport r = minimize(f, o);
-  EXPECT_EQ(r.status, SolverStatus::MaxIterations);
-  EXPECT_EQ(r.failed_factorizations, 5);
-  EXPECT_EQ(r.numeric_factorizations, 6);
-  EXPECT_NEAR(r.final_shift, 10.0, 1e-9);
+  for (bool skip : {false, true}) {
+    DoubleWell f(1, 0.0);
+    f.set_dofs((VecX(2) << 0.1, 0.0).finished());
+    NewtonOptions o;
+    o.lambda_min = 1.0;
+    o.max_iterations = 0;  // one factorisation search, no step
+    o.shift_skip_proven = skip;
+    const NewtonReport r = minimize(f, o);
+    EXPECT_EQ(r.status, SolverStatus::MaxIterations);
+    EXPECT_EQ(r.failed_factorizations, skip ? 1 : 5);
+    EXPECT_EQ(r.numeric_factorizations, skip ? 2 : 6);
+    EXPECT_NEAR(r.final_shift, 10.0, 1e-9);
+  }
 }
 
 // With shift_hint the ladder is searched around the last shift (stepping
@@ -267,6 +273,7 @@ TEST(Newton, ShiftHintGivesTheSameIterates) {
     o.lambda_min = 1e-3;  // base shift 1e-7: long climbs from the first rung
     o.shift_warm_start = false;
     o.shift_hint = hint;
+    o.shift_skip_proven = false;  // the hint alone (ShiftSkipGivesTheSameIterates: with the skip)
     const NewtonReport r = minimize(f, o);
     *x = f.dofs();
     return r;
@@ -279,6 +286,37 @@ TEST(Newton, ShiftHintGivesTheSameIterates) {
   EXPECT_EQ(a.energy, b.energy);
   EXPECT_LT(a.failed_factorizations, b.failed_factorizations);
   std::printf("[ measured ] %d iterations; factorisations %d (%d failed) with the hint, %d (%d failed) without\n",
+              a.iterations, a.numeric_factorizations, a.failed_factorizations, b.numeric_factorizations,
+              b.failed_factorizations);
+}
+
+// shift_skip_proven skips the rungs that a failed factorisation proves to
+// fail (CholeskySolver::shift_deficit()); the lowest rung that factorises is
+// found as by the climb, so the iterates are identical, with fewer failed
+// factorisations. The double wells' long climbs from the first rung (as
+// above, without the hint).
+TEST(Newton, ShiftSkipGivesTheSameIterates) {
+  auto run = [](bool skip, VecX* x) {
+    DoubleWell f(4);
+    f.set_dofs(VecX::Constant(8, 0.1));
+    NewtonOptions o;
+    o.lambda_min = 1e-3;
+    o.shift_warm_start = false;
+    o.shift_hint = false;
+    o.shift_skip_proven = skip;
+    const NewtonReport r = minimize(f, o);
+    *x = f.dofs();
+    return r;
+  };
+  VecX xa, xb;
+  const NewtonReport a = run(true, &xa), b = run(false, &xb);
+  EXPECT_EQ(a.status, SolverStatus::ConvergedStable);
+  EXPECT_EQ(a.iterations, b.iterations);
+  EXPECT_EQ(xa, xb);
+  EXPECT_EQ(a.energy, b.energy);
+  EXPECT_EQ(a.final_shift, b.final_shift);
+  EXPECT_LT(a.failed_factorizations, b.failed_factorizations);
+  std::printf("[ measured ] %d iterations; factorisations %d (%d failed) skipping, %d (%d failed) climbing\n",
               a.iterations, a.numeric_factorizations, a.failed_factorizations, b.numeric_factorizations,
               b.failed_factorizations);
 }

@@ -248,7 +248,32 @@ bool BlockCholesky::factor_row(int k, std::vector<Mat3>& L, std::vector<Mat3>& D
     d.noalias() -= Lkj * Lkj.transpose();
     L[pos] = Lkj;
   }
-  return cholesky3(d, Dinv[k]);
+  if (cholesky3(d, Dinv[k])) return true;
+  failed_pivot_ = d;
+  return false;
+}
+
+// The failure's lower bound on the missing shift (file comment): with the
+// spare factor's rows 0..k (row k's off-diagonal blocks are complete when
+// its pivot block fails), y = L₁₁⁻ᵀ L_kᵀ v by back substitution, and
+// |μ| / (1 + ‖y‖²).
+double BlockCholesky::deficit_at(int k, const Mat3& pivot) const {
+  const Eigen::SelfAdjointEigenSolver<Mat3> eig(pivot);
+  if (eig.info() != Eigen::Success) return 0.0;
+  const double mu = eig.eigenvalues()(0);
+  if (!(mu < 0.0)) return 0.0;  // positive definite but for round-off: nothing proven
+  const Vec3d v = eig.eigenvectors().col(0);
+  std::vector<Vec3d> y(static_cast<size_t>(k), Vec3d::Zero());
+  for (int p = row_ptr_[k]; p < row_ptr_[k + 1]; ++p) y[row_col_[p]] = spare_L_[row_pos_[p]].transpose() * v;
+  double norm2 = 1.0;
+  for (int j = k - 1; j >= 0; --j) {  // L₁₁ᵀ y = r, rows j of L₁₁ᵀ are L's column j
+    Vec3d r = y[j];
+    for (int q = col_ptr_[j]; q < col_ptr_[j + 1] && col_row_[q] < k; ++q)
+      r.noalias() -= spare_L_[q].transpose() * y[col_row_[q]];
+    y[j] = spare_Dinv_[j].transpose() * r;
+    norm2 += y[j].squaredNorm();
+  }
+  return std::isfinite(norm2) ? -mu / norm2 : 0.0;
 }
 
 bool BlockCholesky::factorize(const Matrix& upper, double shift) {
@@ -264,8 +289,12 @@ bool BlockCholesky::factorize(const Matrix& upper, double shift) {
     double* diag = &a_[9 * acol_ptr_[inverse_[b]]];
     for (int a = 0; a < 3; ++a) diag[4 * a] += 3 * b + a < n_ ? shift : 1.0;  // padding rows: identity
   }
+  deficit_ = 0.0;
   for (int k = 0; k < nb_; ++k)
-    if (!factor_row(k, spare_L_, spare_Dinv_)) return false;
+    if (!factor_row(k, spare_L_, spare_Dinv_)) {
+      deficit_ = deficit_at(k, failed_pivot_);
+      return false;
+    }
   std::swap(L_, spare_L_);
   std::swap(Dinv_, spare_Dinv_);
   good_ = true;

@@ -221,6 +221,10 @@ bool CholeskySolver::factorize_block(const Matrix& upper, double shift, std::uin
   return ok_;
 }
 
+double CholeskySolver::shift_deficit() const {
+  return options_.mode == CholeskyMode::Block && !ok_ ? block_.shift_deficit() : 0.0;
+}
+
 bool CholeskySolver::recall(double shift) {
   if (!good_ || shift != good_shift_) return false;
   ok_ = true;

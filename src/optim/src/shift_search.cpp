@@ -11,6 +11,7 @@ void ShiftSearch::restart(const NewtonOptions& o) {
   max_attempts_ = o.max_shift_attempts;
   warm_start_ = o.shift_warm_start;
   use_hint_ = o.shift_hint;
+  skip_proven_ = o.shift_skip_proven;
   start_ = last_ = base_;
   backoff_ = wait_ = 0;
 }
@@ -28,6 +29,14 @@ int ShiftSearch::probe_rung(double first, double hint) const {
   return j - 1;  // the hint's rung minus one
 }
 
+int ShiftSearch::next_rung(const CholeskySolver& cholesky, double first, int failed) const {
+  int j = failed + 1;
+  if (!skip_proven_) return j;
+  const double proven = rung(first, failed) + 0.5 * cholesky.shift_deficit();
+  for (double s = rung(first, j); j < max_attempts_ && s < proven; s *= growth_) ++j;
+  return j;
+}
+
 int ShiftSearch::search(CholeskySolver& cholesky, const CholeskySolver::Matrix& H, std::uint64_t version,
                         double first, double hint, Result& result) const {
   auto attempt = [&](int j) {
@@ -36,14 +45,16 @@ int ShiftSearch::search(CholeskySolver& cholesky, const CholeskySolver::Matrix& 
     if (!ok) ++result.failed;
     return ok;
   };
-  const int probe = probe_rung(first, hint);
+  const bool skips = skip_proven_ && cholesky.reports_shift_deficit();
+  const int probe = skips ? 0 : probe_rung(first, hint);  // with skips the climb is cheaper than the hint
   if (probe > 0 && attempt(probe)) {
     int found = probe;
     while (found > 0 && attempt(found - 1)) --found;
     if (found > 0 && !cholesky.recall(rung(first, found))) return -1;  // (cannot fail: same analysis, same H)
     return found;
   }
-  for (int j = probe > 0 ? probe + 1 : 0; j < max_attempts_; ++j)
+  for (int j = probe > 0 ? next_rung(cholesky, first, probe) : 0; j < max_attempts_;
+       j = next_rung(cholesky, first, j))
     if (attempt(j)) return j;
   return -1;
 }

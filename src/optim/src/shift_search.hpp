@@ -17,6 +17,12 @@
 // above it; if it factorises, the search steps down while the rung below
 // also factorises and, when one fails, takes the last good rung's factor
 // back (CholeskySolver::recall). The rung found is the climb's.
+//
+// Proven failures: a failed attempt at s reports the extra shift δ it proves
+// necessary (CholeskySolver::shift_deficit()); the climb skips the rungs
+// below s + δ/2, which would fail too. The rung found is still the climb's.
+// Where failures are skipped the hint is not used: its steps down cost a
+// successful factorisation each, more than the skipping climb (measured).
 #include <cstdint>
 
 #include "ek/optim/cholesky.hpp"
@@ -51,10 +57,13 @@ class ShiftSearch {
   int search(CholeskySolver& cholesky, const CholeskySolver::Matrix& H, std::uint64_t version, double first,
              double hint, Result& result) const;
   void update_warm_start(double first, double shift);
+  // The next rung to try after rung `failed` failed: the one above it, or
+  // above every rung the failure proves to fail.
+  int next_rung(const CholeskySolver& cholesky, double first, int failed) const;
 
   double base_ = 0.0, growth_ = 10.0;
   int max_attempts_ = 40;
-  bool warm_start_ = true, use_hint_ = true;
+  bool warm_start_ = true, use_hint_ = true, skip_proven_ = true;
   double start_ = 0.0, last_ = 0.0;  // warm start: first rung of the next search, last shift
   int backoff_ = 0, wait_ = 0;
   double hint_[2] = {0.0, 0.0};      // last shift of the projected [0] and the exact [1] Hessian

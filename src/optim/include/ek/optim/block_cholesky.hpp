@@ -31,6 +31,14 @@
 ///    factorisation: H + s·I is not positive definite. Each factorisation is
 ///    computed into a spare set of values that replaces the current factor
 ///    only on success, so a failed attempt keeps the last good factor.
+///  - What a failure proves: when the pivot block of row k,
+///    S = A_kk + s·I − Σ_j L_kj L_kjᵀ, has a smallest eigenvalue μ <= 0 with
+///    unit eigenvector v, the vector x = (−L₁₁⁻ᵀ L_kᵀ v, v) over the first
+///    k + 1 blocks has xᵀ (H + s·I) x = μ, so λ_min(H + s·I) <= μ / ‖x‖²
+///    (Rayleigh quotient and interlacing), and H + s'·I can be positive
+///    definite only for s' > s + |μ| / ‖x‖² (shift_deficit()). Costs one
+///    3 × 3 eigen-problem and a triangular solve over the first k blocks,
+///    only after a failure.
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
 #include <cstdint>
@@ -60,6 +68,12 @@ class BlockCholesky {
   bool factorize(const Matrix& upper, double shift);
   /// Solves (H + s·I) x = b with the last good factor (b: the matrix's size).
   VecX solve(const VecX& b) const;
+  /// [same unit as the shift] After factorize() failed at shift s: the
+  /// least δ >= 0 that the failure proves necessary, H + (s + δ')·I not
+  /// positive definite for every δ' <= δ (see the file comment; 0 when the
+  /// failing pivot block was positive definite, a failure by round-off).
+  /// 0 after a success.
+  double shift_deficit() const { return deficit_; }
 
   int size() const { return n_; }                 ///< [dofs]
   int blocks() const { return nb_; }              ///< 3 × 3 block rows
@@ -78,6 +92,7 @@ class BlockCholesky {
   void row_patterns();
   void gather_map(const Matrix& upper);
   bool factor_row(int k, std::vector<Eigen::Matrix3d>& L, std::vector<Eigen::Matrix3d>& Dinv);
+  double deficit_at(int k, const Eigen::Matrix3d& pivot) const;
 
   int n_ = 0, nb_ = 0;
   std::vector<int> edge_lo_, edge_hi_;  // block pairs (old indices, lo < hi) of H's pattern
@@ -101,6 +116,8 @@ class BlockCholesky {
   std::vector<Eigen::Matrix3d> L_, spare_L_;       // strictly lower blocks of L
   std::vector<Eigen::Matrix3d> Dinv_, spare_Dinv_; // inverses of the diagonal factors L_kk (lower)
   std::vector<Eigen::Matrix3d> work_;
+  Eigen::Matrix3d failed_pivot_;  // S of the row where the last factorize() failed
+  double deficit_ = 0.0;
   bool good_ = false;
   int symbolic_count_ = 0, ordering_count_ = 0;
 };

@@ -89,6 +89,14 @@ class CholeskySolver {
   /// failed gets the good one back.
   bool recall(double shift);
 
+  /// [same unit as the shift] After a failed factorize() at shift s, the
+  /// extra shift δ the failure proves necessary: H + (s + δ')·I is not
+  /// positive definite for any δ' <= δ (BlockCholesky::shift_deficit(); 0
+  /// for the CHOLMOD modes, which do not report it, and after a success).
+  double shift_deficit() const;
+  /// Whether a failed factorize() reports shift_deficit() (the Block mode).
+  bool reports_shift_deficit() const { return options_.mode == CholeskyMode::Block; }
+
   /// Solves (H + shift·I) x = b with the current factorisation (the last
   /// factorize() must have succeeded, or recall()).
   VecX solve(const VecX& b) const;

@@ -69,7 +69,16 @@ struct NewtonMethodOptions {
   /// kind of Hessian (projected or exact) needed last time, stepping up or
   /// down from there, instead of climbing from the first rung: the same
   /// shift (the lowest rung that factorises), fewer failed factorisations.
+  /// Used only where failures cannot be skipped (shift_skip_proven off, or
+  /// a CHOLMOD mode): with the skips, climbing from the warm start costs
+  /// fewer factorisations than the hint's steps down (docs/performance.md).
   bool shift_hint = true;
+  /// After a failed attempt at shift s, skip the rungs that the failure
+  /// proves to fail: those below s + δ/2, with δ the least extra shift the
+  /// failing pivot implies (CholeskySolver::shift_deficit(); the half is a
+  /// margin against round-off). The same rung is found, with fewer failed
+  /// factorisations (block factorisation only; the CHOLMOD modes report no δ).
+  bool shift_skip_proven = true;
   HessianMode hessian = HessianMode::Hybrid;  ///< see HessianMode
   /// After a projected step that the line search cut below
   /// short_step_fraction, start the next shift search one rung above the
