@@ -54,7 +54,7 @@ ContactOptions contact_options(const ResolvedModel& model, const RelaxOptions& o
   co.dhat = model.dhat;
   co.stiffness = model.contact_stiffness;
   co.hessian_margin = options.contact_hessian_margin;
-  co.gauss_newton_projection = options.contact_gauss_newton;
+  co.gauss_newton_projection = model.contact_gauss_newton;
   return co;
 }
 
@@ -64,6 +64,7 @@ NewtonOptions newton_options(const RelaxOptions& options, const ResolvedModel& m
   no.max_iterations = options.max_iterations;
   no.stop_at_critical_point = options.stop_at_critical_point;
   no.lambda_min = lambda_min;
+  no.damp_short_steps = options.newton.damp_short_steps || model.contact_gauss_newton;
   return no;
 }
 
@@ -169,6 +170,7 @@ ResolvedModel resolve_model(const RelaxOptions& options, double mean_edge_length
   r.contact_stiffness = options.contact_stiffness.value_or(default_contact_stiffness(mat));
   r.tolerance = options.tolerance.value_or(1e-8 * (mat.bending_stiffness() / kReferenceBendingStiffness) /
                                            (mean_edge_length * mean_edge_length));
+  r.contact_gauss_newton = options.contact_gauss_newton.value_or(multilevel_applies(options));
   if (options.link) r.model = TwistModel::FixedLink;
   else if (options.full_model) r.model = TwistModel::FreeTheta;
   return r;
@@ -420,7 +422,9 @@ RelaxResult relax(const Link& link, const RelaxOptions& options) {
   require_input(!link.empty(), "relax: no curve");
   if (link.size() == 1) return relax(link[0], options);
   options.validate();
-  return relax_components(link, options);
+  RelaxOptions direct = options;  // several components relax by the direct method
+  direct.method = RelaxMethod::Direct;
+  return relax_components(link, direct);
 }
 
 }  // namespace ek

@@ -58,12 +58,6 @@ inline constexpr int kMinCoarseVertices = 24;
 /// planarity slab, and the Newton settings. Unset optional fields are resolved
 /// by resolve_model().
 struct RelaxOptions {
-  /// NewtonMethodOptions with damp_short_steps on: the relaxation's default.
-  static NewtonMethodOptions damped_newton() {
-    NewtonMethodOptions n;
-    n.damp_short_steps = true;
-    return n;
-  }
   RodMaterial material;             ///< E, ν, r (paper defaults)
   /// [length] rest edge lengths (n); default: the input curve's edge lengths.
   std::optional<VecX> rest_lengths;
@@ -106,12 +100,15 @@ struct RelaxOptions {
   double contact_hessian_margin = 0.0;
   /// [bool] ContactOptions::gauss_newton_projection: in the projected
   /// iterations each contact pair's Hessian is its Gauss–Newton term
-  /// b''∇d∇dᵀ instead of its eigen-projection (docs/performance.md: median
-  /// time per equilibrium about 20% lower on the solver benchmark, and other
-  /// equilibria for some samples). On by default, together with
-  /// newton.damp_short_steps; the "eigen-projected" method of with_method()
-  /// and the direct methods turn both off.
-  bool contact_gauss_newton = true;
+  /// b''∇d∇dᵀ instead of its eigen-projection, and the Newton iteration
+  /// damps short steps (NewtonMethodOptions::damp_short_steps, which this
+  /// model needs). Unset: on where the multilevel method relaxes
+  /// (multilevel_applies(), one component), off for the direct method
+  /// (ResolvedModel::contact_gauss_newton). Measured (docs/performance.md):
+  /// about 20% less time per equilibrium of the multilevel method and other
+  /// equilibria for some samples; about twice the time of the direct
+  /// relaxations at prescribed links and under the slab.
+  std::optional<bool> contact_gauss_newton;
   /// [1] Multilevel: levels below n, each with half the vertices of the next;
   /// a level is used while the count is even, the coarse curve has at least
   /// kMinCoarseVertices vertices and its coarsening is certified.
@@ -135,9 +132,7 @@ struct RelaxOptions {
   /// How Newton's method steps (shift ε, Hessian, Armijo constant, ...);
   /// relax() adds the goal: the tolerance, iteration cap and
   /// stop_at_critical_point above, and λ_min of the straight rod.
-  /// Default: NewtonMethodOptions with damp_short_steps on (it goes with
-  /// contact_gauss_newton, whose model can let strands slide too far).
-  NewtonMethodOptions newton = damped_newton();
+  NewtonMethodOptions newton;
   /// Throws InputError for impossible values (non-positive radius, ...).
   void validate() const;
 };
@@ -156,16 +151,20 @@ struct ResolvedModel {
   /// [energy/length] 1e-8 · (EI/EI_ref) / ℓ² unless given (ℓ: mean rest edge length)
   double tolerance = 0.0;
   TwistModel model = TwistModel::TwistFree;  ///< FixedLink with a link, FreeTheta with full_model
+  /// RelaxOptions::contact_gauss_newton, or where unset whether the
+  /// multilevel method applies (multilevel_applies()).
+  bool contact_gauss_newton = false;
 };
 /// Resolves the defaults of `options` for rest edges of mean length
 /// `mean_edge_length` [length] (> 0).
 ResolvedModel resolve_model(const RelaxOptions& options, double mean_edge_length);
-/// The contact options of the resolved model (d̂, ω) and of `options`
-/// (the Hessian pattern's margin), as RodModel uses them.
+/// The contact options of the resolved model (d̂, ω, the pair Hessians) and
+/// of `options` (the Hessian pattern's margin), as RodModel uses them.
 ContactOptions contact_options(const ResolvedModel& model, const RelaxOptions& options);
 /// The Newton options of a relaxation: options.newton with the goal of
 /// `options` (the resolved tolerance, the iteration cap, stop at a critical
-/// point) and the straight rod's λ_min (the shift's scale).
+/// point, damp_short_steps with the Gauss–Newton pair Hessians) and the
+/// straight rod's λ_min (the shift's scale).
 NewtonOptions newton_options(const RelaxOptions& options, const ResolvedModel& model, double lambda_min);
 /// The rod of a relaxation: `x` (n by 3) with rest edges `rest` (n), the
 /// material of `options` and the resolved twist model; with options.link,
