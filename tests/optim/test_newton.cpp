@@ -260,65 +260,59 @@ TEST(Newton, CountsFailedFactorisations) {
   }
 }
 
-// With shift_hint the ladder is searched around the last shift (stepping
-// down when that rung factorises, up when the one below it fails); the shift
-// found is the lowest rung that factorises, as the climb from the first rung
-// finds it, so the iterates are identical. From x = 0.1 every well starts
-// indefinite (H_ii = 12·0.01 − 4 + coupling) and needs shifts of ~1..10.
-TEST(Newton, ShiftHintGivesTheSameIterates) {
-  auto run = [](bool hint, VecX* x) {
-    DoubleWell f(4);
-    f.set_dofs(VecX::Constant(8, 0.1));
-    NewtonOptions o;
-    o.lambda_min = 1e-3;  // base shift 1e-7: long climbs from the first rung
-    o.shift_warm_start = false;
-    o.shift_hint = hint;
-    o.shift_skip_proven = false;  // the hint alone (ShiftSkipGivesTheSameIterates: with the skip)
-    const NewtonReport r = minimize(f, o);
-    *x = f.dofs();
-    return r;
-  };
-  VecX xa, xb;
-  const NewtonReport a = run(true, &xa), b = run(false, &xb);
-  EXPECT_EQ(a.status, SolverStatus::ConvergedStable);
-  EXPECT_EQ(a.iterations, b.iterations);
-  EXPECT_EQ(xa, xb);
-  EXPECT_EQ(a.energy, b.energy);
-  EXPECT_LT(a.failed_factorizations, b.failed_factorizations);
-  std::printf("[ measured ] %d iterations; factorisations %d (%d failed) with the hint, %d (%d failed) without\n",
-              a.iterations, a.numeric_factorizations, a.failed_factorizations, b.numeric_factorizations,
-              b.failed_factorizations);
+namespace {
+
+/// The double wells from x = 0.1, where every well starts indefinite
+/// (H_ii = 12·0.01 − 4 + coupling) and needs shifts of ~1..10, minimised
+/// with the base shift 1e-7 and no warm start (long climbs from the first
+/// rung), the shift search as given; the minimiser in `x`.
+NewtonReport wells_with_shift_search(bool hint, bool skip, VecX* x) {
+  DoubleWell f(4);
+  f.set_dofs(VecX::Constant(8, 0.1));
+  NewtonOptions o;
+  o.lambda_min = 1e-3;
+  o.shift_warm_start = false;
+  o.shift_hint = hint;
+  o.shift_skip_proven = skip;
+  const NewtonReport r = minimize(f, o);
+  *x = f.dofs();
+  return r;
 }
 
-// shift_skip_proven skips the rungs that a failed factorisation proves to
-// fail (CholeskySolver::shift_deficit()); the lowest rung that factorises is
-// found as by the climb, so the iterates are identical, with fewer failed
-// factorisations. The double wells' long climbs from the first rung (as
-// above, without the hint).
-TEST(Newton, ShiftSkipGivesTheSameIterates) {
-  auto run = [](bool skip, VecX* x) {
-    DoubleWell f(4);
-    f.set_dofs(VecX::Constant(8, 0.1));
-    NewtonOptions o;
-    o.lambda_min = 1e-3;
-    o.shift_warm_start = false;
-    o.shift_hint = false;
-    o.shift_skip_proven = skip;
-    const NewtonReport r = minimize(f, o);
-    *x = f.dofs();
-    return r;
-  };
-  VecX xa, xb;
-  const NewtonReport a = run(true, &xa), b = run(false, &xb);
+/// Two searches of the same ladder: the same iterates, fewer failures by `a`.
+void expect_same_iterates_fewer_failures(const NewtonReport& a, const VecX& xa, const NewtonReport& b,
+                                         const VecX& xb, const char* what) {
   EXPECT_EQ(a.status, SolverStatus::ConvergedStable);
   EXPECT_EQ(a.iterations, b.iterations);
   EXPECT_EQ(xa, xb);
   EXPECT_EQ(a.energy, b.energy);
   EXPECT_EQ(a.final_shift, b.final_shift);
   EXPECT_LT(a.failed_factorizations, b.failed_factorizations);
-  std::printf("[ measured ] %d iterations; factorisations %d (%d failed) skipping, %d (%d failed) climbing\n",
-              a.iterations, a.numeric_factorizations, a.failed_factorizations, b.numeric_factorizations,
+  std::printf("[ measured ] %d iterations; factorisations %d (%d failed) %s, %d (%d failed) climbing\n",
+              a.iterations, a.numeric_factorizations, a.failed_factorizations, what, b.numeric_factorizations,
               b.failed_factorizations);
+}
+
+}  // namespace
+
+// With shift_hint the ladder is searched around the last shift (stepping
+// down when that rung factorises, up when the one below it fails); the shift
+// found is the lowest rung that factorises, as the climb from the first rung
+// finds it, so the iterates are identical (the hint alone, no skips).
+TEST(Newton, ShiftHintGivesTheSameIterates) {
+  VecX xa, xb;
+  const NewtonReport a = wells_with_shift_search(true, false, &xa), b = wells_with_shift_search(false, false, &xb);
+  expect_same_iterates_fewer_failures(a, xa, b, xb, "with the hint");
+}
+
+// shift_skip_proven skips the rungs that a failed factorisation proves to
+// fail (CholeskySolver::shift_deficit()); the lowest rung that factorises is
+// found as by the climb, so the iterates are identical, with fewer failed
+// factorisations.
+TEST(Newton, ShiftSkipGivesTheSameIterates) {
+  VecX xa, xb;
+  const NewtonReport a = wells_with_shift_search(false, true, &xa), b = wells_with_shift_search(false, false, &xb);
+  expect_same_iterates_fewer_failures(a, xa, b, xb, "skipping");
 }
 
 TEST(Newton, RejectsBadOptionsAndInfeasibleStart) {
