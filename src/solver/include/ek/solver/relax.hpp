@@ -277,17 +277,17 @@ struct RelaxResult {
 
 /// The named methods of `knots relax --method` (and of explore, dataset and
 /// the experiments) applied to `options`: "default" (RelaxMethod::Multilevel
-/// with the hybrid Hessian, Gauss–Newton contact pair Hessians and damped
-/// short steps: `options` as they are), "gauss-newton" (the same as
-/// "default", the name it had while it was not the default),
-/// "eigen-projected" (the default with each contact pair's Hessian
-/// eigen-projected and no damping: the method of the committed ledgers under
-/// docs/results), "hybrid" (Direct: the default
+/// with the hybrid Hessian; RelaxOptions::contact_gauss_newton as given,
+/// unset: Gauss–Newton contact pair Hessians and damped short steps where
+/// the multilevel method applies: `options` as they are), "gauss-newton" (an
+/// alias of "default"), "eigen-projected" (the default with each contact
+/// pair's Hessian eigen-projected and no damping: the method of the
+/// committed ledgers under docs/results), "hybrid" (Direct: the default
 /// before the multilevel relaxation), "exact" (Direct with the exact Hessian
 /// every iteration) or "paper" (Direct with NewtonOptions::paper()). The
-/// three direct methods use eigen-projected pair Hessians without damping,
-/// as they always did. The trace and verbosity settings are kept. Throws
-/// InputError for another name.
+/// three direct methods use eigen-projected pair Hessians without damping.
+/// The trace and verbosity settings are kept. Throws InputError for another
+/// name.
 RelaxOptions with_method(RelaxOptions options, const std::string& name);
 
 /// The names with_method() accepts, in the order above.
