@@ -144,7 +144,7 @@ DatasetMetadata dataset_metadata(const ExploreOptions& o) {
   m.newton_hessian = to_string(o.relax.newton.hessian);
   m.remove_rigid_motions = o.relax.newton.remove_rigid_motions;
   m.contact_hessian = resolved.contact_gauss_newton ? "gauss-newton" : "eigen-projected";
-  m.damp_short_steps = o.relax.newton.damp_short_steps || resolved.contact_gauss_newton;
+  m.damp_short_steps = resolved.damp_short_steps;
   m.max_iterations = o.relax.max_iterations;
   m.burn_in = o.burn_in;
   m.sampling = o.sampling_description();

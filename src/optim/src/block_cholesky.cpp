@@ -257,8 +257,8 @@ bool BlockCholesky::factor_row(int k, std::vector<Mat3>& L, std::vector<Mat3>& D
 // spare factor's rows 0..k (row k's off-diagonal blocks are complete when
 // its pivot block fails), y = L₁₁⁻ᵀ L_kᵀ v by back substitution, and
 // |μ| / (1 + ‖y‖²).
-double BlockCholesky::deficit_at(int k, const Mat3& pivot) const {
-  const Eigen::SelfAdjointEigenSolver<Mat3> eig(pivot);
+double BlockCholesky::deficit_at(int k) const {
+  const Eigen::SelfAdjointEigenSolver<Mat3> eig(failed_pivot_);
   if (eig.info() != Eigen::Success) return 0.0;
   const double mu = eig.eigenvalues()(0);
   if (!(mu < 0.0)) return 0.0;  // positive definite but for round-off: nothing proven
@@ -292,7 +292,7 @@ bool BlockCholesky::factorize(const Matrix& upper, double shift) {
   deficit_ = 0.0;
   for (int k = 0; k < nb_; ++k)
     if (!factor_row(k, spare_L_, spare_Dinv_)) {
-      deficit_ = deficit_at(k, failed_pivot_);
+      deficit_ = deficit_at(k);
       return false;
     }
   std::swap(L_, spare_L_);

@@ -222,7 +222,7 @@ bool CholeskySolver::factorize_block(const Matrix& upper, double shift, std::uin
 }
 
 double CholeskySolver::shift_deficit() const {
-  return options_.mode == CholeskyMode::Block && !ok_ ? block_.shift_deficit() : 0.0;
+  return reports_shift_deficit() && !ok_ ? block_.shift_deficit() : 0.0;
 }
 
 bool CholeskySolver::recall(double shift) {

@@ -64,7 +64,7 @@ NewtonOptions newton_options(const RelaxOptions& options, const ResolvedModel& m
   no.max_iterations = options.max_iterations;
   no.stop_at_critical_point = options.stop_at_critical_point;
   no.lambda_min = lambda_min;
-  no.damp_short_steps = options.newton.damp_short_steps || model.contact_gauss_newton;
+  no.damp_short_steps = model.damp_short_steps;
   return no;
 }
 
@@ -171,6 +171,7 @@ ResolvedModel resolve_model(const RelaxOptions& options, double mean_edge_length
   r.tolerance = options.tolerance.value_or(1e-8 * (mat.bending_stiffness() / kReferenceBendingStiffness) /
                                            (mean_edge_length * mean_edge_length));
   r.contact_gauss_newton = options.contact_gauss_newton.value_or(multilevel_applies(options));
+  r.damp_short_steps = options.newton.damp_short_steps || r.contact_gauss_newton;
   if (options.link) r.model = TwistModel::FixedLink;
   else if (options.full_model) r.model = TwistModel::FreeTheta;
   return r;

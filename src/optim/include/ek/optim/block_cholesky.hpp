@@ -92,7 +92,7 @@ class BlockCholesky {
   void row_patterns();
   void gather_map(const Matrix& upper);
   bool factor_row(int k, std::vector<Eigen::Matrix3d>& L, std::vector<Eigen::Matrix3d>& Dinv);
-  double deficit_at(int k, const Eigen::Matrix3d& pivot) const;
+  double deficit_at(int k) const;  // from failed_pivot_, row k of the spare factor
 
   int n_ = 0, nb_ = 0;
   std::vector<int> edge_lo_, edge_hi_;  // block pairs (old indices, lo < hi) of H's pattern

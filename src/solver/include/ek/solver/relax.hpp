@@ -154,6 +154,9 @@ struct ResolvedModel {
   /// RelaxOptions::contact_gauss_newton, or where unset whether the
   /// multilevel method applies (multilevel_applies()).
   bool contact_gauss_newton = false;
+  /// NewtonMethodOptions::damp_short_steps, or the Gauss–Newton pair
+  /// Hessians above (which need it).
+  bool damp_short_steps = false;
 };
 /// Resolves the defaults of `options` for rest edges of mean length
 /// `mean_edge_length` [length] (> 0).
