@@ -20,12 +20,18 @@
 // hybrid Hessian, CHOLMOD's simplicial LL': the direct method without the
 // multilevel relaxation and the block factorisation), hybrid (Direct with the
 // block factorisation), projected (hybrid without its exact region), exact (the
-// exact Hessian every iteration), paper (NewtonOptions::paper()), levels2
-// (the multilevel method with two coarse levels, n/4 and n/2), gauss-newton
-// (the same as default), eigen-projected (default with each contact pair's
-// Hessian eigen-projected and no damping of short steps), no-skip (default
-// climbing every rung of the shift ladder: NewtonOptions::shift_skip_proven
-// off; the ladder then searched around the last shift, shift_hint). The
+// exact Hessian every iteration), paper (NewtonOptions::paper()), levels3
+// (the multilevel method with three coarse levels, n/8, n/4 and n/2),
+// gauss-newton (the same as default), one-level (one coarse level, n/2, no
+// contact-pattern margin, the odd vertices collapsed: the default before two
+// levels), eigen-projected (one-level with each contact pair's Hessian
+// eigen-projected and no damping of short steps), no-skip (default climbing
+// every rung of the shift ladder: NewtonOptions::shift_skip_proven off; the
+// ladder then searched around the last shift, shift_hint), no-recheck (default
+// with coarse levels of either parity but no soft iterations between tries),
+// even-only (default with only the odd vertices collapsed, tried once),
+// margin=X (default with the contact pattern's margin X, a length), soft=F[/G]
+// (default with the coarsest level's continuation factors F, G, ...). The
 // default is "default,hybrid-simplicial". --method M is --methods M.
 //
 // --peer DIR: instead of the lattice samples, every curve file of DIR (the
@@ -129,9 +135,26 @@ Method method_named(const std::string& name, const ek::RelaxOptions& base) {
     m.options.newton.shift_skip_proven = false;
     return m;
   }
-  if (name == "levels2") {  // the multilevel method with two coarse levels (n/4, n/2)
+  if (name == "levels3") {  // the multilevel method with three coarse levels (n/8, n/4, n/2)
     Method m{name, ek::with_method(base, "default")};
-    m.options.coarse_levels = 2;
+    m.options.coarse_levels = 3;
+    return m;
+  }
+  if (name == "no-recheck" || name == "even-only") {  // the coarse levels found by either parity, or the odd vertices
+    Method m{name, ek::with_method(base, "default")};
+    m.options.coarsening = name == "even-only" ? ek::CoarseningOptions::even_only() : ek::CoarseningOptions{true, 0, 0};
+    return m;
+  }
+  if (name.rfind("margin=", 0) == 0) {  // the contact Hessian pattern's margin [length]
+    Method m{name, ek::with_method(base, "default")};
+    m.options.contact_hessian_margin = std::stod(name.substr(7));
+    return m;
+  }
+  if (name.rfind("soft=", 0) == 0) {  // the coarsest level's continuation factors F[/G...]
+    Method m{name, ek::with_method(base, "default")};
+    m.options.coarse_continuation.clear();
+    std::stringstream factors(name.substr(5));
+    for (std::string f; std::getline(factors, f, '/');) m.options.coarse_continuation.push_back(std::stod(f));
     return m;
   }
   return Method{name, ek::with_method(base, name)};

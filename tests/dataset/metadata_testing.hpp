@@ -39,6 +39,7 @@ inline DatasetMetadata complete_metadata() {
   m.relax_method = "multilevel";
   m.coarse_levels = 2;
   m.coarse_continuation = std::vector<double>{1e-2};
+  m.coarsening = "either-parity,recheck-20x3";
   m.newton_hessian = "exact";
   m.remove_rigid_motions = false;
   m.contact_hessian = "gauss-newton";

@@ -327,7 +327,8 @@ TEST(DatasetMetadataTable, JournalKeyCoversEveryComparedField) {
   const std::string key = journal_key(a);
   EXPECT_EQ(key,
             "young=2100.5 poisson=0.33333333333333331 radius=0.25 n=120 tol=3.3333333333333334e-09 omega=1234.5678 "
-            "dhat=0.45000000000000001 model=free-theta method=multilevel levels=2 coarse=0.01 hessian=exact rigid=0 "
+            "dhat=0.45000000000000001 model=free-theta method=multilevel levels=2 coarse=0.01 "
+            "coarsening=either-parity,recheck-20x3 hessian=exact rigid=0 "
             "contact=gauss-newton damp=1 iterations=3000 "
             "sampling=fixed:3,burn-in=7 "
             "grow=0.40999999999999998 shrink=0.089999999999999997 growth=9.5 decorrelation=12345 "

@@ -392,6 +392,7 @@ std::vector<Change> every_parameter_change() {
       {"relax_method", [](ExploreOptions& o) { o.relax.method = RelaxMethod::Direct; }},
       {"coarse_levels", [](ExploreOptions& o) { o.relax.coarse_levels = 2; }},
       {"coarse_continuation", [](ExploreOptions& o) { o.relax.coarse_continuation = {1e-2}; }},
+      {"coarsening", [](ExploreOptions& o) { o.relax.coarsening.either_parity = true; }},
       {"newton_hessian", [](ExploreOptions& o) { o.relax.newton.hessian = HessianMode::Exact; }},
       {"remove_rigid_motions", [](ExploreOptions& o) { o.relax.newton.remove_rigid_motions = false; }},
       {"contact_hessian", [](ExploreOptions& o) { o.relax.contact_gauss_newton = true; }},
@@ -468,6 +469,11 @@ TEST(Pipeline, JournalKeyIsTheEarlierKeyForTheEarlierParameters) {
       EXPECT_EQ(dataset_metadata(o).damp_short_steps, true);
       EXPECT_NE(journal_key(dataset_metadata(o)).find(" contact=gauss-newton"), std::string::npos);
     }
+    if (name == "one-level" || name == "eigen-projected") {  // the multilevel method before two levels
+      EXPECT_EQ(dataset_metadata(o).coarse_levels, 1);
+      EXPECT_EQ(dataset_metadata(o).coarsening, "even");
+      EXPECT_EQ(journal_key(dataset_metadata(o)).find(" coarsening="), std::string::npos);
+    }
     if (name == "eigen-projected") {
       EXPECT_EQ(dataset_metadata(o).contact_hessian, "eigen-projected");
       EXPECT_EQ(dataset_metadata(o).damp_short_steps, false);
@@ -477,8 +483,8 @@ TEST(Pipeline, JournalKeyIsTheEarlierKeyForTheEarlierParameters) {
   EXPECT_EQ(keys.size(), method_names().size() - 1);
   // the multilevel method (the default) names itself and its settings
   const std::string multilevel = journal_key(dataset_metadata(small_fixed_run(3, 1)));
-  EXPECT_NE(multilevel.find(" dhat=0.40000000000000002 method=multilevel levels=1 coarse=0.001 contact=gauss-newton "
-                            "damp=1 iterations=5000 "),
+  EXPECT_NE(multilevel.find(" dhat=0.40000000000000002 method=multilevel levels=2 coarse=0.001 "
+                            "coarsening=either-parity,recheck-30x6 contact=gauss-newton damp=1 iterations=5000 "),
             std::string::npos)
       << multilevel;
 }
@@ -538,9 +544,10 @@ TEST(Pipeline, OldFormatFileReadsAndExtends) {
   fs::rename(out + ".old", out);
   const hid_t f = H5Fopen(out.c_str(), H5F_ACC_RDWR, H5P_DEFAULT);
   ASSERT_GE(f, 0);
-  for (const char* name : {"relax_method", "newton_hessian", "remove_rigid_motions", "contact_hessian", "damp_short_steps", "grow_fugacity",
-                           "shrink_fugacity", "growth_factor", "decorrelation_moves", "burn_in", "compute_stiffness",
-                           "contact_continuation", "max_iterations"})
+  for (const char* name : {"relax_method", "newton_hessian", "remove_rigid_motions", "contact_hessian",
+                           "damp_short_steps", "coarsening", "grow_fugacity", "shrink_fugacity", "growth_factor",
+                           "decorrelation_moves", "burn_in", "compute_stiffness", "contact_continuation",
+                           "max_iterations"})
     ASSERT_GE(H5Adelete(f, name), 0) << name;
   const long long unknown = -1;
   const hid_t space = H5Screate(H5S_SCALAR);
@@ -560,6 +567,7 @@ TEST(Pipeline, OldFormatFileReadsAndExtends) {
     EXPECT_EQ(m.contact_continuation, std::vector<double>{});
     EXPECT_EQ(m.contact_hessian, "eigen-projected");
     EXPECT_EQ(m.damp_short_steps, false);
+    EXPECT_EQ(m.coarsening, "even");
     EXPECT_FALSE(m.max_iterations || m.burn_in || m.compute_stiffness);
     EXPECT_EQ(m.difference(dataset_metadata(base)), "");
   }

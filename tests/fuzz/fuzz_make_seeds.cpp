@@ -67,6 +67,7 @@ void write_dataset(const std::string& path, const std::vector<ek::KnotEntry>& kn
   meta.relax_method = "multilevel";
   meta.coarse_levels = 1;
   meta.coarse_continuation = std::vector<double>{0.01};
+  meta.coarsening = "even";
   meta.newton_hessian = "exact";
   meta.remove_rigid_motions = true;
   meta.contact_hessian = "eigen-projected";

@@ -1,12 +1,16 @@
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
+#include <optional>
 #include <vector>
 
 #include "ek/embedding/embedding.hpp"
 #include "ek/geometry/polyline.hpp"
 #include "ek/knots/alexander.hpp"
 #include "ek/knots/table.hpp"
+#include "ek/lattice/sampling.hpp"
 #include "ek/solver/multilevel.hpp"
 #include "ek/solver/relax.hpp"
 #include "testing.hpp"
@@ -70,10 +74,79 @@ TEST(Multilevel, CoarseningThatWouldCrossAStrandIsNotCertified) {
   EXPECT_EQ(c.collapsed.row(5), P.row(5));
 }
 
-// The multilevel relaxation solves the coarse level first (half the
-// vertices, with the contact-stiffness continuation) and ends at n with a
-// converged-stable equilibrium of the full model; the knot type is kept;
-// models it does not apply to, odd counts and Direct relax at n only.
+// Either parity: where collapsing the odd vertices would pass an edge through
+// a strand, the even ones are collapsed instead when that is certified; the
+// coarse curve is then the odd vertices, and refining it gives the collapsed
+// curve back in the fine curve's own vertex order.
+TEST(Multilevel, EitherParityCoarseningKeepsTheFineOrder) {
+  Points P(8, 3);  // the curve of the test above: vertex 1's collapse cuts through the strand 4-5-6
+  P << 0, -1, 0,      //
+      1, 1, 0,        //
+      -1, 1, 0,       //
+      -3, 0, 2.5,     //
+      0.3, 0.3, 5,    //
+      0.3, 0.3, 0,    //
+      0.3, 0.3, -5,   //
+      0, -3, -2.5;
+  const VecX rest = edge_lengths(P);
+  EXPECT_FALSE(certified_coarsening(P, rest, ContactOptions{}, false));
+  const std::optional<ShiftedCoarsening> c = certified_coarsening(P, rest, ContactOptions{}, true);
+  ASSERT_TRUE(c);
+  EXPECT_EQ(c->offset, 1);
+  EXPECT_EQ(c->curve.certified, 1.0);
+  for (int k = 0; k < 4; ++k) {
+    EXPECT_EQ(c->curve.coarse.row(k), P.row(2 * k + 1));
+    EXPECT_DOUBLE_EQ(c->curve.coarse_rest(k), rest(2 * k + 1) + rest((2 * k + 2) % 8));
+  }
+  const Points R = refine(c->curve.coarse, rest, 1);
+  EXPECT_EQ(R, shift_vertices(c->curve.collapsed, 7));  // the collapsed curve, vertex 0 first again
+  EXPECT_EQ(R.row(1), P.row(1));                       // the corner is kept
+  EXPECT_EQ(shift_vertices(shift_vertices(P, 3), 5), P);
+  EXPECT_EQ(shift_vertices(rest, 2)(0), rest(2));
+  EXPECT_THROW(shift_vertices(P, 8), std::invalid_argument);
+  // a smooth curve keeps its even vertices
+  const Points T = fixtures::torus_knot(80, 2, 3);
+  EXPECT_EQ(certified_coarsening(T, edge_lengths(T), ContactOptions{}, true)->offset, 0);
+}
+
+// Crowded lattice polygons: a level whose coarsening is not certified runs
+// its soft phase in chunks of recheck_iterations and tries again, so the
+// coarsest level is reached on samples where the first try fails; the phases
+// are reported in the order they ran and the knot type is kept.
+TEST(Multilevel, CrowdedLevelsAreCoarsenedAfterSoftIterations) {
+  SampleOptions so;
+  so.vertices = 200;
+  so.count = 4;
+  so.seed = 3;
+  const SampleBatch batch = sample_knot(KnotTable::global().at("12a_1019"), so);
+  int rechecked = 0, coarsened = 0;
+  for (const auto& sample : batch.samples) {
+    const Points P = to_points(sample);
+    const RelaxResult r = relax(P, RelaxOptions{});
+    ASSERT_EQ(r.status(), RelaxStatus::ConvergedStable);
+    const std::string before = "coarse 100: continuation 0.001000 before coarsening";
+    const auto soft = std::find(r.phases.begin(), r.phases.end(), before);
+    if (soft == r.phases.end()) continue;
+    ++rechecked;
+    RelaxOptions once;
+    once.coarsening.rechecks = 0;
+    EXPECT_EQ(relax(P, once).coarse_vertices, (std::vector<int>{100}));  // the first try fails
+    if (r.coarse_vertices == std::vector<int>{50, 100}) {                // a later try succeeded
+      ++coarsened;
+      EXPECT_EQ(*std::prev(std::find(r.phases.begin(), r.phases.end(), "coarse 50: continuation 0.001000")), *soft);
+      EXPECT_EQ(r.phases.back(), "final");
+    }
+    EXPECT_LE(r.continuation_reports.size() + r.coarse_reports.size(), 2u + 6u);
+  }
+  EXPECT_GE(rechecked, 1);
+  EXPECT_GE(coarsened, 1);
+}
+
+// The multilevel relaxation solves the coarsest level first (a quarter of
+// the vertices, with the contact-stiffness continuation), then the level of
+// half, and ends at n with a converged-stable equilibrium of the full model;
+// the knot type is kept; models it does not apply to, odd counts and Direct
+// relax at n only.
 TEST(Multilevel, RelaxesThroughTheCoarseLevels) {
   const Points P = trefoil_coil(200);
   RelaxOptions o;
@@ -81,18 +154,20 @@ TEST(Multilevel, RelaxesThroughTheCoarseLevels) {
   const RelaxResult r = relax(P, o);
   ASSERT_EQ(r.status(), RelaxStatus::ConvergedStable);
   EXPECT_TRUE(r.alexander_preserved);
-  EXPECT_EQ(r.coarse_vertices, (std::vector<int>{100}));
-  ASSERT_EQ(r.coarse_reports.size(), 1u);
+  EXPECT_EQ(r.coarse_vertices, (std::vector<int>{50, 100}));
+  ASSERT_EQ(r.coarse_reports.size(), 2u);
   EXPECT_GT(r.coarse_reports[0].iterations, 0);
-  EXPECT_TRUE(r.continuation_reports.empty());  // the continuation ran at the coarse level
-  EXPECT_EQ(r.phases, (std::vector<std::string>{"coarse 100: continuation 0.001000", "coarse 100: final", "final"}));
+  EXPECT_TRUE(r.continuation_reports.empty());  // the continuation ran at the coarsest level
+  EXPECT_EQ(r.phases, (std::vector<std::string>{"coarse 50: continuation 0.001000", "coarse 50: final",
+                                                "coarse 100: final", "final"}));
   EXPECT_EQ(r.positions.rows(), 200);
   EXPECT_LE(r.report.gradient_norm, 1e-8);
-  EXPECT_EQ(r.all_phases().iterations, r.report.iterations + r.coarse_reports[0].iterations);
+  EXPECT_EQ(r.all_phases().iterations,
+            r.report.iterations + r.coarse_reports[0].iterations + r.coarse_reports[1].iterations);
 
-  RelaxOptions two = o;
-  two.coarse_levels = 2;
-  EXPECT_EQ(relax(P, two).coarse_vertices, (std::vector<int>{50, 100}));
+  RelaxOptions one = o;
+  one.coarse_levels = 1;
+  EXPECT_EQ(relax(P, one).coarse_vertices, (std::vector<int>{100}));
   RelaxOptions direct = o;
   direct.method = RelaxMethod::Direct;
   EXPECT_TRUE(relax(P, direct).coarse_vertices.empty());

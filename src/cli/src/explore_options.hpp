@@ -15,8 +15,14 @@ struct ExploreArgs {
   bool quiet = false;
   std::string continuation;
   std::string method = "default";
+  std::optional<int> coarse_levels;  ///< --coarse-levels; unset: the method's
   std::string stopping = "score";
 };
+
+/// Whether the named method relaxes knots by the multilevel method.
+inline bool multilevel_method(const std::string& method) {
+  return with_method(RelaxOptions{}, method).method == RelaxMethod::Multilevel;
+}
 
 inline void add_explore_options(ArgParser& args, ExploreArgs& a) {
   args.option("--samples", &a.samples, "lattice samples per knot (default 50); not with --adaptive");
@@ -47,13 +53,13 @@ inline void add_explore_options(ArgParser& args, ExploreArgs& a) {
               "contact-stiffness continuation F[,F...]: each relaxation first solves with the stiffness times each "
               "factor in (0, 1), then at the stiffness (default: off; recorded in the data set)");
   args.option("--method", &a.method,
-              "relaxation method as for knots relax: default (multilevel with the contact pairs' Gauss-Newton "
-              "Hessians; gauss-newton is the same), eigen-projected (multilevel with the contact pairs' "
-              "eigen-projected Hessians), hybrid (Newton at n from the sample), exact or paper (recorded in the "
-              "data set)");
-  args.option("--coarse-levels", &a.options.relax.coarse_levels,
+              "relaxation method as for knots relax: default (multilevel from n/4 with the contact pairs' "
+              "Gauss-Newton Hessians; gauss-newton is the same), one-level (multilevel from n/2, the default before "
+              "two levels), eigen-projected (one-level with the contact pairs' eigen-projected Hessians), hybrid "
+              "(Newton at n from the sample), exact or paper (recorded in the data set)");
+  args.option("--coarse-levels", &a.coarse_levels,
               "multilevel: coarse levels below n (default " + std::to_string(kDefaultCoarseLevels) +
-                  "; recorded in the data set)");
+                  "; 1 for one-level and eigen-projected; recorded in the data set)");
   args.flag("--no-stiffness", &a.no_stiffness, "skip the stiffness attribute (an eigenvalue per equilibrium)");
   args.flag("--quiet", &a.quiet, "no progress output");
 }
@@ -64,12 +70,12 @@ inline void add_explore_options(ArgParser& args, ExploreArgs& a) {
 /// them, so the knots' method is never changed behind the user's back.
 inline void prepare_for_links(ExploreArgs& a, bool knots_too) {
   if (knots_too) {
-    if (a.method == "default" || a.method == "gauss-newton" || a.method == "eigen-projected" || !a.no_stiffness)
+    if (multilevel_method(a.method) || !a.no_stiffness)
       throw InputError("links are relaxed by the direct method without the stiffness attribute: give --method hybrid "
                        "(or exact, paper) and --no-stiffness to compute knots and links in one data set");
     return;
   }
-  if (a.method == "gauss-newton" || a.method == "eigen-projected")
+  if (multilevel_method(a.method) && a.method != "default")
     throw InputError("links are relaxed by the direct method: give --method default, hybrid, exact or paper");
   if (a.method == "default") a.method = "hybrid";
   a.no_stiffness = true;
@@ -85,6 +91,7 @@ inline void finish_explore_options(ExploreArgs& a) {
   if (a.samples) a.options.samples = *a.samples;
   a.options.stiffness = !a.no_stiffness;
   a.options.relax = with_method(a.options.relax, a.method);
+  if (a.coarse_levels) a.options.relax.coarse_levels = *a.coarse_levels;
   a.options.relax.contact_continuation = parse_number_list(a.continuation, "--continuation");
   if (a.adaptive && a.options.max_samples < a.options.initial_samples) a.options.initial_samples = a.options.max_samples;
   a.options.validate();

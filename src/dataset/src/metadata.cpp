@@ -81,6 +81,7 @@ std::vector<MetadataField> make_table() {
   const FieldValue off = std::vector<double>{}, no_moves = std::int64_t{0}, yes = std::int64_t{1};
   const FieldValue direct = std::string("direct"), hybrid = std::string("hybrid");
   const FieldValue projected = std::string("eigen-projected"), no = std::int64_t{0};
+  const FieldValue even = std::string("even");
   // FIELD(member): the member and its name, which is the HDF5 attribute, the
   // JSON key and the name in difference().
   // Old files: the attributes of the first version-1 files are required; the
@@ -93,7 +94,8 @@ std::vector<MetadataField> make_table() {
   // exact Hessian) and the stiffness flag could differ between runs, so a
   // file without them does not know them.
   // The contact Hessian was the eigen-projected one, and short steps were
-  // not damped, in every run before they were recorded.
+  // not damped, in every run before they were recorded; the coarse levels
+  // were found by collapsing the odd vertices alone ("even").
   // Journal key: the fields added to it later are left out at the values
   // that the keys of earlier versions imply (their runs used the hybrid
   // Hessian with rigid-motion removal), so that their journals still resume.
@@ -111,6 +113,8 @@ std::vector<MetadataField> make_table() {
       field(FIELD(relax_method),        "",               exact,      absent_means(direct), key_unless("method", direct)),
       field(FIELD(coarse_levels),       "1",              exact,      not_recorded(),      key("levels")),
       field(FIELD(coarse_continuation), "1",              exact,      not_recorded(),      key("coarse")),
+      field(FIELD(coarsening),          "",               exact,      absent_means(even),
+            key_unless("coarsening", even)),
       field(FIELD(newton_hessian),      "",               exact,      not_recorded(),      key_unless("hessian", hybrid)),
       field(FIELD(remove_rigid_motions), "",              exact,      not_recorded(),      key_unless("rigid", yes)),
       field(FIELD(contact_hessian),     "",               exact,      absent_means(projected), key_unless("contact", projected)),

@@ -140,6 +140,9 @@ DatasetMetadata dataset_metadata(const ExploreOptions& o) {
   if (multilevel) {
     m.coarse_levels = o.relax.coarse_levels;
     m.coarse_continuation = o.relax.coarse_continuation;
+    m.coarsening = to_string(o.relax.coarsening);
+  } else {
+    m.coarsening = "even";  // no coarse levels: the value of the files before the field
   }
   m.newton_hessian = to_string(o.relax.newton.hessian);
   m.remove_rigid_motions = o.relax.newton.remove_rigid_motions;

@@ -298,7 +298,7 @@ DynamicsResult simulate(const Points& start, const VecX& rest, const DynamicsOpt
   const VecX masses = lumped_masses(rest, o.density, o.model.material.radius);
   Motion m{o,
            model_rod(start, rest, o.model, model),
-           ContactPotential(CurveTopology::single(n), contact_options(model, o.model)),
+           ContactPotential(CurveTopology::single(n), contact_options(model)),
            std::nullopt,
            InertiaTerm(masses, o.time_step, o.damping, o.gravity),
            NewtonSolver(no)};

@@ -116,8 +116,8 @@ energy_contact, gradient_norm, contacts, twist, writhe, link.)doc");
       [](const py::handle& points, std::optional<std::string> output, std::optional<double> link,
          std::optional<double> planar, bool release, std::optional<double> tol, int max_iter, double radius,
          double young, double poisson, std::optional<double> contact_stiffness, std::vector<double> continuation, bool full_model,
-         std::string method, int coarse_levels, std::string factorization, bool eigen, bool stop_at_saddle,
-         std::optional<std::string> trace, bool verbose) {
+         std::string method, std::optional<int> coarse_levels, std::string factorization, bool eigen,
+         bool stop_at_saddle, std::optional<std::string> trace, bool verbose) {
         RelaxRequest q;
         q.link = link;
         q.planar = planar;
@@ -145,7 +145,7 @@ energy_contact, gradient_norm, contacts, twist, writhe, link.)doc");
       py::arg("young") = RelaxRequest{}.young, py::arg("poisson") = RelaxRequest{}.poisson,
       py::arg("contact_stiffness") = py::none(),
       py::arg("continuation") = std::vector<double>{}, py::arg("full_model") = false,
-      py::arg("method") = RelaxRequest{}.method, py::arg("coarse_levels") = RelaxRequest{}.coarse_levels,
+      py::arg("method") = RelaxRequest{}.method, py::arg("coarse_levels") = py::none(),
       py::arg("factorization") = RelaxRequest{}.factorization, py::arg("eigen") = false,
       py::arg("stop_at_saddle") = false, py::arg("trace") = py::none(), py::arg("verbose") = false,
       R"doc(Relaxes the closed polygon points, (n, 3) (its edge lengths are the rest lengths), to a
@@ -153,7 +153,8 @@ stable equilibrium of the elastic rod with self-contact (paper Section 6), as `k
 Options as the command's (docs/cli.md): output (write the equilibrium, atomically), link,
 planar (slab half-thickness H), release, tol (None: default), max_iter, radius, young,
 poisson, contact_stiffness (None: default), continuation (factors in (0, 1)), full_model,
-method ("default", "gauss-newton", "eigen-projected", "hybrid", "exact", "paper"), coarse_levels,
+method ("default", "gauss-newton", "one-level", "eigen-projected", "hybrid", "exact", "paper"),
+coarse_levels (None: the method's),
 factorization ("block", "cholmod"), eigen, stop_at_saddle, trace (a CSV path: one row per Newton iteration),
 verbose (lines on stderr).
 

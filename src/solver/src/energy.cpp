@@ -32,7 +32,7 @@ CurveEnergy curve_energy(const Points& P, const CurveEnergyOptions& options) {
   e.energy.bend = rod.energy(EnergyTerm::Bend);
   e.energy.twist = rod.energy(EnergyTerm::Twist);
   // Self-contact (paper eq. 1): ω E_contact with d̂ and ω as relax() resolves them.
-  ContactPotential contact(CurveTopology::single(n), contact_options(resolved, model_options));
+  ContactPotential contact(CurveTopology::single(n), contact_options(resolved));
   contact.update(P);
   e.energy.contact = contact.energy(P);
   e.energy.total = e.energy.stretch + e.energy.bend + e.energy.twist + e.energy.contact;

@@ -1,10 +1,23 @@
 #include "ek/solver/multilevel.hpp"
 
+#include <utility>
+
 #include "ek/contact/topology.hpp"
 #include "ek/core/errors.hpp"
 
 namespace ek {
 namespace {
+
+template <class M>
+M shifted(const M& A, int k) {
+  const Eigen::Index n = A.rows();
+  require(k >= 0 && k < n, "shift_vertices: the shift must be in [0, n)");
+  if (k == 0) return A;
+  M B(A.rows(), A.cols());
+  B.topRows(n - k) = A.bottomRows(n - k);
+  B.bottomRows(k) = A.topRows(k);
+  return B;
+}
 
 /// Where the odd vertex between a and b sits: a + w (b − a), w = l_a / (l_a + l_b).
 Vec3 on_segment(const Points& P, int a, int b, double la, double lb) {
@@ -41,6 +54,23 @@ Points refine(const Points& coarse, const VecX& fine_rest) {
     P.row(2 * k + 1) = on_segment(coarse, k, (k + 1) % m, fine_rest(2 * k), fine_rest(2 * k + 1)).transpose();
   }
   return P;
+}
+
+Points shift_vertices(const Points& A, int k) { return shifted(A, k); }
+VecX shift_vertices(const VecX& A, int k) { return shifted(A, k); }
+
+std::optional<ShiftedCoarsening> certified_coarsening(const Points& fine, const VecX& rest,
+                                                      const ContactOptions& contact, bool either_parity) {
+  for (int offset = 0; offset < (either_parity ? 2 : 1); ++offset) {
+    CoarseCurve c = coarsen(shift_vertices(fine, offset), shift_vertices(rest, offset), contact);
+    if (c.certified >= 1.0) return ShiftedCoarsening{std::move(c), offset};
+  }
+  return std::nullopt;
+}
+
+Points refine(const Points& coarse, const VecX& fine_rest, int offset) {
+  const Points P = refine(coarse, shift_vertices(fine_rest, offset));
+  return offset == 0 ? P : shift_vertices(P, static_cast<int>(P.rows()) - offset);
 }
 
 }  // namespace ek

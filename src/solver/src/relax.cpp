@@ -49,11 +49,11 @@ AlexanderPolynomial input_alexander(const Points& curve, const std::string& what
   }
 }
 
-ContactOptions contact_options(const ResolvedModel& model, const RelaxOptions& options) {
+ContactOptions contact_options(const ResolvedModel& model) {
   ContactOptions co;
   co.dhat = model.dhat;
   co.stiffness = model.contact_stiffness;
-  co.hessian_margin = options.contact_hessian_margin;
+  co.hessian_margin = model.contact_hessian_margin;
   co.gauss_newton_projection = model.contact_gauss_newton;
   return co;
 }
@@ -134,6 +134,17 @@ void describe_result(RodModel& m, RelaxResult& result, bool coarse) {
 
 }  // namespace
 
+void CoarseningOptions::validate() const {
+  require_input(recheck_iterations >= 0 && rechecks >= 0, "relax: the coarsening's rechecks must be >= 0");
+}
+
+std::string to_string(const CoarseningOptions& c) {
+  std::string s = c.either_parity ? "either-parity" : "even";
+  if (c.rechecks > 0 && c.recheck_iterations > 0)
+    s += ",recheck-" + std::to_string(c.recheck_iterations) + "x" + std::to_string(c.rechecks);
+  return s;
+}
+
 void RelaxOptions::validate() const {
   material.validate();
   for (const auto& [value, name] : {std::pair{dhat, "dhat"}, std::pair{contact_stiffness, "contact_stiffness"},
@@ -149,8 +160,9 @@ void RelaxOptions::validate() const {
   for (const double f : coarse_continuation)
     require_input(f > 0.0 && f < 1.0, "relax: coarse_continuation factors must be in (0, 1)");
   require_input(coarse_levels >= 0 && coarse_levels <= 8, "relax: coarse_levels must be in [0, 8]");
-  require_input(contact_hessian_margin >= 0.0 && std::isfinite(contact_hessian_margin),
+  require_input(!contact_hessian_margin || (*contact_hessian_margin >= 0.0 && std::isfinite(*contact_hessian_margin)),
                 "relax: contact_hessian_margin must be >= 0");
+  coarsening.validate();
   if (slab) {
     require_input(slab->half_thickness > 0.0 && std::isfinite(slab->half_thickness),
                   "relax: slab half-thickness must be positive");
@@ -172,14 +184,15 @@ ResolvedModel resolve_model(const RelaxOptions& options, double mean_edge_length
                                            (mean_edge_length * mean_edge_length));
   r.contact_gauss_newton = options.contact_gauss_newton.value_or(multilevel_applies(options));
   r.damp_short_steps = options.newton.damp_short_steps || r.contact_gauss_newton;
+  r.contact_hessian_margin = options.contact_hessian_margin.value_or(multilevel_applies(options) ? 0.05 * r.dhat : 0.0);
   if (options.link) r.model = TwistModel::FixedLink;
   else if (options.full_model) r.model = TwistModel::FreeTheta;
   return r;
 }
 
 const std::vector<std::string>& method_names() {
-  static const std::vector<std::string> names = {"default", "gauss-newton", "eigen-projected", "hybrid", "exact",
-                                                  "paper"};
+  static const std::vector<std::string> names = {"default", "gauss-newton", "one-level", "eigen-projected",
+                                                  "hybrid", "exact", "paper"};
   return names;
 }
 
@@ -191,6 +204,12 @@ RelaxOptions with_method(RelaxOptions o, const std::string& name) {
     throw InputError("the method must be " + list + ", not '" + name + "'");
   }
   if (name == "default" || name == "gauss-newton") return o;
+  if (name == "one-level" || name == "eigen-projected") {  // the multilevel method as it was before two levels
+    o.coarse_levels = 1;
+    o.contact_hessian_margin = 0.0;
+    o.coarsening = CoarseningOptions::even_only();
+  }
+  if (name == "one-level") return o;
   o.contact_gauss_newton = false;
   o.newton.damp_short_steps = false;
   if (name == "eigen-projected") return o;
@@ -340,6 +359,32 @@ void add_coarse_level(const RelaxResult& coarse, RelaxResult& result) {
   }
 }
 
+/// At most `iterations` Newton iterations of the coarsest level's soft phase
+/// (contact stiffness coarse_continuation[0]·ω, or ω without one) from
+/// `curve`, which becomes their result; the phase's report, name and trace
+/// go to `result` (phase "continuation F before coarsening").
+SolverStatus soft_iterations(Points& curve, const VecX& rest, const RelaxOptions& options, int iterations,
+                             RelaxResult& result) {
+  RelaxOptions soft = options;
+  soft.rest_lengths = rest;
+  const double f = options.coarse_continuation.empty() ? 1.0 : options.coarse_continuation.front();
+  soft.contact_stiffness = f * resolve_model(options, rest.mean()).contact_stiffness;
+  soft.contact_continuation.clear();
+  soft.max_iterations = iterations;
+  soft.smallest_eigenvalue = false;
+  RelaxResult r;
+  relax_level(curve, rest, soft, true, r);
+  curve = r.positions;
+  const int offset = static_cast<int>(result.phases.size());
+  result.continuation_reports.push_back(r.report);
+  result.phases.push_back("continuation " + std::to_string(f) + " before coarsening");
+  for (IterationRecord rec : r.trace) {
+    rec.phase += offset;
+    result.trace.push_back(rec);
+  }
+  return r.report.status;
+}
+
 /// Multilevel or direct relaxation of `curve` (rest lengths `rest`) with up
 /// to `levels` coarse levels below it; `top`: the level of the input. The
 /// first (coarsest) level solved gets the multilevel continuation, the top
@@ -350,11 +395,19 @@ RelaxResult relax_levels(const Points& curve, const VecX& rest, const RelaxOptio
   const int n = static_cast<int>(curve.rows());
   const bool multilevel = multilevel_applies(options);
   if (multilevel && levels > 0 && n % 2 == 0 && n / 2 >= kMinCoarseVertices) {
-    const CoarseCurve c = coarsen(curve, rest, contact_options(resolve_model(options, rest.mean()), options));
-    if (c.certified >= 1.0) {
-      const RelaxResult rc = relax_levels(c.coarse, c.coarse_rest, options, levels - 1, false);
+    const ContactOptions contact = contact_options(resolve_model(options, rest.mean()));
+    const CoarseningOptions& rule = options.coarsening;
+    std::optional<ShiftedCoarsening> c = certified_coarsening(curve, rest, contact, rule.either_parity);
+    const int rechecks = top || rule.recheck_iterations == 0 ? 0 : rule.rechecks;
+    for (int k = 0; k < rechecks && !c; ++k) {
+      const SolverStatus status = soft_iterations(start, rest, options, rule.recheck_iterations, result);
+      c = certified_coarsening(start, rest, contact, rule.either_parity);
+      if (status != SolverStatus::MaxIterations) break;  // the soft phase has converged
+    }
+    if (c) {
+      const RelaxResult rc = relax_levels(c->curve.coarse, c->curve.coarse_rest, options, levels - 1, false);
       add_coarse_level(rc, result);
-      start = refine(rc.positions, rest);
+      start = refine(rc.positions, rest, c->offset);
     }
   }
   RelaxOptions level = options;

@@ -14,10 +14,10 @@ RelaxOptions RelaxRequest::options() const {
   opt.material.young = young;
   opt.material.poisson = poisson;
   opt.contact_stiffness = contact_stiffness;
-  opt.coarse_levels = coarse_levels;
   opt.newton.verbose = verbose;
   opt.newton.record_trace = trace;
   opt = with_method(opt, method);
+  if (coarse_levels) opt.coarse_levels = *coarse_levels;
   if (factorization == "cholmod") opt.newton.cholesky.mode = CholeskyMode::Simplicial;
   else if (factorization != "block")
     throw InputError("--factorization must be block or cholmod, not '" + factorization + "'");

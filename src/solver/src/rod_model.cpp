@@ -63,7 +63,7 @@ struct RodModel::Impl {
   Impl(const Link& link, const std::vector<VecX>& rest, const RelaxOptions& o)
       : options(o),
         resolved(resolve_model(o, rest[0].mean())),
-        contact_options(ek::contact_options(resolved, o)),
+        contact_options(ek::contact_options(resolved)),
         contact(topology_of(link), contact_options) {
     int vertices = 0;
     for (size_t c = 0; c < link.size(); ++c) {

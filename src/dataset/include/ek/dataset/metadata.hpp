@@ -42,6 +42,10 @@ struct DatasetMetadata {
   std::optional<int> coarse_levels;         ///< [1] multilevel: coarse levels below n (direct: empty)
   /// [1] multilevel: continuation factors of the coarsest level (direct: empty).
   std::optional<std::vector<double>> coarse_continuation;
+  /// Multilevel: how the coarse levels are found, to_string(CoarseningOptions)
+  /// ("even", or e.g. "either-parity,recheck-30x6"); "even" for the direct
+  /// method, which has no coarse levels (the value files before the field read as).
+  std::optional<std::string> coarsening;
   std::optional<std::string> newton_hessian;  ///< NewtonOptions::hessian: "hybrid" or "exact"
   std::optional<bool> remove_rigid_motions;   ///< NewtonOptions::remove_rigid_motions
   /// The contact pairs' Hessian in the projected iterations:

@@ -46,12 +46,39 @@ enum class RelaxMethod {
 };
 std::string to_string(RelaxMethod method);  ///< "multilevel", "direct"
 
-/// Defaults of the multilevel method: one coarse level
+/// Defaults of the multilevel method: two coarse levels
 /// (RelaxOptions::coarse_levels).
-inline constexpr int kDefaultCoarseLevels = 1;
+inline constexpr int kDefaultCoarseLevels = 2;
 inline constexpr double kDefaultCoarseContinuation = 1e-3;  ///< [1] contact-stiffness factor of the coarsest level
 /// Fewest vertices of a coarse level.
 inline constexpr int kMinCoarseVertices = 24;
+
+/// How the multilevel method finds its coarse levels (multilevel.hpp,
+/// docs/models.md, "Solver"). Measured (exp_bench_solver, docs/performance.md):
+/// on the lattice samples at n = 400 the collapse of the odd vertices of the
+/// n/2 level to n/4 is certified for 30 of 80 samples, of either parity for
+/// 41, and after at most 180 soft iterations at n/2 for most of the rest.
+struct CoarseningOptions {
+  /// [bool] Where the collapse of the odd vertices is not certified, collapse
+  /// the even ones instead if that is (certified_coarsening()).
+  bool either_parity = true;
+  /// [1] A level below n (not the input) whose coarsening is not certified
+  /// runs its soft phase (contact stiffness coarse_continuation[0]·ω) for
+  /// this many Newton iterations at a time and tries again, at most
+  /// `rechecks` times, while that phase has not converged; the curve is
+  /// then coarser and smoother. When no try is certified the level goes on
+  /// from where the soft iterations left it. 0: no rechecks.
+  int recheck_iterations = 30;
+  int rechecks = 6;  ///< [1] see recheck_iterations
+  /// The rule before either parity and the rechecks: only the odd vertices
+  /// collapsed, tried once (the named methods one-level and eigen-projected).
+  static CoarseningOptions even_only() { return {false, 0, 0}; }
+  void validate() const;  ///< InputError for negative counts
+};
+/// "even" or "either-parity", then ",recheck-IxR" when R > 0 rechecks of I
+/// iterations each (the data-set metadata's `coarsening`, e.g.
+/// "either-parity,recheck-30x6").
+std::string to_string(const CoarseningOptions& coarsening);
 
 /// The model and the method of relax(): the material, the contact, the
 /// tolerance and iteration cap, the twist model (link, full model), the
@@ -96,8 +123,13 @@ struct RelaxOptions {
   RelaxMethod method = RelaxMethod::Multilevel;  ///< see RelaxMethod
   /// [length] ContactOptions::hessian_margin: the contact Hessian's pattern
   /// holds the pairs within d̂ + margin and changes only when an active pair
-  /// falls outside it (0: the active pairs; the same values either way).
-  double contact_hessian_margin = 0.0;
+  /// falls outside it (0: the active pairs; the same values either way, the
+  /// iterates the same up to the round-off of another elimination order).
+  /// Unset: 0.05·d̂ where the multilevel method relaxes (multilevel_applies();
+  /// measured: a third of the symbolic analyses and 0.94 times the time per
+  /// equilibrium, docs/performance.md), 0 for the direct method (no gain
+  /// measured there).
+  std::optional<double> contact_hessian_margin;
   /// [bool] ContactOptions::gauss_newton_projection: in the projected
   /// iterations each contact pair's Hessian is its Gauss–Newton term
   /// b''∇d∇dᵀ instead of its eigen-projection, and the Newton iteration
@@ -117,6 +149,7 @@ struct RelaxOptions {
   /// contact_continuation) of the first, coarsest level solved; when that
   /// level is n itself, contact_continuation replaces them if given.
   std::vector<double> coarse_continuation = {kDefaultCoarseContinuation};
+  CoarseningOptions coarsening;  ///< Multilevel: how the coarse levels are found
   /// Planarity slab |z| < h (slab.hpp). With release_slab the slab is dropped
   /// after the first phase and the solve continues from the flat state.
   std::optional<SlabOptions> slab;
@@ -157,13 +190,16 @@ struct ResolvedModel {
   /// NewtonMethodOptions::damp_short_steps, or the Gauss–Newton pair
   /// Hessians above (which need it).
   bool damp_short_steps = false;
+  /// [length] RelaxOptions::contact_hessian_margin, or where unset 0.05·d̂
+  /// when the multilevel method applies, else 0.
+  double contact_hessian_margin = 0.0;
 };
 /// Resolves the defaults of `options` for rest edges of mean length
 /// `mean_edge_length` [length] (> 0).
 ResolvedModel resolve_model(const RelaxOptions& options, double mean_edge_length);
-/// The contact options of the resolved model (d̂, ω, the pair Hessians) and
-/// of `options` (the Hessian pattern's margin), as RodModel uses them.
-ContactOptions contact_options(const ResolvedModel& model, const RelaxOptions& options);
+/// The contact options of the resolved model (d̂, ω, the pair Hessians, the
+/// Hessian pattern's margin), as RodModel uses them.
+ContactOptions contact_options(const ResolvedModel& model);
 /// The Newton options of a relaxation: options.newton with the goal of
 /// `options` (the resolved tolerance, the iteration cap, stop at a critical
 /// point, damp_short_steps with the Gauss–Newton pair Hessians) and the
@@ -283,8 +319,10 @@ struct RelaxResult {
 /// with the hybrid Hessian; RelaxOptions::contact_gauss_newton as given,
 /// unset: Gauss–Newton contact pair Hessians and damped short steps where
 /// the multilevel method applies: `options` as they are), "gauss-newton" (an
-/// alias of "default"), "eigen-projected" (the default with each contact
-/// pair's Hessian eigen-projected and no damping: the method of the
+/// alias of "default"), "one-level" (the default with one coarse level, no
+/// contact-pattern margin and the coarsening CoarseningOptions::even_only():
+/// the default before two levels), "eigen-projected" (one-level with each
+/// contact pair's Hessian eigen-projected and no damping: the method of the
 /// committed ledgers under docs/results), "hybrid" (Direct: the default
 /// before the multilevel relaxation), "exact" (Direct with the exact Hessian
 /// every iteration) or "paper" (Direct with NewtonOptions::paper()). The

@@ -28,7 +28,9 @@ struct RelaxRequest {
   std::vector<double> continuation;    ///< [1] --continuation F[,F...]: factors in (0, 1); empty: off
   bool full_model = false;             ///< --full-model: positions, θ and Θ even when Θ is free
   std::string method = "default";      ///< --method: a name of method_names() (with_method())
-  int coarse_levels = kDefaultCoarseLevels;  ///< [1] --coarse-levels: multilevel levels below n
+  /// [1] --coarse-levels: multilevel levels below n; unset: the method's
+  /// (kDefaultCoarseLevels; 1 for one-level and eigen-projected).
+  std::optional<int> coarse_levels;
   std::string factorization = "block"; ///< --factorization: block or cholmod
   bool eigen = false;                  ///< --eigen: also the smallest non-rigid Hessian eigenvalue
   bool stop_at_saddle = false;         ///< --stop-at-saddle: report converged-unstable at a saddle
