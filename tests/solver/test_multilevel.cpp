@@ -25,6 +25,22 @@ Points trefoil_coil(int n) {
   return embed_knot(KnotTable::global().at("3_1"), EmbeddingSource::Braid, eo).points;
 }
 
+/// Eight vertices: vertex 1 is a corner in the plane z = 0 that the collapse
+/// of the odd vertices cuts off; the straight strand 4-5-6 (vertex 5 on it,
+/// so it does not move) passes through that corner at (0.3, 0.3) along z.
+Points corner_and_strand() {
+  Points P(8, 3);
+  P << 0, -1, 0,      //
+      1, 1, 0,        //
+      -1, 1, 0,       //
+      -3, 0, 2.5,     //
+      0.3, 0.3, 5,    //
+      0.3, 0.3, 0,    //
+      0.3, 0.3, -5,   //
+      0, -3, -2.5;
+  return P;
+}
+
 }  // namespace
 
 // Coarsening moves each odd vertex onto its neighbours' segment at the ratio
@@ -56,18 +72,7 @@ TEST(Multilevel, CoarsenAndRefineGiveTheSamePolygon) {
 // A strand passing through the triangle that a collapse sweeps: the motion is
 // not certified (the two edges would pass through each other).
 TEST(Multilevel, CoarseningThatWouldCrossAStrandIsNotCertified) {
-  // vertex 1 is a corner in the plane z = 0 that the collapse cuts off; the
-  // straight strand 4-5-6 (vertex 5 on it, so it does not move) passes
-  // through that corner at (0.3, 0.3) along z
-  Points P(8, 3);
-  P << 0, -1, 0,      //
-      1, 1, 0,        //
-      -1, 1, 0,       //
-      -3, 0, 2.5,     //
-      0.3, 0.3, 5,    //
-      0.3, 0.3, 0,    //
-      0.3, 0.3, -5,   //
-      0, -3, -2.5;
+  const Points P = corner_and_strand();
   const VecX rest = edge_lengths(P);
   const CoarseCurve c = coarsen(P, rest, ContactOptions{});
   EXPECT_LT(c.certified, 1.0);
@@ -79,15 +84,7 @@ TEST(Multilevel, CoarseningThatWouldCrossAStrandIsNotCertified) {
 // coarse curve is then the odd vertices, and refining it gives the collapsed
 // curve back in the fine curve's own vertex order.
 TEST(Multilevel, EitherParityCoarseningKeepsTheFineOrder) {
-  Points P(8, 3);  // the curve of the test above: vertex 1's collapse cuts through the strand 4-5-6
-  P << 0, -1, 0,      //
-      1, 1, 0,        //
-      -1, 1, 0,       //
-      -3, 0, 2.5,     //
-      0.3, 0.3, 5,    //
-      0.3, 0.3, 0,    //
-      0.3, 0.3, -5,   //
-      0, -3, -2.5;
+  const Points P = corner_and_strand();  // vertex 1's collapse cuts through the strand 4-5-6
   const VecX rest = edge_lengths(P);
   EXPECT_FALSE(certified_coarsening(P, rest, ContactOptions{}, false));
   const std::optional<ShiftedCoarsening> c = certified_coarsening(P, rest, ContactOptions{}, true);
