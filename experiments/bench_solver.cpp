@@ -135,14 +135,14 @@ Method method_named(const std::string& name, const ek::RelaxOptions& base) {
     m.options.newton.shift_skip_proven = false;
     return m;
   }
-  if (name == "levels3") {  // the multilevel method with three coarse levels (n/8, n/4, n/2)
-    Method m{name, ek::with_method(base, "default")};
+  if (name == "levels3") {  // two-level with three coarse levels (n/8, n/4 and n/2)
+    Method m{name, ek::with_method(base, "two-level")};
     m.options.coarse_levels = 3;
     return m;
   }
-  if (name == "no-recheck" || name == "even-only") {  // the coarse levels found by either parity, or the odd vertices
-    Method m{name, ek::with_method(base, "default")};
-    m.options.coarsening = name == "even-only" ? ek::CoarseningOptions::even_only() : ek::CoarseningOptions{true, 0, 0};
+  if (name == "no-recheck" || name == "even-only") {  // two-level: either parity without rechecks, or the odd vertices
+    Method m{name, ek::with_method(base, "two-level")};
+    m.options.coarsening = name == "even-only" ? ek::CoarseningOptions{} : ek::CoarseningOptions{true, 0, 0};
     return m;
   }
   if (name.rfind("margin=", 0) == 0) {  // the contact Hessian pattern's margin [length]

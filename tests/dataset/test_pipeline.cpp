@@ -469,8 +469,12 @@ TEST(Pipeline, JournalKeyIsTheEarlierKeyForTheEarlierParameters) {
       EXPECT_EQ(dataset_metadata(o).damp_short_steps, true);
       EXPECT_NE(journal_key(dataset_metadata(o)).find(" contact=gauss-newton"), std::string::npos);
     }
-    if (name == "one-level" || name == "eigen-projected") {  // the multilevel method before two levels
-      EXPECT_EQ(dataset_metadata(o).coarse_levels, 1);
+    if (name == "two-level") {
+      EXPECT_EQ(dataset_metadata(o).coarse_levels, 2);
+      EXPECT_EQ(dataset_metadata(o).coarsening, "either-parity,recheck-30x6");
+      EXPECT_NE(journal_key(dataset_metadata(o)).find(" levels=2 coarse=0.001 coarsening=either-parity,recheck-30x6 "),
+                std::string::npos);
+    } else {
       EXPECT_EQ(dataset_metadata(o).coarsening, "even");
       EXPECT_EQ(journal_key(dataset_metadata(o)).find(" coarsening="), std::string::npos);
     }
@@ -483,8 +487,8 @@ TEST(Pipeline, JournalKeyIsTheEarlierKeyForTheEarlierParameters) {
   EXPECT_EQ(keys.size(), method_names().size() - 1);
   // the multilevel method (the default) names itself and its settings
   const std::string multilevel = journal_key(dataset_metadata(small_fixed_run(3, 1)));
-  EXPECT_NE(multilevel.find(" dhat=0.40000000000000002 method=multilevel levels=2 coarse=0.001 "
-                            "coarsening=either-parity,recheck-30x6 contact=gauss-newton damp=1 iterations=5000 "),
+  EXPECT_NE(multilevel.find(" dhat=0.40000000000000002 method=multilevel levels=1 coarse=0.001 contact=gauss-newton "
+                            "damp=1 iterations=5000 "),
             std::string::npos)
       << multilevel;
 }

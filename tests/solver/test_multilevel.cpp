@@ -106,8 +106,8 @@ TEST(Multilevel, EitherParityCoarseningKeepsTheFineOrder) {
   EXPECT_EQ(certified_coarsening(T, edge_lengths(T), ContactOptions{}, true)->offset, 0);
 }
 
-// Crowded lattice polygons: a level whose coarsening is not certified runs
-// its soft phase in chunks of recheck_iterations and tries again, so the
+// Crowded lattice polygons (two-level): a level whose coarsening is not
+// certified runs its soft phase in chunks of recheck_iterations and tries again, so the
 // coarsest level is reached on samples where the first try fails; the phases
 // are reported in the order they ran and the knot type is kept.
 TEST(Multilevel, CrowdedLevelsAreCoarsenedAfterSoftIterations) {
@@ -119,13 +119,14 @@ TEST(Multilevel, CrowdedLevelsAreCoarsenedAfterSoftIterations) {
   int rechecked = 0, coarsened = 0;
   for (const auto& sample : batch.samples) {
     const Points P = to_points(sample);
-    const RelaxResult r = relax(P, RelaxOptions{});
+    const RelaxOptions two = with_method(RelaxOptions{}, "two-level");
+    const RelaxResult r = relax(P, two);
     ASSERT_EQ(r.status(), RelaxStatus::ConvergedStable);
     const std::string before = "coarse 100: continuation 0.001000 before coarsening";
     const auto soft = std::find(r.phases.begin(), r.phases.end(), before);
     if (soft == r.phases.end()) continue;
     ++rechecked;
-    RelaxOptions once;
+    RelaxOptions once = two;
     once.coarsening.rechecks = 0;
     EXPECT_EQ(relax(P, once).coarse_vertices, (std::vector<int>{100}));  // the first try fails
     if (r.coarse_vertices == std::vector<int>{50, 100}) {                // a later try succeeded
@@ -139,11 +140,11 @@ TEST(Multilevel, CrowdedLevelsAreCoarsenedAfterSoftIterations) {
   EXPECT_GE(coarsened, 1);
 }
 
-// The multilevel relaxation solves the coarsest level first (a quarter of
-// the vertices, with the contact-stiffness continuation), then the level of
-// half, and ends at n with a converged-stable equilibrium of the full model;
-// the knot type is kept; models it does not apply to, odd counts and Direct
-// relax at n only.
+// The multilevel relaxation solves the coarse level first (half the
+// vertices, with the contact-stiffness continuation) and ends at n with a
+// converged-stable equilibrium of the full model; the knot type is kept;
+// two-level solves a quarter of the vertices first, then half; models it
+// does not apply to, odd counts and Direct relax at n only.
 TEST(Multilevel, RelaxesThroughTheCoarseLevels) {
   const Points P = trefoil_coil(200);
   RelaxOptions o;
@@ -151,20 +152,24 @@ TEST(Multilevel, RelaxesThroughTheCoarseLevels) {
   const RelaxResult r = relax(P, o);
   ASSERT_EQ(r.status(), RelaxStatus::ConvergedStable);
   EXPECT_TRUE(r.alexander_preserved);
-  EXPECT_EQ(r.coarse_vertices, (std::vector<int>{50, 100}));
-  ASSERT_EQ(r.coarse_reports.size(), 2u);
+  EXPECT_EQ(r.coarse_vertices, (std::vector<int>{100}));
+  ASSERT_EQ(r.coarse_reports.size(), 1u);
   EXPECT_GT(r.coarse_reports[0].iterations, 0);
-  EXPECT_TRUE(r.continuation_reports.empty());  // the continuation ran at the coarsest level
-  EXPECT_EQ(r.phases, (std::vector<std::string>{"coarse 50: continuation 0.001000", "coarse 50: final",
-                                                "coarse 100: final", "final"}));
+  EXPECT_TRUE(r.continuation_reports.empty());  // the continuation ran at the coarse level
+  EXPECT_EQ(r.phases, (std::vector<std::string>{"coarse 100: continuation 0.001000", "coarse 100: final", "final"}));
   EXPECT_EQ(r.positions.rows(), 200);
   EXPECT_LE(r.report.gradient_norm, 1e-8);
-  EXPECT_EQ(r.all_phases().iterations,
-            r.report.iterations + r.coarse_reports[0].iterations + r.coarse_reports[1].iterations);
+  EXPECT_EQ(r.all_phases().iterations, r.report.iterations + r.coarse_reports[0].iterations);
 
-  RelaxOptions one = o;
-  one.coarse_levels = 1;
-  EXPECT_EQ(relax(P, one).coarse_vertices, (std::vector<int>{100}));
+  const RelaxResult r2 = relax(P, with_method(o, "two-level"));
+  ASSERT_EQ(r2.status(), RelaxStatus::ConvergedStable);
+  EXPECT_TRUE(r2.alexander_preserved);
+  EXPECT_EQ(r2.coarse_vertices, (std::vector<int>{50, 100}));
+  ASSERT_EQ(r2.coarse_reports.size(), 2u);
+  EXPECT_EQ(r2.phases, (std::vector<std::string>{"coarse 50: continuation 0.001000", "coarse 50: final",
+                                                 "coarse 100: final", "final"}));
+  EXPECT_EQ(r2.all_phases().iterations,
+            r2.report.iterations + r2.coarse_reports[0].iterations + r2.coarse_reports[1].iterations);
   RelaxOptions direct = o;
   direct.method = RelaxMethod::Direct;
   EXPECT_TRUE(relax(P, direct).coarse_vertices.empty());

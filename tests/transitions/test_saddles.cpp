@@ -22,10 +22,7 @@ using namespace ek::transitionstest;
 
 namespace {
 
-/// The stable states of three BFACF samples of 4_1 (seed 1, unit edges),
-/// relaxed by the one-level method, with which these tests were designed
-/// (from the default's states of these samples the searches below do not
-/// find the saddles they look for).
+/// The stable states of three BFACF samples of 4_1 (seed 1, unit edges).
 const std::vector<Points>& states() {
   static const std::vector<Points> out = [] {
     SampleOptions so;
@@ -34,7 +31,7 @@ const std::vector<Points>& states() {
     const SampleBatch batch = sample_knot(KnotTable::global().at("4_1"), so);
     std::vector<Points> s;
     for (const auto& p : batch.samples) {
-      const RelaxResult r = relax(to_points(p), with_method(RelaxOptions{}, "one-level"));
+      const RelaxResult r = relax(to_points(p), RelaxOptions{});
       EXPECT_EQ(r.status(), RelaxStatus::ConvergedStable);
       s.push_back(r.positions);
     }

@@ -46,33 +46,34 @@ enum class RelaxMethod {
 };
 std::string to_string(RelaxMethod method);  ///< "multilevel", "direct"
 
-/// Defaults of the multilevel method: two coarse levels
-/// (RelaxOptions::coarse_levels).
-inline constexpr int kDefaultCoarseLevels = 2;
+/// Defaults of the multilevel method: one coarse level
+/// (RelaxOptions::coarse_levels; the named method two-level has two).
+inline constexpr int kDefaultCoarseLevels = 1;
 inline constexpr double kDefaultCoarseContinuation = 1e-3;  ///< [1] contact-stiffness factor of the coarsest level
 /// Fewest vertices of a coarse level.
 inline constexpr int kMinCoarseVertices = 24;
 
 /// How the multilevel method finds its coarse levels (multilevel.hpp,
-/// docs/models.md, "Solver"). Measured (exp_bench_solver, docs/performance.md):
-/// on the lattice samples at n = 400 the collapse of the odd vertices of the
-/// n/2 level to n/4 is certified for 30 of 80 samples, of either parity for
-/// 41, and after at most 180 soft iterations at n/2 for most of the rest.
+/// docs/models.md, "Solver"). The default: the odd vertices collapsed, tried
+/// once. Measured (exp_bench_solver, docs/performance.md): on the lattice
+/// samples at n = 400 the collapse of the odd vertices of the n/2 level to
+/// n/4 is certified for 30 of 80 samples, of either parity for 41, and with
+/// the rechecks of rechecked() for all 80.
 struct CoarseningOptions {
   /// [bool] Where the collapse of the odd vertices is not certified, collapse
   /// the even ones instead if that is (certified_coarsening()).
-  bool either_parity = true;
+  bool either_parity = false;
   /// [1] A level below n (not the input) whose coarsening is not certified
   /// runs its soft phase (contact stiffness coarse_continuation[0]·ω) for
   /// this many Newton iterations at a time and tries again, at most
   /// `rechecks` times, while that phase has not converged; the curve is
   /// then coarser and smoother. When no try is certified the level goes on
   /// from where the soft iterations left it. 0: no rechecks.
-  int recheck_iterations = 30;
-  int rechecks = 6;  ///< [1] see recheck_iterations
-  /// The rule before either parity and the rechecks: only the odd vertices
-  /// collapsed, tried once (the named methods one-level and eigen-projected).
-  static CoarseningOptions even_only() { return {false, 0, 0}; }
+  int recheck_iterations = 0;
+  int rechecks = 0;  ///< [1] see recheck_iterations
+  /// Either parity, and rechecks of 30 soft iterations at most 6 times (the
+  /// named method two-level).
+  static CoarseningOptions rechecked() { return {true, 30, 6}; }
   void validate() const;  ///< InputError for negative counts
 };
 /// "even" or "either-parity", then ",recheck-IxR" when R > 0 rechecks of I
@@ -125,11 +126,10 @@ struct RelaxOptions {
   /// holds the pairs within d̂ + margin and changes only when an active pair
   /// falls outside it (0: the active pairs; the same values either way, the
   /// iterates the same up to the round-off of another elimination order).
-  /// Unset: 0.05·d̂ where the multilevel method relaxes (multilevel_applies();
-  /// measured: a third of the symbolic analyses and 0.94 times the time per
-  /// equilibrium, docs/performance.md), 0 for the direct method (no gain
-  /// measured there).
-  std::optional<double> contact_hessian_margin;
+  /// The named method two-level sets 0.05·d̂ (measured with the multilevel
+  /// method: a third fewer symbolic analyses and 0.94 times the time per
+  /// equilibrium; no gain with the direct method, docs/performance.md).
+  double contact_hessian_margin = 0.0;
   /// [bool] ContactOptions::gauss_newton_projection: in the projected
   /// iterations each contact pair's Hessian is its Gauss–Newton term
   /// b''∇d∇dᵀ instead of its eigen-projection, and the Newton iteration
@@ -190,9 +190,7 @@ struct ResolvedModel {
   /// NewtonMethodOptions::damp_short_steps, or the Gauss–Newton pair
   /// Hessians above (which need it).
   bool damp_short_steps = false;
-  /// [length] RelaxOptions::contact_hessian_margin, or where unset 0.05·d̂
-  /// when the multilevel method applies, else 0.
-  double contact_hessian_margin = 0.0;
+  double contact_hessian_margin = 0.0;  ///< [length] RelaxOptions::contact_hessian_margin
 };
 /// Resolves the defaults of `options` for rest edges of mean length
 /// `mean_edge_length` [length] (> 0).
@@ -319,10 +317,12 @@ struct RelaxResult {
 /// with the hybrid Hessian; RelaxOptions::contact_gauss_newton as given,
 /// unset: Gauss–Newton contact pair Hessians and damped short steps where
 /// the multilevel method applies: `options` as they are), "gauss-newton" (an
-/// alias of "default"), "one-level" (the default with one coarse level, no
-/// contact-pattern margin and the coarsening CoarseningOptions::even_only():
-/// the default before two levels), "eigen-projected" (one-level with each
-/// contact pair's Hessian eigen-projected and no damping: the method of the
+/// alias of "default"), "two-level" (the default with two coarse levels, n/4
+/// and n/2, found by CoarseningOptions::rechecked(), and the contact
+/// pattern's margin 0.05·d̂ of the options' d̂: about 0.7 times the time per
+/// equilibrium, not the default because the Fig. 5 check fails with it,
+/// docs/performance.md), "eigen-projected" (the default with each contact
+/// pair's Hessian eigen-projected and no damping: the method of the
 /// committed ledgers under docs/results), "hybrid" (Direct: the default
 /// before the multilevel relaxation), "exact" (Direct with the exact Hessian
 /// every iteration) or "paper" (Direct with NewtonOptions::paper()). The
