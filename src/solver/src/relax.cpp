@@ -70,6 +70,17 @@ NewtonOptions newton_options(const RelaxOptions& options, const ResolvedModel& m
 
 namespace {
 
+/// The name of the phase of contact-stiffness continuation factor f.
+std::string continuation_phase(double f) { return "continuation " + std::to_string(f); }
+
+/// `trace` appended to `out` with its phases numbered after `offset` earlier ones.
+void append_trace(const std::vector<IterationRecord>& trace, int offset, std::vector<IterationRecord>& out) {
+  for (IterationRecord rec : trace) {
+    rec.phase += offset;
+    out.push_back(rec);
+  }
+}
+
 /// The phases: contact-stiffness continuation (each factor with a softer
 /// barrier; every accepted step is still collision-free, the barrier being
 /// singular at d = 0 for any ω), the solve at ω (under the slab when there
@@ -78,7 +89,7 @@ void run_phases(RodModel& m, NewtonSolver& solver, RelaxResult& result) {
   const int offset = static_cast<int>(result.phases.size());  // phases of coarse levels before these
   for (const double f : m.options().contact_continuation) {
     result.continuation_reports.push_back(solver.minimize(m.objective(f)));
-    result.phases.push_back("continuation " + std::to_string(f));
+    result.phases.push_back(continuation_phase(f));
   }
   CompositeObjective& objective = m.objective();
   result.report = solver.minimize(objective);
@@ -92,10 +103,7 @@ void run_phases(RodModel& m, NewtonSolver& solver, RelaxResult& result) {
     result.phases.push_back("final");
     result.energy = parts_of(released);
   }
-  for (IterationRecord rec : solver.trace()) {
-    rec.phase += offset;
-    result.trace.push_back(rec);
-  }
+  append_trace(solver.trace(), offset, result.trace);
 }
 
 /// The smallest eigenvalue of H with every rigid motion excluded: all six
@@ -353,10 +361,7 @@ void add_coarse_level(const RelaxResult& coarse, RelaxResult& result) {
   const int offset = static_cast<int>(result.phases.size());
   const std::string prefix = "coarse " + std::to_string(coarse.positions.rows()) + ": ";
   for (const std::string& p : coarse.phases) result.phases.push_back(p.rfind("coarse ", 0) == 0 ? p : prefix + p);
-  for (IterationRecord rec : coarse.trace) {
-    rec.phase += offset;
-    result.trace.push_back(rec);
-  }
+  append_trace(coarse.trace, offset, result.trace);
 }
 
 /// At most `iterations` Newton iterations of the coarsest level's soft phase
@@ -377,11 +382,8 @@ SolverStatus soft_iterations(Points& curve, const VecX& rest, const RelaxOptions
   curve = r.positions;
   const int offset = static_cast<int>(result.phases.size());
   result.continuation_reports.push_back(r.report);
-  result.phases.push_back("continuation " + std::to_string(f) + " before coarsening");
-  for (IterationRecord rec : r.trace) {
-    rec.phase += offset;
-    result.trace.push_back(rec);
-  }
+  result.phases.push_back(continuation_phase(f) + " before coarsening");
+  append_trace(r.trace, offset, result.trace);
   return r.report.status;
 }
 
