@@ -21,7 +21,8 @@
 // multilevel relaxation and the block factorisation), hybrid (Direct with the
 // block factorisation), projected (hybrid without its exact region), exact (the
 // exact Hessian every iteration), paper (NewtonOptions::paper()), levels3
-// (the multilevel method with three coarse levels, n/8, n/4 and n/2),
+// (two-level with three coarse levels, n/8, n/4 and n/2), levels1 (two-level
+// with one, n/2),
 // gauss-newton (the same as default), one-level (one coarse level, n/2, no
 // contact-pattern margin, the odd vertices collapsed: the default before two
 // levels), eigen-projected (one-level with each contact pair's Hessian
@@ -135,9 +136,9 @@ Method method_named(const std::string& name, const ek::RelaxOptions& base) {
     m.options.newton.shift_skip_proven = false;
     return m;
   }
-  if (name == "levels3") {  // two-level with three coarse levels (n/8, n/4 and n/2)
+  if (name == "levels1" || name == "levels3") {  // two-level with one coarse level (n/2) or three (n/8, n/4, n/2)
     Method m{name, ek::with_method(base, "two-level")};
-    m.options.coarse_levels = 3;
+    m.options.coarse_levels = name == "levels1" ? 1 : 3;
     return m;
   }
   if (name == "no-recheck" || name == "even-only") {  // two-level: either parity without rechecks, or the odd vertices

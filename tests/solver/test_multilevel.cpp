@@ -119,7 +119,8 @@ TEST(Multilevel, CrowdedLevelsAreCoarsenedAfterSoftIterations) {
   int rechecked = 0, coarsened = 0;
   for (const auto& sample : batch.samples) {
     const Points P = to_points(sample);
-    const RelaxOptions two = with_method(RelaxOptions{}, "two-level");
+    RelaxOptions two = with_method(RelaxOptions{}, "two-level");
+    two.coarsening.min_vertices = kMinCoarseVertices;  // n = 200: down to 50 vertices
     const RelaxResult r = relax(P, two);
     ASSERT_EQ(r.status(), RelaxStatus::ConvergedStable);
     const std::string before = "coarse 100: continuation 0.001000 before coarsening";
@@ -143,8 +144,9 @@ TEST(Multilevel, CrowdedLevelsAreCoarsenedAfterSoftIterations) {
 // The multilevel relaxation solves the coarse level first (half the
 // vertices, with the contact-stiffness continuation) and ends at n with a
 // converged-stable equilibrium of the full model; the knot type is kept;
-// two-level solves a quarter of the vertices first, then half; models it
-// does not apply to, odd counts and Direct relax at n only.
+// two-level solves a quarter of the vertices first, then half (when a
+// quarter is at least its 100 vertices); models it does not apply to, odd
+// counts and Direct relax at n only.
 TEST(Multilevel, RelaxesThroughTheCoarseLevels) {
   const Points P = trefoil_coil(200);
   RelaxOptions o;
@@ -161,7 +163,10 @@ TEST(Multilevel, RelaxesThroughTheCoarseLevels) {
   EXPECT_LE(r.report.gradient_norm, 1e-8);
   EXPECT_EQ(r.all_phases().iterations, r.report.iterations + r.coarse_reports[0].iterations);
 
-  const RelaxResult r2 = relax(P, with_method(o, "two-level"));
+  EXPECT_EQ(relax(P, with_method(o, "two-level")).coarse_vertices, (std::vector<int>{100}));  // 50 < 100
+  RelaxOptions two = with_method(o, "two-level");
+  two.coarsening.min_vertices = kMinCoarseVertices;
+  const RelaxResult r2 = relax(P, two);
   ASSERT_EQ(r2.status(), RelaxStatus::ConvergedStable);
   EXPECT_TRUE(r2.alexander_preserved);
   EXPECT_EQ(r2.coarse_vertices, (std::vector<int>{50, 100}));
@@ -179,4 +184,17 @@ TEST(Multilevel, RelaxesThroughTheCoarseLevels) {
   EXPECT_TRUE(rl.coarse_vertices.empty());
   EXPECT_TRUE(rl.continuation_reports.empty());  // Direct: no continuation unless asked
   EXPECT_TRUE(relax(trefoil_coil(201), o).coarse_vertices.empty());  // odd: one level, with the continuation
+}
+
+// The coarsening rule's fewest vertices: recorded in its name when it is not
+// the general minimum, refused below it.
+TEST(Multilevel, CoarseLevelFloorIsNamedAndChecked) {
+  EXPECT_EQ(to_string(CoarseningOptions{}), "even");
+  EXPECT_EQ(to_string(CoarseningOptions::rechecked()), "either-parity,recheck-30x6,min-100");
+  CoarseningOptions c;
+  c.min_vertices = kMinCoarseVertices - 2;
+  EXPECT_THROW(c.validate(), InputError);
+  RelaxOptions o;
+  o.coarsening = c;
+  EXPECT_THROW(relax(trefoil_coil(200), o), InputError);
 }

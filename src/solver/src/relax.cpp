@@ -144,12 +144,15 @@ void describe_result(RodModel& m, RelaxResult& result, bool coarse) {
 
 void CoarseningOptions::validate() const {
   require_input(recheck_iterations >= 0 && rechecks >= 0, "relax: the coarsening's rechecks must be >= 0");
+  require_input(min_vertices >= kMinCoarseVertices,
+                "relax: a coarse level needs at least " + std::to_string(kMinCoarseVertices) + " vertices");
 }
 
 std::string to_string(const CoarseningOptions& c) {
   std::string s = c.either_parity ? "either-parity" : "even";
   if (c.rechecks > 0 && c.recheck_iterations > 0)
     s += ",recheck-" + std::to_string(c.recheck_iterations) + "x" + std::to_string(c.rechecks);
+  if (c.min_vertices != kMinCoarseVertices) s += ",min-" + std::to_string(c.min_vertices);
   return s;
 }
 
@@ -396,9 +399,9 @@ RelaxResult relax_levels(const Points& curve, const VecX& rest, const RelaxOptio
   Points start = curve;
   const int n = static_cast<int>(curve.rows());
   const bool multilevel = multilevel_applies(options);
-  if (multilevel && levels > 0 && n % 2 == 0 && n / 2 >= kMinCoarseVertices) {
+  const CoarseningOptions& rule = options.coarsening;
+  if (multilevel && levels > 0 && n % 2 == 0 && n / 2 >= rule.min_vertices) {
     const ContactOptions contact = contact_options(resolve_model(options, rest.mean()));
-    const CoarseningOptions& rule = options.coarsening;
     std::optional<ShiftedCoarsening> c = certified_coarsening(curve, rest, contact, rule.either_parity);
     const int rechecks = top || rule.recheck_iterations == 0 ? 0 : rule.rechecks;
     for (int k = 0; k < rechecks && !c; ++k) {

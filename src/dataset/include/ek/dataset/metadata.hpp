@@ -43,7 +43,7 @@ struct DatasetMetadata {
   /// [1] multilevel: continuation factors of the coarsest level (direct: empty).
   std::optional<std::vector<double>> coarse_continuation;
   /// Multilevel: how the coarse levels are found, to_string(CoarseningOptions)
-  /// ("even", or e.g. "either-parity,recheck-30x6"); "even" for the direct
+  /// ("even", or e.g. "either-parity,recheck-30x6,min-100"); "even" for the direct
   /// method, which has no coarse levels (the value files before the field read as).
   std::optional<std::string> coarsening;
   std::optional<std::string> newton_hessian;  ///< NewtonOptions::hessian: "hybrid" or "exact"

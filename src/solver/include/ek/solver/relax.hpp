@@ -71,14 +71,20 @@ struct CoarseningOptions {
   /// from where the soft iterations left it. 0: no rechecks.
   int recheck_iterations = 0;
   int rechecks = 0;  ///< [1] see recheck_iterations
-  /// Either parity, and rechecks of 30 soft iterations at most 6 times (the
-  /// named method two-level).
-  static CoarseningOptions rechecked() { return {true, 30, 6}; }
-  void validate() const;  ///< InputError for negative counts
+  /// [1] Fewest vertices of a coarse level (at least kMinCoarseVertices).
+  /// Measured (docs/performance.md): a coarsest level of 52, 68 or 90
+  /// vertices made the peer curves of 208, 272 and 360 vertices slower than
+  /// one coarse level, while 100 of 400 made the lattice samples faster.
+  int min_vertices = kMinCoarseVertices;
+  /// Either parity, rechecks of 30 soft iterations at most 6 times, and
+  /// coarse levels of at least 100 vertices (the named method two-level).
+  static CoarseningOptions rechecked() { return {true, 30, 6, 100}; }
+  void validate() const;  ///< InputError for negative counts or min_vertices below kMinCoarseVertices
 };
 /// "even" or "either-parity", then ",recheck-IxR" when R > 0 rechecks of I
-/// iterations each (the data-set metadata's `coarsening`, e.g.
-/// "either-parity,recheck-30x6").
+/// iterations each, then ",min-V" when min_vertices V is not
+/// kMinCoarseVertices (the data-set metadata's `coarsening`, e.g.
+/// "either-parity,recheck-30x6,min-100").
 std::string to_string(const CoarseningOptions& coarsening);
 
 /// The model and the method of relax(): the material, the contact, the
@@ -143,7 +149,7 @@ struct RelaxOptions {
   std::optional<bool> contact_gauss_newton;
   /// [1] Multilevel: levels below n, each with half the vertices of the next;
   /// a level is used while the count is even, the coarse curve has at least
-  /// kMinCoarseVertices vertices and its coarsening is certified.
+  /// CoarseningOptions::min_vertices vertices and its coarsening is certified.
   int coarse_levels = kDefaultCoarseLevels;
   /// [1] Multilevel: contact-stiffness continuation factors (as
   /// contact_continuation) of the first, coarsest level solved; when that
