@@ -58,10 +58,11 @@ case "$action" in
     rows=$(( $(zcat "$dir"/.piece.tmp | wc -l) - 1 ))
     if [ "$rows" -eq 0 ]; then echo "stress_pieces: no new rows"; exit 0; fi
     mv "$dir"/.piece.tmp "$piece"
-    echo "stress_pieces: $piece: $rows runs ($(( $(wc -l < "$saved") + rows )) of $volume saved)"
+    total=$(( $(wc -l < "$saved") + rows ))
+    echo "stress_pieces: $piece: $rows runs ($total of $volume saved)"
     if [ "$commit" = 1 ]; then
       git add "$piece"
-      git commit -q -m "Stress volume of $volume runs: $(basename "$piece") ($rows runs, $(( $(wc -l < "$saved") + rows )) saved)" -- "$piece"
+      git commit -q -m "Stress volume of $volume runs: $(basename "$piece") ($rows runs, $total saved)" -- "$piece"
     fi
     ;;
   restore)

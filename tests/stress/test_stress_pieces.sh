@@ -33,6 +33,8 @@ done
 git -C "$root" init -q && git -C "$root" -c user.name=t -c user.email=t@t commit -q --allow-empty -m start
 echo "$(row 4)" >> "$log"
 touch "$root/other" && git -C "$root" add other
-GIT_AUTHOR_NAME=t GIT_AUTHOR_EMAIL=t@t GIT_COMMITTER_NAME=t GIT_COMMITTER_EMAIL=t@t "$script" save 9 --commit > /dev/null
-[ "$(git -C "$root" show --name-only --format= HEAD)" = "docs/results/stress/volume-9/piece-03.csv.gz" ] || fail "commit"
+export GIT_AUTHOR_NAME=t GIT_AUTHOR_EMAIL=t@t GIT_COMMITTER_NAME=t GIT_COMMITTER_EMAIL=t@t
+"$script" save 9 --commit > /dev/null
+committed=$(git -C "$root" show --name-only --format= HEAD)
+[ "$committed" = "docs/results/stress/volume-9/piece-03.csv.gz" ] || fail "commit: $committed"
 echo "stress_pieces: pieces, restore, bad input and commit as documented"
