@@ -56,8 +56,9 @@ bool parse_relax(int argc, char** argv, RelaxCommand& c) {
               "default (multilevel: coarse-to-fine from n/2 vertices with contact-stiffness continuation at the "
               "coarse level, for the twist-free model without a slab; hybrid Newton directions: projected Hessian "
               "far from equilibrium, exact near it; the contact pairs' Gauss-Newton Hessians in the projected "
-              "iterations), gauss-newton (the same as default), two-level (the default from n/4 vertices, a crowded "
-              "level's coarsening retried after soft iterations), eigen-projected (the default with the contact "
+              "iterations), gauss-newton (the same as default), two-level (the default from n/4 vertices, "
+              "coarse levels of at least 100 vertices, a crowded level's coarsening retried after soft iterations), "
+              "eigen-projected (the default with the contact "
               "pairs' eigen-projected Hessians), hybrid (hybrid Newton at n vertices from the input), exact (exact "
               "Hessian every iteration, at n) or paper (NewtonOptions::paper(), at n)");
   args.option("--coarse-levels", &r.coarse_levels,
