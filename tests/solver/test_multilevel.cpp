@@ -164,6 +164,8 @@ TEST(Multilevel, RelaxesThroughTheCoarseLevels) {
   EXPECT_EQ(r.all_phases().iterations, r.report.iterations + r.coarse_reports[0].iterations);
 
   EXPECT_EQ(relax(P, with_method(o, "two-level")).coarse_vertices, (std::vector<int>{100}));  // 50 < 100
+  // the floor is for the levels below n/2: a curve of 120 still gets n/2
+  EXPECT_EQ(relax(trefoil_coil(120), with_method(o, "two-level")).coarse_vertices, (std::vector<int>{60}));
   RelaxOptions two = with_method(o, "two-level");
   two.coarsening.min_vertices = kMinCoarseVertices;
   const RelaxResult r2 = relax(P, two);

@@ -57,10 +57,10 @@ bool parse_relax(int argc, char** argv, RelaxCommand& c) {
               "coarse level, for the twist-free model without a slab; hybrid Newton directions: projected Hessian "
               "far from equilibrium, exact near it; the contact pairs' Gauss-Newton Hessians in the projected "
               "iterations), gauss-newton (the same as default), two-level (the default from n/4 vertices, "
-              "coarse levels of at least 100 vertices, a crowded level's coarsening retried after soft iterations), "
-              "eigen-projected (the default with the contact "
-              "pairs' eigen-projected Hessians), hybrid (hybrid Newton at n vertices from the input), exact (exact "
-              "Hessian every iteration, at n) or paper (NewtonOptions::paper(), at n)");
+              "a level below n/2 of at least 100 vertices, a crowded level's coarsening retried after soft "
+              "iterations), eigen-projected (the default with the contact pairs' eigen-projected Hessians), "
+              "hybrid (hybrid Newton at n vertices from the input), exact (exact Hessian every iteration, at n) or "
+              "paper (NewtonOptions::paper(), at n)");
   args.option("--coarse-levels", &r.coarse_levels,
               "multilevel: coarse levels below n, each halving the vertices (default " +
                   std::to_string(kDefaultCoarseLevels) + "; 2 for two-level)");

@@ -400,7 +400,8 @@ RelaxResult relax_levels(const Points& curve, const VecX& rest, const RelaxOptio
   const int n = static_cast<int>(curve.rows());
   const bool multilevel = multilevel_applies(options);
   const CoarseningOptions& rule = options.coarsening;
-  if (multilevel && levels > 0 && n % 2 == 0 && n / 2 >= rule.min_vertices) {
+  const int fewest = top ? kMinCoarseVertices : rule.min_vertices;  // the first coarse level: the general minimum
+  if (multilevel && levels > 0 && n % 2 == 0 && n / 2 >= fewest) {
     const ContactOptions contact = contact_options(resolve_model(options, rest.mean()));
     std::optional<ShiftedCoarsening> c = certified_coarsening(curve, rest, contact, rule.either_parity);
     const int rechecks = top || rule.recheck_iterations == 0 ? 0 : rule.rechecks;

@@ -71,13 +71,15 @@ struct CoarseningOptions {
   /// from where the soft iterations left it. 0: no rechecks.
   int recheck_iterations = 0;
   int rechecks = 0;  ///< [1] see recheck_iterations
-  /// [1] Fewest vertices of a coarse level (at least kMinCoarseVertices).
-  /// Measured (docs/performance.md): a coarsest level of 52, 68 or 90
-  /// vertices made the peer curves of 208, 272 and 360 vertices slower than
-  /// one coarse level, while 100 of 400 made the lattice samples faster.
+  /// [1] Fewest vertices of a coarse level below the first one (n/4, n/8,
+  /// ...; the first, n/2, needs kMinCoarseVertices); at least
+  /// kMinCoarseVertices. Measured (docs/performance.md): a coarsest level of
+  /// 52, 68 or 90 vertices made the peer curves of 208, 272 and 360 vertices
+  /// slower than one coarse level, while 100 of 400 made the lattice samples
+  /// faster.
   int min_vertices = kMinCoarseVertices;
   /// Either parity, rechecks of 30 soft iterations at most 6 times, and
-  /// coarse levels of at least 100 vertices (the named method two-level).
+  /// levels below n/2 of at least 100 vertices (the named method two-level).
   static CoarseningOptions rechecked() { return {true, 30, 6, 100}; }
   void validate() const;  ///< InputError for negative counts or min_vertices below kMinCoarseVertices
 };
@@ -149,7 +151,8 @@ struct RelaxOptions {
   std::optional<bool> contact_gauss_newton;
   /// [1] Multilevel: levels below n, each with half the vertices of the next;
   /// a level is used while the count is even, the coarse curve has at least
-  /// CoarseningOptions::min_vertices vertices and its coarsening is certified.
+  /// kMinCoarseVertices vertices (below n/2: CoarseningOptions::min_vertices)
+  /// and its coarsening is certified.
   int coarse_levels = kDefaultCoarseLevels;
   /// [1] Multilevel: contact-stiffness continuation factors (as
   /// contact_continuation) of the first, coarsest level solved; when that
