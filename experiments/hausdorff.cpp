@@ -9,6 +9,8 @@
 // Hausdorff distance does not (ek::hausdorff_separation); counted also for
 // the stricter "distinct" pairs (different clusters and themselves farther
 // apart than the cut in similarity), from which the figure's pairs come.
+// Both counts are taken over all equilibria and over the unique ones (an
+// equilibrium reached by several samples counted once).
 //   ci: 40 samples; default: 150; paper: 500.
 // Writes hausdorff.h5 (a data set holding 6_1), pairs.csv, curves/ (the shown
 // pairs, the second state aligned onto the first) and summary.json
@@ -65,6 +67,15 @@ int main(int argc, char** argv) {
     sum.below_median_pairs = sep.below_median_pairs;
     sum.distinct_pairs = sep.distinct_pairs;
     sum.separated_pairs = sep.separated_pairs;
+    sum.identical_hausdorff = kIdenticalHausdorff;
+    sum.identical_pairs = sep.identical_pairs;
+    sum.unique_equilibria = sep.unique_equilibria;
+    sum.unique_same_cluster_pairs = sep.unique_same_cluster_pairs;
+    if (sep.unique_same_cluster_pairs > 0)
+      sum.median_unique_same_cluster_hausdorff = sep.median_unique_same_cluster_hausdorff;
+    sum.unique_different_cluster_pairs = sep.unique_different_cluster_pairs;
+    sum.below_unique_median_pairs = sep.below_unique_median_pairs;
+    sum.separated_below_unique_median = sep.separated_below_unique_median;
     std::filesystem::create_directories(a.out + "/curves");
     for (const StatePair& p : closest_distinct_pairs(pairs, kClusterCut, 3)) {
       const Points& A = e.equilibria[static_cast<size_t>(p.a)];
@@ -82,6 +93,10 @@ int main(int argc, char** argv) {
               << " clusters, " << pairs.size() << " pairs; median same-cluster Hausdorff "
               << sep.median_same_cluster_hausdorff << "; below it: " << sep.below_median_pairs << " of "
               << sep.different_cluster_pairs << " pairs of different clusters, " << sep.separated_pairs << " of "
-              << sep.distinct_pairs << " also farther apart than the cut in similarity" << std::endl;
+              << sep.distinct_pairs << " also farther apart than the cut in similarity; " << sep.unique_equilibria
+              << " unique equilibria (" << sep.identical_pairs << " identical pairs), median same-cluster Hausdorff "
+              << sep.median_unique_same_cluster_hausdorff << ", below it: " << sep.below_unique_median_pairs << " of "
+              << sep.unique_different_cluster_pairs << " pairs of different clusters, "
+              << sep.separated_below_unique_median << " also farther apart than the cut" << std::endl;
   });
 }

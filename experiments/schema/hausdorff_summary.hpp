@@ -38,12 +38,24 @@ struct HausdorffSummary {
   /// [1] pairs in different clusters and farther apart than the cut in similarity
   int distinct_pairs = 0;
   int separated_pairs = 0;           ///< [1] of them, those with a Hausdorff distance below that median
+  /// The same over the unique equilibria (ek::HausdorffSeparation): members
+  /// of one cluster closer than `identical_hausdorff` are one equilibrium.
+  double identical_hausdorff = 0.0;  ///< [length] ek::kIdenticalHausdorff
+  int identical_pairs = 0;           ///< [1] same-cluster pairs closer than it
+  int unique_equilibria = 0;         ///< [1]
+  int unique_same_cluster_pairs = 0; ///< [1]
+  std::optional<double> median_unique_same_cluster_hausdorff;  ///< [length] null: no cluster with two of them
+  int unique_different_cluster_pairs = 0;  ///< [1]
+  int below_unique_median_pairs = 0;       ///< [1] of them, those below that median (the claim, asserted)
+  int separated_below_unique_median = 0;   ///< [1] of them, those also farther apart than the cut in similarity
   /// the closest distinct pairs (the stricter definition) in Hausdorff
   /// distance, one per pair of clusters
   std::vector<HausdorffPair> shown;
 };
 EK_JSON_FIELDS(HausdorffSummary, scale, knot, cut, samples, equilibria, clusters, pairs, same_cluster_pairs,
                median_same_cluster_hausdorff, different_cluster_pairs,
-               below_median_pairs, distinct_pairs, separated_pairs, shown)
+               below_median_pairs, distinct_pairs, separated_pairs, identical_hausdorff, identical_pairs,
+               unique_equilibria, unique_same_cluster_pairs, median_unique_same_cluster_hausdorff,
+               unique_different_cluster_pairs, below_unique_median_pairs, separated_below_unique_median, shown)
 
 }  // namespace ek::results

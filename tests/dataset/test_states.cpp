@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "ek/analysis/clustering.hpp"
+#include "ek/core/errors.hpp"
 #include "ek/dataset/states.hpp"
 #include "testing.hpp"
 
@@ -206,6 +207,34 @@ TEST(States, HausdorffAgainstSimilarity) {
   EXPECT_EQ(s.distinct_pairs, 4);
   EXPECT_NEAR(s.median_same_cluster_hausdorff, 0.5 * (pairs[0].hausdorff + p23.hausdorff), 1e-12);
   EXPECT_EQ(s.separated_pairs, 2);
+  // over the unique equilibria: 1 is 0 reached again, so {0, 2, 3} remain;
+  // the only same-cluster pair is (2,3), the median its distance (ripples
+  // 5% and 30%: ~25% of the size); of (0,2) and (0,3), only (0,2) (~5%)
+  // is below it ((0,3): ~30%)
+  EXPECT_EQ(s.identical_pairs, 1);
+  EXPECT_EQ(s.unique_equilibria, 3);
+  EXPECT_EQ(s.unique_same_cluster_pairs, 1);
+  EXPECT_EQ(s.median_unique_same_cluster_hausdorff, p23.hausdorff);
+  EXPECT_EQ(s.unique_different_cluster_pairs, 2);
+  EXPECT_EQ(s.below_unique_median_pairs, 1);
+  EXPECT_EQ(s.separated_below_unique_median, 1);
+  // with no distance counted as identical every equilibrium is unique: the two rules agree
+  const HausdorffSeparation all = hausdorff_separation(pairs, 0.05, 0.0);
+  EXPECT_EQ(all.identical_pairs, 0);
+  EXPECT_EQ(all.unique_equilibria, 4);
+  EXPECT_EQ(all.median_unique_same_cluster_hausdorff, s.median_same_cluster_hausdorff);
+  EXPECT_EQ(all.below_unique_median_pairs, s.below_median_pairs);
+  EXPECT_EQ(all.separated_below_unique_median, s.separated_pairs);
+  EXPECT_THROW(hausdorff_separation(pairs, 0.05, -1.0), InputError);
+  // identity joins transitively: a chain 0 ~ 1 ~ 2 below the threshold is one equilibrium
+  std::vector<StatePair> chain = {{0, 1, 0, 0, 0.0, 5e-4, 0.0}, {0, 2, 0, 0, 0.0, 2.0, 0.0},
+                                  {1, 2, 0, 0, 0.0, 5e-4, 0.0}, {0, 3, 0, 0, 0.0, 1.0, 0.0},
+                                  {1, 3, 0, 0, 0.0, 1.0, 0.0},  {2, 3, 0, 0, 0.0, 1.0, 0.0}};
+  const HausdorffSeparation joined = hausdorff_separation(chain, 0.05);
+  EXPECT_EQ(joined.unique_equilibria, 2);
+  EXPECT_EQ(joined.unique_same_cluster_pairs, 1);  // (0,3)
+  EXPECT_EQ(joined.median_unique_same_cluster_hausdorff, 1.0);
+  EXPECT_TRUE(std::isnan(hausdorff_separation(chain, 0.05, 10.0).median_unique_same_cluster_hausdorff));
   const auto shown = closest_distinct_pairs(pairs, 0.05, 3);
   ASSERT_EQ(shown.size(), 1u);  // one pair of clusters
   EXPECT_LT(shown[0].a, 2);

@@ -215,6 +215,11 @@ TEST(Summaries, AnalysisFiguresRoundTrip) {
   const HausdorffSummary hr = round_trip(h);
   EXPECT_EQ(hr.median_same_cluster_hausdorff, std::optional<double>(1.5));
   EXPECT_EQ(hr.below_median_pairs, 3);
+  EXPECT_FALSE(hr.median_unique_same_cluster_hausdorff.has_value());
+  h.median_unique_same_cluster_hausdorff = 2.5;
+  h.below_unique_median_pairs = 7;
+  EXPECT_EQ(round_trip(h).median_unique_same_cluster_hausdorff, std::optional<double>(2.5));
+  EXPECT_EQ(round_trip(h).below_unique_median_pairs, 7);
   ASSERT_EQ(hr.shown.size(), 1u);
   EXPECT_EQ(hr.shown[0].b, 4);
   EXPECT_EQ(hr.shown[0].curve_b, "curves/b.obj");

@@ -132,28 +132,65 @@ std::vector<StatePair> pairwise_shape_distances(const KnotEntry& e, double cut, 
 
 namespace {
 bool separated_by_similarity(const StatePair& p, double cut) { return !p.same_cluster() && p.similarity_distance > cut; }
+
+double median_of(std::vector<double> v) {
+  if (v.empty()) return std::numeric_limits<double>::quiet_NaN();
+  std::sort(v.begin(), v.end());
+  const size_t h = v.size() / 2;
+  return v.size() % 2 ? v[h] : 0.5 * (v[h - 1] + v[h]);
+}
+
+/// For each equilibrium index (0 .. largest in `pairs`), its representative:
+/// the smallest index joined to it by same-cluster pairs closer than `identical`.
+std::vector<int> identical_representatives(const std::vector<StatePair>& pairs, double identical) {
+  int m = 0;
+  for (const auto& p : pairs) m = std::max(m, p.b + 1);
+  std::vector<int> parent(static_cast<size_t>(m));  // a union-find forest whose roots are the smallest indices
+  for (int i = 0; i < m; ++i) parent[static_cast<size_t>(i)] = i;
+  const auto root = [&parent](int i) {
+    while (parent[static_cast<size_t>(i)] != i) i = parent[static_cast<size_t>(i)];
+    return i;
+  };
+  for (const auto& p : pairs)
+    if (p.same_cluster() && p.hausdorff < identical) {
+      const int ra = root(p.a), rb = root(p.b);
+      parent[static_cast<size_t>(std::max(ra, rb))] = std::min(ra, rb);
+    }
+  std::vector<int> rep(static_cast<size_t>(m));
+  for (int i = 0; i < m; ++i) rep[static_cast<size_t>(i)] = root(i);
+  return rep;
+}
+
 }  // namespace
 
-HausdorffSeparation hausdorff_separation(const std::vector<StatePair>& pairs, double cut) {
+HausdorffSeparation hausdorff_separation(const std::vector<StatePair>& pairs, double cut, double identical) {
+  require_input(identical >= 0.0, "hausdorff_separation: the identical distance must be >= 0");
   HausdorffSeparation out;
-  std::vector<double> same;
+  const std::vector<int> rep = identical_representatives(pairs, identical);
+  const auto unique = [&](const StatePair& p) {
+    return rep[static_cast<size_t>(p.a)] == p.a && rep[static_cast<size_t>(p.b)] == p.b;
+  };
+  std::vector<double> same, same_unique;
   for (const auto& p : pairs) {
     if (p.same_cluster()) same.push_back(p.hausdorff);
+    if (p.same_cluster() && unique(p)) same_unique.push_back(p.hausdorff);
+    out.identical_pairs += p.same_cluster() && p.hausdorff < identical;
     out.different_cluster_pairs += !p.same_cluster();
+    out.unique_different_cluster_pairs += !p.same_cluster() && unique(p);
     out.distinct_pairs += separated_by_similarity(p, cut);
   }
+  for (size_t i = 0; i < rep.size(); ++i) out.unique_equilibria += rep[i] == static_cast<int>(i);
   out.same_cluster_pairs = static_cast<int>(same.size());
-  if (same.empty()) {
-    out.median_same_cluster_hausdorff = std::numeric_limits<double>::quiet_NaN();
-    return out;
-  }
-  std::sort(same.begin(), same.end());
-  const size_t h = same.size() / 2;
-  out.median_same_cluster_hausdorff = same.size() % 2 ? same[h] : 0.5 * (same[h - 1] + same[h]);
-  for (const auto& p : pairs) {
+  out.unique_same_cluster_pairs = static_cast<int>(same_unique.size());
+  out.median_same_cluster_hausdorff = median_of(std::move(same));
+  out.median_unique_same_cluster_hausdorff = median_of(std::move(same_unique));
+  for (const auto& p : pairs) {  // a comparison with NaN is false: nothing is below a missing median
     const bool below = p.hausdorff < out.median_same_cluster_hausdorff;
     out.below_median_pairs += !p.same_cluster() && below;
     out.separated_pairs += separated_by_similarity(p, cut) && below;
+    const bool below_unique = unique(p) && p.hausdorff < out.median_unique_same_cluster_hausdorff;
+    out.below_unique_median_pairs += !p.same_cluster() && below_unique;
+    out.separated_below_unique_median += separated_by_similarity(p, cut) && below_unique;
   }
   return out;
 }

@@ -123,6 +123,13 @@ struct StatePair {
 std::vector<StatePair> pairwise_shape_distances(const KnotEntry& entry, double cut,
                                                 const AlignmentOptions& alignment = {}, int jobs = 1);
 
+/// Hausdorff distance [length] below which two equilibria of one cluster
+/// are the same equilibrium reached twice (hausdorff_separation). Measured on
+/// 6_1's equilibria (40 and 150 samples, one and two coarse levels;
+/// docs/reproducing.md): every pair is either below 3e-5 (the round-off of
+/// converged positions) or above 0.16.
+inline constexpr double kIdenticalHausdorff = 1e-3;
+
 /// How well the Hausdorff distance separates the states. The reference is
 /// the median Hausdorff distance of the pairs within one cluster (one
 /// state): a pair of different clusters below it cannot be told apart by a
@@ -131,6 +138,14 @@ std::vector<StatePair> pairwise_shape_distances(const KnotEntry& entry, double c
 /// in different clusters at the cut and are themselves farther apart than
 /// the cut (similarity_distance > cut: complete linkage can put two
 /// look-alike members into different clusters).
+///
+/// Over all pairs, an equilibrium that many samples reach is counted once
+/// per pair of them, and its pairs of distance ~0 pull the median down by
+/// how often a method lands on it, not by the spread of the state. So the
+/// same counts are also taken over the unique equilibria: the members of a
+/// cluster closer than `identical` (kIdenticalHausdorff) to each other,
+/// joined transitively, are one equilibrium, represented by its smallest
+/// index.
 struct HausdorffSeparation {
   int same_cluster_pairs = 0;       ///< [1]
   /// [length] median Hausdorff distance of the same-cluster pairs (NaN without any)
@@ -139,10 +154,20 @@ struct HausdorffSeparation {
   int below_median_pairs = 0;       ///< [1] of them, those with hausdorff < the median
   int distinct_pairs = 0;           ///< [1] pairs separated by the similarity (stricter definition above)
   int separated_pairs = 0;          ///< [1] of them, those with hausdorff < the median
+  int identical_pairs = 0;          ///< [1] same-cluster pairs with hausdorff < identical
+  int unique_equilibria = 0;        ///< [1] equilibria with the identical ones joined
+  int unique_same_cluster_pairs = 0;  ///< [1] same-cluster pairs of unique equilibria
+  /// [length] median Hausdorff distance of those pairs (NaN without any: no
+  /// cluster with two unique equilibria)
+  double median_unique_same_cluster_hausdorff = 0.0;
+  int unique_different_cluster_pairs = 0;  ///< [1] pairs of unique equilibria in different clusters
+  int below_unique_median_pairs = 0;       ///< [1] of them, those with hausdorff < the unique median
+  int separated_below_unique_median = 0;   ///< [1] of them, those also separated by the similarity
 };
-/// The separation of `pairs` (pairwise_shape_distances() at `cut`); see
-/// HausdorffSeparation.
-HausdorffSeparation hausdorff_separation(const std::vector<StatePair>& pairs, double cut);
+/// The separation of `pairs` (every pair a < b of pairwise_shape_distances()
+/// at `cut`); see HausdorffSeparation. InputError for identical < 0.
+HausdorffSeparation hausdorff_separation(const std::vector<StatePair>& pairs, double cut,
+                                         double identical = kIdenticalHausdorff);
 
 /// Pairs separated by the similarity (as above) by increasing Hausdorff
 /// distance, at most one per pair of clusters, the first `count` (the pairs
