@@ -21,9 +21,9 @@
 // multilevel relaxation and the block factorisation), hybrid (Direct with the
 // block factorisation), projected (hybrid without its exact region), exact (the
 // exact Hessian every iteration), paper (NewtonOptions::paper()), levels3
-// (two-level with three coarse levels, n/8, n/4 and n/2), levels1 (two-level
-// with one, n/2),
-// gauss-newton (the same as default), one-level (one coarse level, n/2, no
+// (default with three coarse levels, n/8, n/4 and n/2), levels1 (default
+// with one, n/2, found by the default's coarsening, with its margin),
+// gauss-newton and two-level (the same as default), one-level (one coarse level, n/2, no
 // contact-pattern margin, the odd vertices collapsed: the default before two
 // levels), eigen-projected (one-level with each contact pair's Hessian
 // eigen-projected and no damping of short steps), no-skip (default climbing
@@ -136,14 +136,15 @@ Method method_named(const std::string& name, const ek::RelaxOptions& base) {
     m.options.newton.shift_skip_proven = false;
     return m;
   }
-  if (name == "levels1" || name == "levels3") {  // two-level with one coarse level (n/2) or three (n/8, n/4, n/2)
-    Method m{name, ek::with_method(base, "two-level")};
+  if (name == "levels1" || name == "levels3") {  // default with one coarse level (n/2) or three (n/8, n/4, n/2)
+    Method m{name, ek::with_method(base, "default")};
     m.options.coarse_levels = name == "levels1" ? 1 : 3;
     return m;
   }
-  if (name == "no-recheck" || name == "even-only") {  // two-level: either parity without rechecks, or the odd vertices
-    Method m{name, ek::with_method(base, "two-level")};
-    m.options.coarsening = name == "even-only" ? ek::CoarseningOptions{} : ek::CoarseningOptions{true, 0, 0};
+  if (name == "no-recheck" || name == "even-only") {  // default: either parity without rechecks, or the odd vertices
+    Method m{name, ek::with_method(base, "default")};
+    m.options.coarsening.recheck_iterations = m.options.coarsening.rechecks = 0;
+    m.options.coarsening.either_parity = name == "no-recheck";
     return m;
   }
   if (name.rfind("margin=", 0) == 0) {  // the contact Hessian pattern's margin [length]

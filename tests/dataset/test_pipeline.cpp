@@ -455,7 +455,7 @@ TEST(Pipeline, JournalKeyIsTheEarlierKeyForTheEarlierParameters) {
   EXPECT_NE(journal_key(dataset_metadata(full)).find(" dhat=0.40000000000000002 model=free-theta iterations="),
             std::string::npos);
   // every named method of with_method() has its own key and metadata, but
-  // for gauss-newton, the default's former name
+  // for gauss-newton and two-level, the default's former names
   std::set<std::string> keys;
   for (const std::string& name : method_names()) {
     ExploreOptions o = small_fixed_run(3, 1);
@@ -464,34 +464,42 @@ TEST(Pipeline, JournalKeyIsTheEarlierKeyForTheEarlierParameters) {
     if (name == "hybrid") {
       EXPECT_EQ(journal_key(dataset_metadata(o)), journal_key(dataset_metadata(direct)));
     }
-    if (name == "default" || name == "gauss-newton") {
+    const bool the_default = name == "default" || name == "gauss-newton" || name == "two-level";
+    if (the_default) {
       EXPECT_EQ(dataset_metadata(o).contact_hessian, "gauss-newton");
       EXPECT_EQ(dataset_metadata(o).damp_short_steps, true);
       EXPECT_NE(journal_key(dataset_metadata(o)).find(" contact=gauss-newton"), std::string::npos);
     }
-    if (name == "two-level") {
+    if (the_default) {
       EXPECT_EQ(dataset_metadata(o).coarse_levels, 2);
       const std::string rule = "either-parity,recheck-30x6,min-100";
       EXPECT_EQ(dataset_metadata(o).coarsening, rule);
       EXPECT_NE(journal_key(dataset_metadata(o)).find(" levels=2 coarse=0.001 coarsening=" + rule + " "),
                 std::string::npos);
-    } else {
+    } else {  // one-level and eigen-projected: the multilevel method before two levels, with its earlier keys
       EXPECT_EQ(dataset_metadata(o).coarsening, "even");
       EXPECT_EQ(journal_key(dataset_metadata(o)).find(" coarsening="), std::string::npos);
     }
+    if (name == "one-level" || name == "eigen-projected") EXPECT_EQ(dataset_metadata(o).coarse_levels, 1);
     if (name == "eigen-projected") {
       EXPECT_EQ(dataset_metadata(o).contact_hessian, "eigen-projected");
       EXPECT_EQ(dataset_metadata(o).damp_short_steps, false);
       EXPECT_EQ(journal_key(dataset_metadata(o)).find(" contact="), std::string::npos);
     }
   }
-  EXPECT_EQ(keys.size(), method_names().size() - 1);
+  EXPECT_EQ(keys.size(), method_names().size() - 2);
   // the multilevel method (the default) names itself and its settings
   const std::string multilevel = journal_key(dataset_metadata(small_fixed_run(3, 1)));
-  EXPECT_NE(multilevel.find(" dhat=0.40000000000000002 method=multilevel levels=1 coarse=0.001 contact=gauss-newton "
-                            "damp=1 iterations=5000 "),
+  EXPECT_NE(multilevel.find(" dhat=0.40000000000000002 method=multilevel levels=2 coarse=0.001 "
+                            "coarsening=either-parity,recheck-30x6,min-100 contact=gauss-newton damp=1 iterations=5000 "),
             std::string::npos)
       << multilevel;
+  // one-level has the key of the default before two levels
+  ExploreOptions one = small_fixed_run(3, 1);
+  one.relax = with_method(one.relax, "one-level");
+  EXPECT_NE(journal_key(dataset_metadata(one)).find(" dhat=0.40000000000000002 method=multilevel levels=1 coarse=0.001 "
+                                                    "contact=gauss-newton damp=1 iterations=5000 "),
+            std::string::npos);
 }
 
 // Every parameter changed in turn: extending a data set is refused with one

@@ -106,7 +106,7 @@ TEST(Multilevel, EitherParityCoarseningKeepsTheFineOrder) {
   EXPECT_EQ(certified_coarsening(T, edge_lengths(T), ContactOptions{}, true)->offset, 0);
 }
 
-// Crowded lattice polygons (two-level): a level whose coarsening is not
+// Crowded lattice polygons (the default): a level whose coarsening is not
 // certified runs its soft phase in chunks of recheck_iterations and tries again, so the
 // coarsest level is reached on samples where the first try fails; the phases
 // are reported in the order they ran and the knot type is kept.
@@ -119,7 +119,7 @@ TEST(Multilevel, CrowdedLevelsAreCoarsenedAfterSoftIterations) {
   int rechecked = 0, coarsened = 0;
   for (const auto& sample : batch.samples) {
     const Points P = to_points(sample);
-    RelaxOptions two = with_method(RelaxOptions{}, "two-level");
+    RelaxOptions two;
     two.coarsening.min_vertices = kMinCoarseVertices;  // n = 200: down to 50 vertices
     const RelaxResult r = relax(P, two);
     ASSERT_EQ(r.status(), RelaxStatus::ConvergedStable);
@@ -141,17 +141,17 @@ TEST(Multilevel, CrowdedLevelsAreCoarsenedAfterSoftIterations) {
   EXPECT_GE(coarsened, 1);
 }
 
-// The multilevel relaxation solves the coarse level first (half the
-// vertices, with the contact-stiffness continuation) and ends at n with a
-// converged-stable equilibrium of the full model; the knot type is kept;
-// two-level solves a quarter of the vertices first, then half (when a
-// quarter is at least its 100 vertices); models it does not apply to, odd
-// counts and Direct relax at n only.
+// The multilevel relaxation solves the coarsest level first (a quarter of
+// the vertices when that is at least 100, with the contact-stiffness
+// continuation), then half, and ends at n with a converged-stable
+// equilibrium of the full model; the knot type is kept; one-level solves
+// half the vertices first; models it does not apply to, odd counts and
+// Direct relax at n only.
 TEST(Multilevel, RelaxesThroughTheCoarseLevels) {
   const Points P = trefoil_coil(200);
   RelaxOptions o;
   o.newton.record_trace = true;
-  const RelaxResult r = relax(P, o);
+  const RelaxResult r = relax(P, with_method(o, "one-level"));
   ASSERT_EQ(r.status(), RelaxStatus::ConvergedStable);
   EXPECT_TRUE(r.alexander_preserved);
   EXPECT_EQ(r.coarse_vertices, (std::vector<int>{100}));
@@ -163,10 +163,10 @@ TEST(Multilevel, RelaxesThroughTheCoarseLevels) {
   EXPECT_LE(r.report.gradient_norm, 1e-8);
   EXPECT_EQ(r.all_phases().iterations, r.report.iterations + r.coarse_reports[0].iterations);
 
-  EXPECT_EQ(relax(P, with_method(o, "two-level")).coarse_vertices, (std::vector<int>{100}));  // 50 < 100
+  EXPECT_EQ(relax(P, o).coarse_vertices, (std::vector<int>{100}));  // 50 < 100
   // the floor is for the levels below n/2: a curve of 120 still gets n/2
-  EXPECT_EQ(relax(trefoil_coil(120), with_method(o, "two-level")).coarse_vertices, (std::vector<int>{60}));
-  RelaxOptions two = with_method(o, "two-level");
+  EXPECT_EQ(relax(trefoil_coil(120), o).coarse_vertices, (std::vector<int>{60}));
+  RelaxOptions two = o;
   two.coarsening.min_vertices = kMinCoarseVertices;
   const RelaxResult r2 = relax(P, two);
   ASSERT_EQ(r2.status(), RelaxStatus::ConvergedStable);
@@ -191,7 +191,8 @@ TEST(Multilevel, RelaxesThroughTheCoarseLevels) {
 // The coarsening rule's fewest vertices: recorded in its name when it is not
 // the general minimum, refused below it.
 TEST(Multilevel, CoarseLevelFloorIsNamedAndChecked) {
-  EXPECT_EQ(to_string(CoarseningOptions{}), "even");
+  EXPECT_EQ(to_string(CoarseningOptions::even_only()), "even");
+  EXPECT_EQ(to_string(CoarseningOptions{}), "either-parity,recheck-30x6,min-100");
   EXPECT_EQ(to_string(CoarseningOptions::rechecked()), "either-parity,recheck-30x6,min-100");
   CoarseningOptions c;
   c.min_vertices = kMinCoarseVertices - 2;

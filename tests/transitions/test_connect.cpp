@@ -49,7 +49,10 @@ TransitionGraph small_graph() {
   return g;
 }
 
-/// A graph of three relaxed BFACF samples of 4_1 (seed 1, unit edges), the
+/// A graph of three relaxed BFACF samples of 4_1 (seed 1, unit edges),
+/// relaxed by the one-level method, with which these tests were designed
+/// (from the default's states of these samples the searches below do not
+/// find the saddles they look for), the
 /// energies those of the relaxation, EI/L as the energy scale.
 TransitionGraph samples41() {
   SampleOptions so;
@@ -60,7 +63,7 @@ TransitionGraph samples41() {
   g.knot = "4_1";
   g.cut = 0.05;
   for (const auto& p : batch.samples) {
-    const RelaxResult r = relax(to_points(p), RelaxOptions{});
+    const RelaxResult r = relax(to_points(p), with_method(RelaxOptions{}, "one-level"));
     EXPECT_EQ(r.status(), RelaxStatus::ConvergedStable);
     g.states.push_back({-1, -1, r.energy.total, r.positions});
   }

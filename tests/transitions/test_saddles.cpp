@@ -22,7 +22,10 @@ using namespace ek::transitionstest;
 
 namespace {
 
-/// The stable states of three BFACF samples of 4_1 (seed 1, unit edges).
+/// The stable states of three BFACF samples of 4_1 (seed 1, unit edges),
+/// relaxed by the one-level method, with which these tests were designed
+/// (from the default's states of these samples the searches below do not
+/// find the saddles they look for).
 const std::vector<Points>& states() {
   static const std::vector<Points> out = [] {
     SampleOptions so;
@@ -31,7 +34,7 @@ const std::vector<Points>& states() {
     const SampleBatch batch = sample_knot(KnotTable::global().at("4_1"), so);
     std::vector<Points> s;
     for (const auto& p : batch.samples) {
-      const RelaxResult r = relax(to_points(p), RelaxOptions{});
+      const RelaxResult r = relax(to_points(p), with_method(RelaxOptions{}, "one-level"));
       EXPECT_EQ(r.status(), RelaxStatus::ConvergedStable);
       s.push_back(r.positions);
     }

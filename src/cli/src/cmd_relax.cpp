@@ -53,17 +53,17 @@ bool parse_relax(int argc, char** argv, RelaxCommand& c) {
   args.flag("--eigen", &r.eigen, "also report the smallest non-rigid eigenvalue of the Hessian");
   args.flag("--stop-at-saddle", &r.stop_at_saddle, "report converged-unstable at a saddle instead of leaving it");
   args.option("--method", &r.method,
-              "default (multilevel: coarse-to-fine from n/2 vertices with contact-stiffness continuation at the "
-              "coarse level, for the twist-free model without a slab; hybrid Newton directions: projected Hessian "
-              "far from equilibrium, exact near it; the contact pairs' Gauss-Newton Hessians in the projected "
-              "iterations), gauss-newton (the same as default), two-level (the default from n/4 vertices, "
-              "a level below n/2 of at least 100 vertices, a crowded level's coarsening retried after soft "
-              "iterations), eigen-projected (the default with the contact pairs' eigen-projected Hessians), "
-              "hybrid (hybrid Newton at n vertices from the input), exact (exact Hessian every iteration, at n) or "
-              "paper (NewtonOptions::paper(), at n)");
+              "default (multilevel: coarse-to-fine from n/4 vertices with contact-stiffness continuation at the "
+              "coarsest level, for the twist-free model without a slab; a level below n/2 of at least 100 "
+              "vertices, a crowded level's coarsening retried after soft iterations; hybrid Newton directions: "
+              "projected Hessian far from equilibrium, exact near it; the contact pairs' Gauss-Newton Hessians in "
+              "the projected iterations), gauss-newton and two-level (the same as default), one-level (the default "
+              "from n/2 vertices, as before two levels), eigen-projected (one-level with the contact pairs' "
+              "eigen-projected Hessians), hybrid (hybrid Newton at n vertices from the input), exact (exact "
+              "Hessian every iteration, at n) or paper (NewtonOptions::paper(), at n)");
   args.option("--coarse-levels", &r.coarse_levels,
               "multilevel: coarse levels below n, each halving the vertices (default " +
-                  std::to_string(kDefaultCoarseLevels) + "; 2 for two-level)");
+                  std::to_string(kDefaultCoarseLevels) + "; 1 for one-level and eigen-projected)");
   args.option("--factorization", &r.factorization,
               "sparse Cholesky: block (3 x 3 blocks, default) or cholmod (CHOLMOD's simplicial LL')");
   args.option("--trace", &c.trace,

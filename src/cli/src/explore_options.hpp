@@ -53,13 +53,13 @@ inline void add_explore_options(ArgParser& args, ExploreArgs& a) {
               "contact-stiffness continuation F[,F...]: each relaxation first solves with the stiffness times each "
               "factor in (0, 1), then at the stiffness (default: off; recorded in the data set)");
   args.option("--method", &a.method,
-              "relaxation method as for knots relax: default (multilevel from n/2 with the contact pairs' "
-              "Gauss-Newton Hessians; gauss-newton is the same), two-level (multilevel from n/4), eigen-projected "
-              "(the default with the contact pairs' eigen-projected Hessians), hybrid (Newton at n from the "
-              "sample), exact or paper (recorded in the data set)");
+              "relaxation method as for knots relax: default (multilevel from n/4 with the contact pairs' "
+              "Gauss-Newton Hessians; gauss-newton and two-level are the same), one-level (multilevel from n/2, "
+              "the default before two levels), eigen-projected (one-level with the contact pairs' eigen-projected "
+              "Hessians), hybrid (Newton at n from the sample), exact or paper (recorded in the data set)");
   args.option("--coarse-levels", &a.coarse_levels,
               "multilevel: coarse levels below n (default " + std::to_string(kDefaultCoarseLevels) +
-                  "; 2 for two-level; recorded in the data set)");
+                  "; 1 for one-level and eigen-projected; recorded in the data set)");
   args.flag("--no-stiffness", &a.no_stiffness, "skip the stiffness attribute (an eigenvalue per equilibrium)");
   args.flag("--quiet", &a.quiet, "no progress output");
 }

@@ -153,7 +153,7 @@ stable equilibrium of the elastic rod with self-contact (paper Section 6), as `k
 Options as the command's (docs/cli.md): output (write the equilibrium, atomically), link,
 planar (slab half-thickness H), release, tol (None: default), max_iter, radius, young,
 poisson, contact_stiffness (None: default), continuation (factors in (0, 1)), full_model,
-method ("default", "gauss-newton", "two-level", "eigen-projected", "hybrid", "exact", "paper"),
+method ("default", "gauss-newton", "two-level", "one-level", "eigen-projected", "hybrid", "exact", "paper"),
 coarse_levels (None: the method's),
 factorization ("block", "cholmod"), eigen, stop_at_saddle, trace (a CSV path: one row per Newton iteration),
 verbose (lines on stderr).

@@ -171,7 +171,7 @@ void RelaxOptions::validate() const {
   for (const double f : coarse_continuation)
     require_input(f > 0.0 && f < 1.0, "relax: coarse_continuation factors must be in (0, 1)");
   require_input(coarse_levels >= 0 && coarse_levels <= 8, "relax: coarse_levels must be in [0, 8]");
-  require_input(contact_hessian_margin >= 0.0 && std::isfinite(contact_hessian_margin),
+  require_input(!contact_hessian_margin || (*contact_hessian_margin >= 0.0 && std::isfinite(*contact_hessian_margin)),
                 "relax: contact_hessian_margin must be >= 0");
   coarsening.validate();
   if (slab) {
@@ -195,15 +195,15 @@ ResolvedModel resolve_model(const RelaxOptions& options, double mean_edge_length
                                            (mean_edge_length * mean_edge_length));
   r.contact_gauss_newton = options.contact_gauss_newton.value_or(multilevel_applies(options));
   r.damp_short_steps = options.newton.damp_short_steps || r.contact_gauss_newton;
-  r.contact_hessian_margin = options.contact_hessian_margin;
+  r.contact_hessian_margin = options.contact_hessian_margin.value_or(multilevel_applies(options) ? 0.05 * r.dhat : 0.0);
   if (options.link) r.model = TwistModel::FixedLink;
   else if (options.full_model) r.model = TwistModel::FreeTheta;
   return r;
 }
 
 const std::vector<std::string>& method_names() {
-  static const std::vector<std::string> names = {"default", "gauss-newton", "two-level", "eigen-projected",
-                                                  "hybrid", "exact", "paper"};
+  static const std::vector<std::string> names = {"default", "gauss-newton", "two-level", "one-level",
+                                                  "eigen-projected", "hybrid", "exact", "paper"};
   return names;
 }
 
@@ -214,13 +214,13 @@ RelaxOptions with_method(RelaxOptions o, const std::string& name) {
     for (size_t k = 0; k < names.size(); ++k) list += (k == 0 ? "" : k + 1 < names.size() ? ", " : " or ") + names[k];
     throw InputError("the method must be " + list + ", not '" + name + "'");
   }
-  if (name == "default" || name == "gauss-newton") return o;
-  if (name == "two-level") {
-    o.coarse_levels = 2;
-    o.coarsening = CoarseningOptions::rechecked();
-    o.contact_hessian_margin = 0.05 * o.dhat.value_or(2.0 * o.material.radius);
-    return o;
+  if (name == "default" || name == "gauss-newton" || name == "two-level") return o;
+  if (name == "one-level" || name == "eigen-projected") {  // the multilevel method as it was before two levels
+    o.coarse_levels = 1;
+    o.contact_hessian_margin = 0.0;
+    o.coarsening = CoarseningOptions::even_only();
   }
+  if (name == "one-level") return o;
   o.contact_gauss_newton = false;
   o.newton.damp_short_steps = false;
   if (name == "eigen-projected") return o;

@@ -46,41 +46,45 @@ enum class RelaxMethod {
 };
 std::string to_string(RelaxMethod method);  ///< "multilevel", "direct"
 
-/// Defaults of the multilevel method: one coarse level
-/// (RelaxOptions::coarse_levels; the named method two-level has two).
-inline constexpr int kDefaultCoarseLevels = 1;
+/// Defaults of the multilevel method: two coarse levels, n/4 and n/2
+/// (RelaxOptions::coarse_levels; the named method one-level has one).
+inline constexpr int kDefaultCoarseLevels = 2;
 inline constexpr double kDefaultCoarseContinuation = 1e-3;  ///< [1] contact-stiffness factor of the coarsest level
 /// Fewest vertices of a coarse level.
 inline constexpr int kMinCoarseVertices = 24;
 
 /// How the multilevel method finds its coarse levels (multilevel.hpp,
-/// docs/models.md, "Solver"). The default: the odd vertices collapsed, tried
-/// once. Measured (exp_bench_solver, docs/performance.md): on the lattice
+/// docs/models.md, "Solver"). The default: either parity, rechecks of 30
+/// soft iterations at most 6 times, levels below n/2 of at least 100
+/// vertices. Measured (exp_bench_solver, docs/performance.md): on the lattice
 /// samples at n = 400 the collapse of the odd vertices of the n/2 level to
 /// n/4 is certified for 30 of 80 samples, of either parity for 41, and with
-/// the rechecks of rechecked() for all 80.
+/// the rechecks for all 80.
 struct CoarseningOptions {
   /// [bool] Where the collapse of the odd vertices is not certified, collapse
   /// the even ones instead if that is (certified_coarsening()).
-  bool either_parity = false;
+  bool either_parity = true;
   /// [1] A level below n (not the input) whose coarsening is not certified
   /// runs its soft phase (contact stiffness coarse_continuation[0]·ω) for
   /// this many Newton iterations at a time and tries again, at most
   /// `rechecks` times, while that phase has not converged; the curve is
   /// then coarser and smoother. When no try is certified the level goes on
   /// from where the soft iterations left it. 0: no rechecks.
-  int recheck_iterations = 0;
-  int rechecks = 0;  ///< [1] see recheck_iterations
+  int recheck_iterations = 30;
+  int rechecks = 6;  ///< [1] see recheck_iterations
   /// [1] Fewest vertices of a coarse level below the first one (n/4, n/8,
   /// ...; the first, n/2, needs kMinCoarseVertices); at least
   /// kMinCoarseVertices. Measured (docs/performance.md): a coarsest level of
   /// 52, 68 or 90 vertices made the peer curves of 208, 272 and 360 vertices
   /// slower than one coarse level, while 100 of 400 made the lattice samples
   /// faster.
-  int min_vertices = kMinCoarseVertices;
-  /// Either parity, rechecks of 30 soft iterations at most 6 times, and
-  /// levels below n/2 of at least 100 vertices (the named method two-level).
-  static CoarseningOptions rechecked() { return {true, 30, 6, 100}; }
+  int min_vertices = 100;
+  /// The default: either parity, rechecks of 30 soft iterations at most 6
+  /// times, levels below n/2 of at least 100 vertices.
+  static CoarseningOptions rechecked() { return {}; }
+  /// The odd vertices collapsed, tried once, levels of kMinCoarseVertices
+  /// (the named methods one-level and eigen-projected: the rule before two levels).
+  static CoarseningOptions even_only() { return {false, 0, 0, kMinCoarseVertices}; }
   void validate() const;  ///< InputError for negative counts or min_vertices below kMinCoarseVertices
 };
 /// "even" or "either-parity", then ",recheck-IxR" when R > 0 rechecks of I
@@ -134,10 +138,11 @@ struct RelaxOptions {
   /// holds the pairs within d̂ + margin and changes only when an active pair
   /// falls outside it (0: the active pairs; the same values either way, the
   /// iterates the same up to the round-off of another elimination order).
-  /// The named method two-level sets 0.05·d̂ (measured with the multilevel
-  /// method: a third fewer symbolic analyses and 0.94 times the time per
-  /// equilibrium; no gain with the direct method, docs/performance.md).
-  double contact_hessian_margin = 0.0;
+  /// Unset: 0.05·d̂ where the multilevel method relaxes (multilevel_applies();
+  /// measured: a third fewer symbolic analyses and 0.94 times the time per
+  /// equilibrium, docs/performance.md), 0 for the direct method (no gain
+  /// measured there).
+  std::optional<double> contact_hessian_margin;
   /// [bool] ContactOptions::gauss_newton_projection: in the projected
   /// iterations each contact pair's Hessian is its Gauss–Newton term
   /// b''∇d∇dᵀ instead of its eigen-projection, and the Newton iteration
@@ -199,7 +204,9 @@ struct ResolvedModel {
   /// NewtonMethodOptions::damp_short_steps, or the Gauss–Newton pair
   /// Hessians above (which need it).
   bool damp_short_steps = false;
-  double contact_hessian_margin = 0.0;  ///< [length] RelaxOptions::contact_hessian_margin
+  /// [length] RelaxOptions::contact_hessian_margin, or where unset 0.05·d̂
+  /// when the multilevel method applies, else 0.
+  double contact_hessian_margin = 0.0;
 };
 /// Resolves the defaults of `options` for rest edges of mean length
 /// `mean_edge_length` [length] (> 0).
@@ -325,12 +332,13 @@ struct RelaxResult {
 /// the experiments) applied to `options`: "default" (RelaxMethod::Multilevel
 /// with the hybrid Hessian; RelaxOptions::contact_gauss_newton as given,
 /// unset: Gauss–Newton contact pair Hessians and damped short steps where
-/// the multilevel method applies: `options` as they are), "gauss-newton" (an
-/// alias of "default"), "two-level" (the default with two coarse levels, n/4
-/// and n/2, found by CoarseningOptions::rechecked(), and the contact
-/// pattern's margin 0.05·d̂ of the options' d̂: about 0.7 times the time per
-/// equilibrium, not the default because the Fig. 5 check fails with it,
-/// docs/performance.md), "eigen-projected" (the default with each contact
+/// the multilevel method applies: `options` as they are; two coarse levels,
+/// n/4 and n/2, found by CoarseningOptions::rechecked(), and the contact
+/// pattern's margin 0.05·d̂), "gauss-newton" and "two-level" (aliases of
+/// "default"), "one-level" (the default with one coarse level, no
+/// contact-pattern margin and the coarsening CoarseningOptions::even_only():
+/// the default before two levels, about 1.4 times the time per equilibrium,
+/// docs/performance.md), "eigen-projected" (one-level with each contact
 /// pair's Hessian eigen-projected and no damping: the method of the
 /// committed ledgers under docs/results), "hybrid" (Direct: the default
 /// before the multilevel relaxation), "exact" (Direct with the exact Hessian

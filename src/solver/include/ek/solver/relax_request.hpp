@@ -29,7 +29,7 @@ struct RelaxRequest {
   bool full_model = false;             ///< --full-model: positions, θ and Θ even when Θ is free
   std::string method = "default";      ///< --method: a name of method_names() (with_method())
   /// [1] --coarse-levels: multilevel levels below n; unset: the method's
-  /// (kDefaultCoarseLevels; 2 for two-level).
+  /// (kDefaultCoarseLevels; 1 for one-level and eigen-projected).
   std::optional<int> coarse_levels;
   std::string factorization = "block"; ///< --factorization: block or cholmod
   bool eigen = false;                  ///< --eigen: also the smallest non-rigid Hessian eigenvalue
