@@ -45,7 +45,7 @@ TEST(PaperMultistability, FigureEightHasAtLeastSixEquilibria) {
 // subset of them: it makes no claim about how many are 3D, whose share is
 // reported). Scale-dependent: a count of distinct states grows with the
 // samples. Asserted where the run has at least kEightOneSamples samples of 8_1
-// (the default scale: 150 samples, 9 distinct measured; the paper scale: 500);
+// (the default scale: 150 samples, 10 distinct measured; the paper scale: 500);
 // with fewer (the ci scale: 80 samples, 7 distinct measured) the count is
 // reported and the test is skipped.
 constexpr long kEightOneSamples = 150;  ///< [samples] fewest samples at which ">= 8" is asserted

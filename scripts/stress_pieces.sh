@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Keeps a long stress volume (tests/stress/test_stress_long.cpp, `make
 # stress`) across sessions: its per-run log results/stress/volume-N.csv.partial
-# (not committed) is saved piece by piece under docs/results/stress/volume-N/,
+# (not committed) is saved piece by piece under docs/results/stress/volume-N/
+# (volume-N-M.csv and volume-N-M/ for a volume run by the named method M),
 # each piece the rows finished since the last one, gzipped, so that an ended
 # session loses at most the runs since the last piece. `restore` rebuilds the
 # .partial log from the pieces; the volume then resumes from it (only the
@@ -10,27 +11,40 @@ set -euo pipefail
 
 usage() {
   cat <<'EOF'
-usage: scripts/stress_pieces.sh save N [--commit]
-       scripts/stress_pieces.sh restore N
+usage: scripts/stress_pieces.sh save N [--method M] [--commit]
+       scripts/stress_pieces.sh restore N [--method M]
 
   save N      write the rows of results/stress/volume-N.csv.partial (or of the finished
               volume-N.csv) not yet in a piece to docs/results/stress/volume-N/piece-KK.csv.gz
+  --method M  the volume run by the named method M (EK_STRESS_METHOD=M): volume-N-M instead
+              of volume-N (M = default: volume-N)
   --commit    git commit that piece (that file alone)
   restore N   write results/stress/volume-N.csv.partial from the pieces (refused when it exists)
 
-Resume with: EK_STRESS_VOLUME=N EK_STRESS_LOG=results/stress/volume-N.csv build/tests/stress/test_stress_long
+Resume with: EK_STRESS_VOLUME=N [EK_STRESS_METHOD=M] EK_STRESS_LOG=results/stress/volume-N[-M].csv \
+             build/tests/stress/test_stress_long
 EOF
 }
 
 header="index,knot,seed,status,iterations,seconds,energy,gradient_norm,alexander_preserved"
 [ $# -ge 2 ] || { usage >&2; exit 2; }
 action=$1 volume=$2
-commit=0
-[ "${3:-}" = "--commit" ] && commit=1
+shift 2
+commit=0 method=default
+while [ $# -gt 0 ]; do
+  case "$1" in
+    --commit) commit=1; shift ;;
+    --method) [ $# -ge 2 ] || { echo "stress_pieces: --method needs a value" >&2; exit 2; }; method=$2; shift 2 ;;
+    *) echo "stress_pieces: unknown option '$1'" >&2; usage >&2; exit 2 ;;
+  esac
+done
 [[ "$volume" =~ ^[1-9][0-9]*$ ]] || { echo "stress_pieces: N must be a positive integer, not '$volume'" >&2; exit 2; }
+[[ "$method" =~ ^[a-z][a-z0-9-]*$ ]] || { echo "stress_pieces: M must be a method name, not '$method'" >&2; exit 2; }
 cd "${EK_STRESS_PIECES_ROOT:-$(dirname "$0")/..}"  # the checkout (tests: a scratch folder)
-dir=docs/results/stress/volume-$volume
-log=results/stress/volume-$volume.csv
+name=volume-$volume
+[ "$method" = default ] || name=$name-$method
+dir=docs/results/stress/$name
+log=results/stress/$name.csv
 
 # the rows (without header) of every piece so far
 pieces_rows() { for p in "$dir"/piece-*.csv.gz; do if [ -e "$p" ]; then zcat "$p" | tail -n +2; fi; done; }
@@ -62,7 +76,9 @@ case "$action" in
     echo "stress_pieces: $piece: $rows runs ($total of $volume saved)"
     if [ "$commit" = 1 ]; then
       git add "$piece"
-      git commit -q -m "Stress volume of $volume runs: $(basename "$piece") ($rows runs, $total saved)" -- "$piece"
+      label="Stress volume of $volume runs"
+      [ "$method" = default ] || label="$label by $method"
+      git commit -q -m "$label: $(basename "$piece") ($rows runs, $total saved)" -- "$piece"
     fi
     ;;
   restore)

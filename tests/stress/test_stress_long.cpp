@@ -10,6 +10,8 @@
 // missing indices are run (run k is fixed by k: knot k·7919 modulo the number
 // of knots, seed k + 1; delete FILE.partial to start over after changing the
 // code). A log with runs beyond EK_STRESS_VOLUME is refused and left as it is.
+// EK_STRESS_METHOD=M relaxes by the named method M of with_method() (default:
+// "default"); a volume is run by one method from start to end.
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -38,6 +40,15 @@ TEST(StressLong, VolumeOfLatticeSamples) {
     volume = (end != env && *end == '\0' && v > 0 && v <= 10000000) ? static_cast<int>(v) : 0;
   }
   ASSERT_GT(volume, 0) << "EK_STRESS_VOLUME must be a positive integer, got '" << (env ? env : "") << "'";
+  const char* method_env = std::getenv("EK_STRESS_METHOD");
+  const std::string method = method_env ? method_env : "default";
+  RelaxOptions options;
+  try {
+    options = with_method(options, method);
+  } catch (const std::exception& e) {
+    FAIL() << "EK_STRESS_METHOD: " << e.what();
+  }
+  std::cout << "[ stress   ] method " << method << std::endl;
   const auto knots = KnotTable::global().up_to_crossings(12);
   stress::Tally tally;
   std::mutex mutex;
@@ -96,7 +107,7 @@ TEST(StressLong, VolumeOfLatticeSamples) {
       RelaxResult r;
       try {
         const Points P = to_points(sample_knot(knot, so).samples.front());
-        r = relax(P);
+        r = relax(P, options);
       } catch (const std::exception& e) {
         std::lock_guard<std::mutex> lock(mutex);
         ADD_FAILURE() << knot.name << ": " << e.what();

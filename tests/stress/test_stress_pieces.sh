@@ -26,7 +26,13 @@ dir=$root/docs/results/stress/volume-9
 mv "$log" "$root/old"
 "$script" restore 9 > /dev/null
 [ "$(sort "$log")" = "$(sort "$root/old")" ] || fail "restore"
-for bad in "save 0" "save x9" "restore 8" "frobnicate 9"; do
+# a volume run by a named method has its own log and pieces
+cp "$log" "$root/results/stress/volume-9-one-level.csv.partial"
+"$script" save 9 --method one-level > /dev/null
+[ "$(zcat "$root/docs/results/stress/volume-9-one-level/piece-01.csv.gz" | wc -l)" = 5 ] || fail "method piece"
+[ ! -e "$dir/piece-03.csv.gz" ] || fail "the method's rows went into the default volume"
+[ "$("$script" save 9 --method default)" = "stress_pieces: no new rows" ] || fail "--method default"
+for bad in "save 0" "save x9" "restore 8" "frobnicate 9" "save 9 --method" "save 9 --method A/B" "save 9 --now"; do
   set +e; "$script" $bad > /dev/null 2> "$root/err"; status=$?; set -e
   [ "$status" = 2 ] && [ -s "$root/err" ] || fail "'$bad': status $status"
 done
