@@ -80,11 +80,7 @@ build: configure
 python: configure
 	cmake --build $(BUILD) -j$(JOBS) --target elastic_knots
 
-# The Release build, the Clang build and the API reference are made side by
-# side (each build with JOBS jobs), so that one fills the other's serial
-# stretches (configure, the last links).
-test: deps
-	@$(MAKE) --no-print-directory -j3 build fuzz-build docs
+test: build fuzz-build docs
 	cd $(BUILD)-fuzz && KNOT_TABLE=$(KNOT_TABLE) ctest --output-on-failure -j$(JOBS) -L 'parsers|fuzz'
 	$(CTEST) -LE 'stress-long|sanitize|paper-open'
 
