@@ -9,6 +9,7 @@
 
 #include "ek/core/sparse_assembler.hpp"
 #include "ek/geometry/resample.hpp"
+#include "ek/geometry/writhe.hpp"
 #include "ek/rod/elastic_rod.hpp"
 
 namespace {
@@ -139,6 +140,13 @@ void BM_StraightRodMinEigenvalue(benchmark::State& state) {
     benchmark::DoNotOptimize(straight_rod_min_eigenvalue(400, 1.0, RodMaterial{}, TwistModel::TwistFree));
 }
 
+/// The writhe of the curve (the exact Gauss double sum over its edge pairs),
+/// which every relaxation reports for its result.
+void BM_Writhe(benchmark::State& state) {
+  const Points P = test_curve(static_cast<int>(state.range(0)));
+  for (auto _ : state) benchmark::DoNotOptimize(writhe(P));
+}
+
 #define EK_ROD_MODELS ->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMicrosecond)->Repetitions(5)->ReportAggregatesOnly(true)
 BENCHMARK(BM_SetDofs) EK_ROD_MODELS;
 BENCHMARK(BM_Energy) EK_ROD_MODELS;
@@ -147,6 +155,7 @@ BENCHMARK(BM_HessianAssembly) EK_ROD_MODELS;
 BENCHMARK(BM_EnergyGradientHessian) EK_ROD_MODELS;
 BENCHMARK(BM_UpdateReferenceFrames) EK_ROD_MODELS;
 BENCHMARK(BM_StraightRodMinEigenvalue)->Unit(benchmark::kMicrosecond);
+BENCHMARK(BM_Writhe)->Arg(400)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 
