@@ -32,7 +32,9 @@
 // with coarse levels of either parity but no soft iterations between tries),
 // even-only (default with only the odd vertices collapsed, tried once),
 // margin=X (default with the contact pattern's margin X, a length), soft=F[/G]
-// (default with the coarsest level's continuation factors F, G, ...). The
+// (default with the coarsest level's continuation factors F, G, ...),
+// exact-after=K (default entering the hybrid Hessian's exact region after K
+// consecutive full projected steps: NewtonOptions::exact_after_full_steps). The
 // default is "default,hybrid-simplicial". --method M is --methods M.
 //
 // --peer DIR: instead of the lattice samples, every curve file of DIR (the
@@ -150,6 +152,11 @@ Method method_named(const std::string& name, const ek::RelaxOptions& base) {
   if (name.rfind("margin=", 0) == 0) {  // the contact Hessian pattern's margin [length]
     Method m{name, ek::with_method(base, "default")};
     m.options.contact_hessian_margin = std::stod(name.substr(7));
+    return m;
+  }
+  if (name.rfind("exact-after=", 0) == 0) {  // default entering the exact region after K full projected steps
+    Method m{name, ek::with_method(base, "default")};
+    m.options.newton.exact_after_full_steps = std::stoi(name.substr(12));
     return m;
   }
   if (name.rfind("soft=", 0) == 0) {  // the coarsest level's continuation factors F[/G...]
