@@ -39,6 +39,8 @@ SKIPS = [
      "BM_MaxStep/0/1", "BM_MaxStepAllPairs/0/1"),
     ("collision detection only on broad-phase pairs (knot13, step 0.5)",
      "BM_MaxStep/0/5", "BM_MaxStepAllPairs/0/5"),
+    ("swept broad phase of the collision detection kept while the motion stays within ccd_skin (knot13, step 0.1)",
+     "BM_MaxStepKept/0/1", "BM_MaxStep/0/1"),
     ("broad phase reused while no vertex moved skin/2 (knot13)",
      "BM_BroadPhase/0/0", "BM_BroadPhase/0/1"),  # second argument 1: skin 0 (fresh)
     ("projected pair Hessians in their <= 5-dim range, not 12x12 eigen-decompositions (knot13, 52 pairs)",

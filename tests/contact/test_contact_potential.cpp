@@ -104,7 +104,9 @@ TEST(ContactPotential, OptionsAreValidated) {
            [](ContactOptions& p) { p.dhat = 0; }, [](ContactOptions& p) { p.stiffness = -1; },
            [](ContactOptions& p) { p.excluded_neighbors = 0; }, [](ContactOptions& p) { p.ccd_separation = 1; },
            [](ContactOptions& p) { p.ccd_tolerance = 0; }, [](ContactOptions& p) { p.parallel_threshold = 1; },
-           [](ContactOptions& p) { p.ccd_max_iterations = 0; }, [](ContactOptions& p) { p.broad_phase_skin = -1; }}) {
+           [](ContactOptions& p) { p.ccd_max_iterations = 0; }, [](ContactOptions& p) { p.broad_phase_skin = -1; },
+           [](ContactOptions& p) { p.ccd_skin = -1; },
+           [](ContactOptions& p) { p.ccd_skin = std::numeric_limits<double>::quiet_NaN(); }}) {
     ContactOptions bad;
     mutate(bad);
     EXPECT_THROW(ContactPotential(CurveTopology::single(10), bad), std::invalid_argument);
@@ -281,6 +283,46 @@ TEST(ContactPotential, LineSearchTrialsReuseTheCollisionDetectionPairs) {
   cp.update(far);
   EXPECT_EQ(cp.num_broad_phase_runs(), runs + 1);
   EXPECT_EQ(active_as_pairs(cp), edge_pairs_within_brute_force(far, t, 1, o.dhat));
+}
+
+// Collision detection over a walk of small steps with occasional large ones:
+// max_step() keeps its swept broad phase's pairs (ccd_skin) while the motion
+// stays within ccd_skin of where they were found, and its reports (step,
+// limiting pair, candidates) equal those without (ccd_skin = 0, a swept
+// broad phase every query) and those without any skin; the line search's
+// trials on each path still find the active set of brute force.
+TEST(ContactPotential, CollisionDetectionKeepsItsSweptPairsAcrossSmallSteps) {
+  std::mt19937_64 rng(43);
+  Points x = twisted_pair(200, 7, 16.0, 0.33);
+  const CurveTopology t = CurveTopology::single(200);
+  ContactOptions o;
+  ContactOptions fresh_sweeps = o, no_skin = o;
+  fresh_sweeps.ccd_skin = 0.0;
+  no_skin.broad_phase_skin = 0.0;
+  ContactPotential cp(t, o), reference(t, fresh_sweeps), plain(t, no_skin);
+  const int queries = 40;
+  for (int k = 0; k < queries; ++k) {
+    const double size = (k % 9 == 8) ? 0.4 : 0.01;  // most steps far inside ccd_skin = 0.3
+    Points dx(200, 3);
+    for (int i = 0; i < 200; ++i) dx.row(i) = rand_vec(rng, size).transpose();
+    const StepReport a = cp.max_step_report(x, dx), b = reference.max_step_report(x, dx);
+    const StepReport c = plain.max_step_report(x, dx);
+    ASSERT_EQ(a.t, b.t) << k;
+    ASSERT_EQ(a.t, c.t) << k;
+    ASSERT_EQ(a.candidates, b.candidates) << k;
+    ASSERT_EQ(a.edge_a, b.edge_a) << k;
+    ASSERT_EQ(a.edge_b, b.edge_b) << k;
+    ASSERT_EQ(a.iterations, b.iterations) << k;
+    for (const double s : {1.0, 0.5, 0.125}) {  // trials on the path
+      const Points y = x + s * a.t * dx;
+      cp.update(y);
+      ASSERT_EQ(active_as_pairs(cp), edge_pairs_within_brute_force(y, t, 1, o.dhat)) << k << " " << s;
+    }
+    x += 0.5 * a.t * dx;
+  }
+  EXPECT_EQ(reference.num_swept_broad_phase_runs(), static_cast<size_t>(queries));
+  EXPECT_LT(cp.num_swept_broad_phase_runs(), static_cast<size_t>(queries) / 2);
+  EXPECT_GE(cp.num_swept_broad_phase_runs(), 5u);  // at least the large steps (k = 8, 17, 26, 35) and the first
 }
 
 TEST(ContactPotential, NoContactCostsNothing) {

@@ -47,6 +47,7 @@ void ContactOptions::validate() const {
           "ContactOptions: broad_phase_skin must be >= 0 and finite");
   require(std::isfinite(hessian_margin) && hessian_margin >= 0.0,
           "ContactOptions: hessian_margin must be >= 0 and finite");
+  require(std::isfinite(ccd_skin) && ccd_skin >= 0.0, "ContactOptions: ccd_skin must be >= 0 and finite");
 }
 
 ContactPotential::ContactPotential(CurveTopology topology, ContactOptions options)
@@ -298,7 +299,24 @@ StepReport ContactPotential::max_step_report(const Points& x, const Points& dx) 
   // tested here are their subset within ccd_separation·d̂ (the same list as a
   // broad phase of its own).
   if (skin > 0.0) {
-    path_pairs_ = ccd_broad_.swept_pairs(x, dx, 0.5 * (options_.dhat + options_.hessian_margin + skin));
+    const double inflation = 0.5 * (options_.dhat + options_.hessian_margin + skin);
+    if (options_.ccd_skin > 0.0 && sweep_valid_ && sweep_covers(x, dx)) {
+      path_pairs_ = ccd_broad_.swept_subset(sweep_pairs_, x, dx, inflation);
+    } else if (options_.ccd_skin > 0.0) {
+      sweep_pairs_ = ccd_broad_.swept_pairs(x, dx, inflation + options_.ccd_skin);
+      sweep_box_.resize(6 * static_cast<size_t>(n_));
+      for (int i = 0; i < n_; ++i)
+        for (int k = 0; k < 3; ++k) {
+          sweep_box_[6 * i + k] = std::min(x(i, k), x(i, k) + dx(i, k));
+          sweep_box_[6 * i + 3 + k] = std::max(x(i, k), x(i, k) + dx(i, k));
+        }
+      sweep_valid_ = true;
+      ++swept_broad_phase_runs_;
+      path_pairs_ = ccd_broad_.swept_subset(sweep_pairs_, x, dx, inflation);
+    } else {
+      path_pairs_ = ccd_broad_.swept_pairs(x, dx, inflation);
+      ++swept_broad_phase_runs_;
+    }
     path_x_ = x;
     path_dx_ = dx;
     path_valid_ = true;
@@ -328,6 +346,25 @@ StepReport ContactPotential::max_step_report(const Points& x, const Points& dx) 
   }
   rep.t = t;
   return rep;
+}
+
+// Every start and end point of the query within ccd_skin of its vertex's box
+// when the kept pairs were found, per axis. Each edge's swept box, inflated
+// by r, then lies within its box then, inflated by r + ccd_skin, so a pair
+// that overlaps now overlapped then. The boxes widen by a few ulps of the
+// coordinates (at most 16 ε·m, m the largest |coordinate| or |step|): the
+// reach is short of ccd_skin by 1e-6 of it, which must exceed that.
+bool ContactPotential::sweep_covers(const Points& x, const Points& dx) const {
+  const double reach = options_.ccd_skin * (1.0 - 1e-6);
+  double m = 0.0;
+  for (int i = 0; i < n_; ++i)
+    for (int k = 0; k < 3; ++k) {
+      const double a = x(i, k), b = x(i, k) + dx(i, k);
+      if (std::min(a, b) < sweep_box_[6 * i + k] - reach || std::max(a, b) > sweep_box_[6 * i + 3 + k] + reach)
+        return false;
+      m = std::max({m, std::abs(a), std::abs(b), std::abs(dx(i, k))});
+    }
+  return 1e-6 * options_.ccd_skin > 16.0 * std::numeric_limits<double>::epsilon() * m;
 }
 
 double ContactPotential::max_step(const Points& x, const Points& dx) const { return max_step_report(x, dx).t; }

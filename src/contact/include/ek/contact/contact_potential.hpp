@@ -48,7 +48,13 @@
 /// same holds along the last max_step(x, dx) query: its broad phase collects
 /// the pairs whose swept boxes come within d̂ + hessian_margin + skin, and update() reuses
 /// them while every vertex is within skin/2 of its path x_i + s·dx_i (so the
-/// line search's trials x + t·dx run no broad phase).
+/// line search's trials x + t·dx run no broad phase). That swept broad phase
+/// itself keeps its pairs with ccd_skin more inflation: while every vertex's
+/// start and end points x_i, x_i + dx_i of a later query lie within ccd_skin
+/// of the box of that vertex's start and end points when it ran, each edge's
+/// swept box of the later query lies within its box then, and the pairs are
+/// those of the kept list whose boxes overlap (the same list, filtered in
+/// O(n + pairs) without the spatial hash).
 ///
 /// Hessian pattern: add_hessian() writes into a fixed set of vertex blocks,
 /// identified by hessian_structure(), so that a solver keeps its symbolic
@@ -105,6 +111,11 @@ struct ContactOptions {
   /// [length] update() keeps the broad phase's pairs within d̂ + skin while no vertex has moved skin/2 since it ran (0:
   /// run it every time)
   double broad_phase_skin = 0.1;
+  /// [length] max_step() keeps its swept broad phase's pairs with this much
+  /// more inflation, for later queries whose motion stays within it (see
+  /// "Skin" above; 0: a swept broad phase every query). Used when
+  /// broad_phase_skin > 0; the results are the same for every value.
+  double ccd_skin = 0.3;
   /// [length] Hessian pattern with hysteresis (see "Hessian pattern" above):
   /// 0 = the pattern is the active set; > 0 = the pairs within d̂ + margin at
   /// the last rebuild, kept until an active pair falls outside them.
@@ -164,6 +175,9 @@ class ContactPotential {
   size_t num_candidates() const { return candidates_; }
   /// How many times update() has run the broad phase (the rest reused it).
   size_t num_broad_phase_runs() const { return broad_phase_runs_; }
+  /// How many times max_step() has run its swept broad phase with the spatial
+  /// hash (the rest filtered the pairs it kept, see ccd_skin).
+  size_t num_swept_broad_phase_runs() const { return swept_broad_phase_runs_; }
   /// [length] smallest segment distance among those candidates (+∞ if none).
   double min_distance() const { return min_distance_; }
 
@@ -215,6 +229,13 @@ class ContactPotential {
   mutable Points path_x_, path_dx_;
   mutable std::vector<EdgePair> path_pairs_;
   mutable bool path_valid_ = false;
+  // the kept swept broad phase: its pairs (swept boxes within d̂ + hessian_margin
+  // + skin + 2·ccd_skin), and each vertex's box of its start and end points then
+  mutable std::vector<EdgePair> sweep_pairs_;
+  mutable std::vector<double> sweep_box_;  // 6 per vertex: lo xyz, hi xyz
+  mutable bool sweep_valid_ = false;
+  mutable size_t swept_broad_phase_runs_ = 0;
+  bool sweep_covers(const Points& x, const Points& dx) const;  // the query lies within ccd_skin of those boxes
   double min_distance_ = 0.0;
   std::uint64_t structure_ = 0;
   // Hessian plan, a cache rebuilt by add_hessian() after the pattern changed:
