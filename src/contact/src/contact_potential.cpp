@@ -300,18 +300,8 @@ StepReport ContactPotential::max_step_report(const Points& x, const Points& dx) 
   // broad phase of its own).
   if (skin > 0.0) {
     const double inflation = 0.5 * (options_.dhat + options_.hessian_margin + skin);
-    if (options_.ccd_skin > 0.0 && sweep_valid_ && sweep_covers(x, dx)) {
-      path_pairs_ = ccd_broad_.swept_subset(sweep_pairs_, x, dx, inflation);
-    } else if (options_.ccd_skin > 0.0) {
-      sweep_pairs_ = ccd_broad_.swept_pairs(x, dx, inflation + options_.ccd_skin);
-      sweep_box_.resize(6 * static_cast<size_t>(n_));
-      for (int i = 0; i < n_; ++i)
-        for (int k = 0; k < 3; ++k) {
-          sweep_box_[6 * i + k] = std::min(x(i, k), x(i, k) + dx(i, k));
-          sweep_box_[6 * i + 3 + k] = std::max(x(i, k), x(i, k) + dx(i, k));
-        }
-      sweep_valid_ = true;
-      ++swept_broad_phase_runs_;
+    if (options_.ccd_skin > 0.0) {
+      if (sweep_box_.empty() || !sweep_covers(x, dx)) keep_sweep(x, dx, inflation + options_.ccd_skin);
       path_pairs_ = ccd_broad_.swept_subset(sweep_pairs_, x, dx, inflation);
     } else {
       path_pairs_ = ccd_broad_.swept_pairs(x, dx, inflation);
@@ -346,6 +336,17 @@ StepReport ContactPotential::max_step_report(const Points& x, const Points& dx) 
   }
   rep.t = t;
   return rep;
+}
+
+void ContactPotential::keep_sweep(const Points& x, const Points& dx, double inflation) const {
+  sweep_pairs_ = ccd_broad_.swept_pairs(x, dx, inflation);
+  sweep_box_.resize(6 * static_cast<size_t>(n_));
+  for (int i = 0; i < n_; ++i)
+    for (int k = 0; k < 3; ++k) {
+      sweep_box_[6 * i + k] = std::min(x(i, k), x(i, k) + dx(i, k));
+      sweep_box_[6 * i + 3 + k] = std::max(x(i, k), x(i, k) + dx(i, k));
+    }
+  ++swept_broad_phase_runs_;
 }
 
 // Every start and end point of the query within ccd_skin of its vertex's box

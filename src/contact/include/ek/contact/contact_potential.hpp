@@ -232,10 +232,11 @@ class ContactPotential {
   // the kept swept broad phase: its pairs (swept boxes within d̂ + hessian_margin
   // + skin + 2·ccd_skin), and each vertex's box of its start and end points then
   mutable std::vector<EdgePair> sweep_pairs_;
-  mutable std::vector<double> sweep_box_;  // 6 per vertex: lo xyz, hi xyz
-  mutable bool sweep_valid_ = false;
+  mutable std::vector<double> sweep_box_;  // 6 per vertex: lo xyz, hi xyz (empty: none kept yet)
   mutable size_t swept_broad_phase_runs_ = 0;
   bool sweep_covers(const Points& x, const Points& dx) const;  // the query lies within ccd_skin of those boxes
+  // the swept broad phase of x + s·dx with `inflation`, kept with its points' boxes
+  void keep_sweep(const Points& x, const Points& dx, double inflation) const;
   double min_distance_ = 0.0;
   std::uint64_t structure_ = 0;
   // Hessian plan, a cache rebuilt by add_hessian() after the pattern changed:
